@@ -1,0 +1,83 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_POSE_HPP
+#define OPENCV_TRIPOSE_POSE_HPP
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_pose
+//! @{
+
+//! Methods of estimatePoseLinePoint().
+enum PoseMethod
+{
+    POSE_LINEAR = 0, //!< The unified linear solver of @cite QadirNeubert2017 on all features (no outlier rejection).
+};
+
+/** @brief Estimates the pose of a third calibrated view from point and line triplets, the poses of
+the first two views being known.
+
+The world frame is the frame of view 1: view 1 is \f$[I|0]\f$, view 2 is \f$[R_{12}|t_{12}]\f$ and
+the estimated view 3 is \f$[R|t]\f$, each mapping a world point \f$X\f$ to \f$x \sim K(RX + t)\f$.
+The metric scale of \f$t\f$ is that of \f$t_{12}\f$.
+
+With POSE_LINEAR the method of @cite QadirNeubert2017 is used: every point triplet adds rows of the
+normalized trilinear constraints and every line triplet the two rows left by eliminating the planes
+of views 1 and 2; the pose is a combination of the last N singular vectors of the stacked system
+(N = 1 for six or more features, N = 2 for five, N = 4 for four), whose coefficients are found from
+the orthonormality of \f$R\f$. Each candidate gets the nearest rotation and a least-squares
+translation; candidates that put most triangulated points behind view 3 are dropped and the rest
+are ranked by their reprojection error in view 3 (points: pixel distance; segments: distance of
+both end points to the projected line).
+
+Any mix of at least four features works (4 points, 4 lines, 2 points + 2 lines, 3 + 1, 1 + 3 and
+anything larger).
+
+@param points1 Points in view 1: Nx2 1-channel or 1xN/Nx1 2-channel, CV_32F or CV_64F, pixels.
+N may be 0 (or the array empty) when only lines are used.
+@param points2 The same N points in view 2, same layout.
+@param points3 The same N points in view 3, same layout.
+@param lines1 Lines in view 1: Mx4 1-channel or 1xM/Mx1 4-channel segments \f$(x_0, y_0, x_1, y_1)\f$,
+or Mx3 1-channel / 3-channel homogeneous image lines \f$(a, b, c)\f$, CV_32F or CV_64F, pixels.
+M may be 0. Homogeneous lines cannot be undistorted: they require empty distortion coefficients.
+@param lines2 The same M lines in view 2, same layout.
+@param lines3 The same M lines in view 3, same layout.
+@param cameraMatrix One 3x3 intrinsic matrix \f$K\f$ shared by the three views, or a vector of three.
+@param distCoeffs Distortion coefficients in OpenCV's model (4, 5, 8, 12 or 14 values), one vector
+shared by the views or a vector of three; empty means no distortion.
+@param R12 Rotation of view 2 w.r.t. view 1: 3x3 matrix or 3x1/1x3 Rodrigues vector, CV_32F/CV_64F.
+@param t12 Translation of view 2 w.r.t. view 1, 3x1 or 1x3, non-zero.
+@param R Output rotation of view 3 (3x3, CV_64F): the best candidate. Empty when no solution is found.
+@param t Output translation of view 3 (3x1, CV_64F).
+@param method One of #PoseMethod.
+@param Rs Optional output: every candidate rotation (3x3 CV_64F), best first.
+@param ts Optional output: the matching translations (3x1 CV_64F).
+@param reprojectionErrors Optional output: RMS reprojection error in view 3 of each candidate, in
+pixels (CV_64F, one per candidate, same order as Rs).
+@return The number of candidate poses (0 when the geometry admits none, e.g. degenerate input).
+
+@throws cv::Exception naming the argument when an input has the wrong shape or type, the counts
+disagree between views, fewer than four features are given, a value is not finite, \f$R_{12}\f$ is
+not a rotation, \f$t_{12}\f$ is zero or an intrinsic matrix is not usable.
+*/
+CV_EXPORTS_W int estimatePoseLinePoint(
+    InputArray points1, InputArray points2, InputArray points3,
+    InputArray lines1, InputArray lines2, InputArray lines3,
+    InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+    InputArray R12, InputArray t12,
+    OutputArray R, OutputArray t,
+    int method = POSE_LINEAR,
+    OutputArrayOfArrays Rs = noArray(), OutputArrayOfArrays ts = noArray(),
+    OutputArray reprojectionErrors = noArray());
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_POSE_HPP

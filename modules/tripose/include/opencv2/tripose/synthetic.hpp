@@ -1,0 +1,71 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_SYNTHETIC_HPP
+#define OPENCV_TRIPOSE_SYNTHETIC_HPP
+
+#include <vector>
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_data
+//! @{
+
+//! Camera motion regimes of the synthetic protocol (@cite QadirNeubert2017, Sec. IV-A).
+enum SceneMotion
+{
+    MOTION_LARGE = 0, //!< Views 2 and 3 placed like view 1: at the camera distance from the origin, in random directions.
+    MOTION_SMALL = 1, //!< Views 2 and 3 within smallMotionRadius of view 1.
+};
+
+/** @brief Parameters of generateSyntheticScene(). The defaults are the paper's protocol: a 10 m
+cube centred at the origin, 640x480 cameras with f = 800 px looking at the origin from 20 m.
+*/
+struct CV_EXPORTS_W_SIMPLE SyntheticSceneParams
+{
+    CV_WRAP SyntheticSceneParams();
+    CV_PROP_RW int numPoints;          //!< Number of point triplets.
+    CV_PROP_RW int numLines;           //!< Number of line-segment triplets.
+    CV_PROP_RW int motion;             //!< One of #SceneMotion.
+    CV_PROP_RW double noiseSigma;      //!< Standard deviation (px) of Gaussian noise on point coordinates and segment end points.
+    CV_PROP_RW double outlierRatio;    //!< Fraction in [0, 1) of points and of lines whose view-3 observation is a random wrong match.
+    CV_PROP_RW double cubeSize;        //!< Edge (m) of the cube holding the structure.
+    CV_PROP_RW double cameraDistance;  //!< Distance (m) of view 1 (and of views 2, 3 in large motion) from the origin.
+    CV_PROP_RW double smallMotionRadius; //!< Radius (m) around view 1 of views 2 and 3 in small motion.
+    CV_PROP_RW Size imageSize;         //!< Image size of every view (px); features are kept inside it in all three views.
+    CV_PROP_RW std::vector<Mat> cameraMatrices; //!< Empty: f = 800 px, principal point at the image centre; else one 3x3 K or three.
+    CV_PROP_RW int seed;               //!< Seed of the scene's random generator: same seed, same scene.
+};
+
+/** @brief A generated three-view scene with its ground truth. Poses and structure are expressed in
+the frame of view 1 (x ~ K(RX + t)). All matrices are CV_64F.
+*/
+struct CV_EXPORTS_W_SIMPLE SyntheticScene
+{
+    CV_PROP_RW Mat points1, points2, points3; //!< Nx2 observed points (px), noisy.
+    CV_PROP_RW Mat lines1, lines2, lines3;    //!< Mx4 observed segments (x0 y0 x1 y1, px), noisy.
+    CV_PROP_RW std::vector<Mat> cameraMatrices; //!< The three 3x3 intrinsic matrices.
+    CV_PROP_RW Mat R12, t12;                  //!< Pose of view 2 (3x3, 3x1).
+    CV_PROP_RW Mat R, t;                      //!< Pose of view 3 (3x3, 3x1): the ground truth to estimate.
+    CV_PROP_RW Mat points3d;                  //!< Nx3 world points.
+    CV_PROP_RW Mat lines3d;                   //!< Mx6 world segment end points (X0 Y0 Z0 X1 Y1 Z1).
+    CV_PROP_RW Mat pointInliers, lineInliers; //!< Nx1 / Mx1 CV_8U: 1 where the view-3 observation is a true match.
+};
+
+/** @brief Generates a random three-view scene of points and line segments following the synthetic
+protocol of @cite QadirNeubert2017 (Sec. IV-A). Every feature projects inside the image in all three
+views (before noise) and lies in front of every camera. Deterministic for a given seed.
+@throws cv::Exception naming the parameter when a parameter is out of range.
+*/
+CV_EXPORTS_W SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params);
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_SYNTHETIC_HPP

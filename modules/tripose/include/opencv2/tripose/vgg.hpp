@@ -1,0 +1,53 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_VGG_HPP
+#define OPENCV_TRIPOSE_VGG_HPP
+
+#include <vector>
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_data
+//! @{
+
+/** @brief Three views of a sequence in the Oxford VGG multi-view format (per view: .corners,
+.lines, .P; per sequence: nview-corners, nview-lines, p3d, l3d), restricted to the features seen in
+all three views, with the ground truth expressed relative to the first of them (x ~ K(RX + t)).
+All matrices are CV_64F unless stated.
+*/
+struct CV_EXPORTS_W_SIMPLE VggTriplet
+{
+    CV_PROP_RW Mat points1, points2, points3; //!< Nx2 corners (px) seen in all three views.
+    CV_PROP_RW Mat lines1, lines2, lines3;    //!< Mx4 segments (x0 y0 x1 y1, px) seen in all three views.
+    CV_PROP_RW Mat pointIds, lineIds;         //!< Nx1 / Mx1 CV_32S: row of each feature in p3d / l3d.
+    CV_PROP_RW Mat points3d;                  //!< Nx3 points of p3d in the frame of the first view.
+    CV_PROP_RW Mat lines3d;                   //!< Mx6 segments of l3d in the frame of the first view.
+    CV_PROP_RW std::vector<Mat> cameraMatrices; //!< The three 3x3 intrinsic matrices (from the P matrices).
+    CV_PROP_RW Mat R12, t12;                  //!< Pose of the second view (3x3, 3x1).
+    CV_PROP_RW Mat R, t;                      //!< Pose of the third view (3x3, 3x1).
+};
+
+/** @brief Number of views of a VGG multi-view sequence stored in a folder. */
+CV_EXPORTS_W int vggSequenceViewCount(const String& sequenceDir);
+
+/** @brief Loads three views (0-based indices in image order) of a VGG multi-view sequence.
+
+The camera matrices are decomposed into K[R|t]; a sequence whose world frame is mirrored
+(det of the left 3x3 block negative while the structure lies in front of the cameras) is read in a
+world frame with one axis flipped, so that every rotation is proper.
+@throws cv::Exception naming the file when a file is missing or malformed, or the view index when
+it is out of range.
+*/
+CV_EXPORTS_W VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3);
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_VGG_HPP

@@ -1,0 +1,12 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_PERF_PRECOMP_HPP
+#define OPENCV_TRIPOSE_PERF_PRECOMP_HPP
+
+#include "opencv2/ts.hpp"
+#include "opencv2/ts/ts_perf.hpp"
+#include "opencv2/tripose.hpp"
+
+#endif // OPENCV_TRIPOSE_PERF_PRECOMP_HPP

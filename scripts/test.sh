@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The test command of the README: installs the dependencies, builds, runs every test.
+#   C++: the module's tests through ctest (standalone build against the system OpenCV),
+#        the installed package consumed by test/consumer.
+#   Python: pytest over codegen/ and test/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+
+bash scripts/install_dependencies.sh
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$root/build/install" >/dev/null
+cmake --build build
+cmake --install build >/dev/null
+
+# A downstream project finds the installed package and links its one imported target.
+cmake -S test/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$root/build/install" >/dev/null
+cmake --build build/consumer
+build/consumer/tripose_consumer
+
+(cd build && ctest --output-on-failure)
+.venv/bin/python -m pytest -q
