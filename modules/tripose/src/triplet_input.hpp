@@ -1,0 +1,35 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_TRIPLET_INPUT_HPP
+#define OPENCV_TRIPOSE_TRIPLET_INPUT_HPP
+
+#include "opencv2/core.hpp"
+#include "triplet_data.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+/** Validates the arguments shared by the public estimators and converts them into calibrated,
+undistorted observations. Every violation raises cv::Exception (StsBadArg or StsBadSize) whose
+message names the argument and states what was expected. Requires at least @p minFeatures
+features (points + lines).
+
+Homogeneous lines (Mx3) carry no extent; where end points are needed (scoring, cheirality) two
+points on the line, kHomogeneousLineHalfLength px either side of the point closest to the principal
+point, stand in for them.
+*/
+TripletData readTripletInput(InputArray points1, InputArray points2, InputArray points3,
+                             InputArray lines1, InputArray lines2, InputArray lines3,
+                             InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                             InputArray R12, InputArray t12, int minFeatures = 4);
+
+constexpr double kHomogeneousLineHalfLength = 50.0;
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_TRIPLET_INPUT_HPP

@@ -1,0 +1,168 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "problem_io.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace tripose_samples {
+
+namespace {
+
+std::runtime_error keyError(const std::string& key, const std::string& what)
+{
+    return std::runtime_error("key '" + key + "': " + what);
+}
+
+//! A matrix under @p key, or an empty one when the key is absent or empty.
+cv::Mat readMatrix(const cv::FileStorage& fs, const std::string& key)
+{
+    const cv::FileNode node = fs[key];
+    if (node.empty() || node.isNone())
+        return cv::Mat();
+    if (!node.isMap())
+        throw keyError(key, "expected an OpenCV matrix (!!opencv-matrix with rows, cols, dt, data)");
+    cv::Mat m;
+    try
+    {
+        node >> m;
+    }
+    catch (const cv::Exception& e)
+    {
+        throw keyError(key, "malformed matrix: " + e.msg);
+    }
+    if (m.empty())
+        return m;
+    if (m.channels() != 1)
+        throw keyError(key, "expected a 1-channel matrix");
+    m.convertTo(m, CV_64F);
+    if (!cv::checkRange(m))
+        throw keyError(key, "contains NaN or Inf values");
+    return m;
+}
+
+cv::Mat requireShape(const cv::Mat& m, const std::string& key, int rows, int cols)
+{
+    if (m.empty())
+        throw keyError(key, "missing");
+    if ((rows > 0 && m.rows != rows) || (cols > 0 && m.cols != cols))
+        throw keyError(key, cv::format("expected %sx%s, got %dx%d", rows > 0 ? std::to_string(rows).c_str() : "N",
+                                       cols > 0 ? std::to_string(cols).c_str() : "N", m.rows, m.cols));
+    return m;
+}
+
+//! One key (e.g. K) or three per-view keys (K1..K3); not both.
+std::vector<cv::Mat> readShared(const cv::FileStorage& fs, const std::string& key, bool required)
+{
+    const cv::Mat shared = readMatrix(fs, key);
+    cv::Mat perView[3];
+    int present = 0;
+    for (int v = 0; v < 3; ++v)
+    {
+        perView[v] = readMatrix(fs, key + std::to_string(v + 1));
+        present += !perView[v].empty();
+    }
+    if (!shared.empty() && present > 0)
+        throw keyError(key, "give either " + key + " or " + key + "1.." + key + "3, not both");
+    if (!shared.empty())
+        return { shared };
+    if (present == 3)
+        return { perView[0], perView[1], perView[2] };
+    for (int v = 0; v < 3 && present > 0; ++v)
+        if (perView[v].empty())
+            throw keyError(key + std::to_string(v + 1), "missing (per-view " + key + " needs all three views)");
+    if (required)
+        throw keyError(key, "missing (give " + key + " or " + key + "1.." + key + "3)");
+    return {};
+}
+
+//! points1..3 or lines1..3: all absent/empty, or all present with the given width and equal rows.
+void readFeatures(const cv::FileStorage& fs, const std::string& prefix, int width, cv::Mat out[3])
+{
+    for (int v = 0; v < 3; ++v)
+    {
+        const std::string key = prefix + std::to_string(v + 1);
+        out[v] = readMatrix(fs, key);
+        if (out[v].empty())
+            out[v] = cv::Mat(0, width, CV_64F);
+        else if (out[v].cols != width)
+            throw keyError(key, cv::format("expected %d columns, got %dx%d", width, out[v].rows, out[v].cols));
+    }
+    for (int v = 1; v < 3; ++v)
+        if (out[v].rows != out[0].rows)
+            throw keyError(prefix + std::to_string(v + 1),
+                           cv::format("has %d rows but %s1 has %d", out[v].rows, prefix.c_str(), out[0].rows));
+}
+
+Problem readFromStorage(const cv::FileStorage& fs)
+{
+    Problem p;
+    p.K = readShared(fs, "K", true);
+    for (size_t v = 0; v < p.K.size(); ++v)
+        requireShape(p.K[v], p.K.size() == 1 ? "K" : "K" + std::to_string(v + 1), 3, 3);
+    p.dist = readShared(fs, "dist", false);
+    p.R12 = readMatrix(fs, "R12");
+    if (p.R12.empty() || !(p.R12.total() == 9 || p.R12.total() == 3))
+        throw keyError("R12", p.R12.empty() ? "missing" : "expected 3x3 rotation or 3x1 Rodrigues vector");
+    p.t12 = readMatrix(fs, "t12");
+    if (p.t12.total() != 3)
+        throw keyError("t12", p.t12.empty() ? "missing" : "expected 3x1");
+    readFeatures(fs, "points", 2, p.points);
+    readFeatures(fs, "lines", 4, p.lines);
+    return p;
+}
+
+} // namespace
+
+Problem readProblem(const std::string& path)
+{
+    cv::FileStorage fs;
+    try
+    {
+        if (!fs.open(path, cv::FileStorage::READ))
+            throw std::runtime_error("cannot open " + path);
+    }
+    catch (const cv::Exception& e)
+    {
+        throw std::runtime_error("cannot parse " + path + ": " + e.msg);
+    }
+    return readFromStorage(fs);
+}
+
+Problem readProblemFromString(const std::string& text, const std::string& format)
+{
+    cv::FileStorage fs;
+    try
+    {
+        if (!fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | (format == ".json" ? cv::FileStorage::FORMAT_JSON : cv::FileStorage::FORMAT_YAML)))
+            throw std::runtime_error("cannot parse the problem text");
+    }
+    catch (const cv::Exception& e)
+    {
+        throw std::runtime_error("cannot parse the problem text: " + e.msg);
+    }
+    return readFromStorage(fs);
+}
+
+std::string temporaryNameFor(const std::string& path)
+{
+    // Keep the extension: FileStorage picks YAML or JSON from it.
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return path + ".partial";
+    return path.substr(0, dot) + ".partial" + path.substr(dot);
+}
+
+void commitAtomicWrite(const std::string& temporary, const std::string& path)
+{
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    {
+        std::remove(temporary.c_str());
+        throw std::runtime_error("cannot write " + path);
+    }
+}
+
+} // namespace tripose_samples
