@@ -1,0 +1,390 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Synthetic three-view scenes following the protocol of Qadir & Neubert (Sec. IV-A): structure in
+// a cube centred at the world origin, cameras looking at the origin. Everything is returned in the
+// frame of view 1.
+
+#include "precomp.hpp"
+
+namespace cv {
+namespace tripose {
+
+SyntheticSceneParams::SyntheticSceneParams()
+    : numPoints(4), numLines(4), motion(MOTION_LARGE), noiseSigma(0.0), outlierRatio(0.0),
+      cubeSize(10.0), cameraDistance(20.0), smallMotionRadius(5.0), imageSize(640, 480), seed(0)
+{
+}
+
+namespace {
+
+const double kDefaultFocalPx = 800.0;
+//! Noise-free features stay this far inside the image border, so small noise rarely pushes them out.
+const double kImageMarginPx = 2.0;
+//! Shorter projected segments carry almost no direction.
+const double kMinSegmentLengthPx = 20.0;
+//! A replaced (outlier) observation is at least this far from being consistent with the truth.
+const double kOutlierMinOffsetPx = 20.0;
+//! Rejection-sampling budget per feature before the parameters are declared infeasible.
+const int kMaxAttemptsPerFeature = 20000;
+
+//! Independent random streams, so that e.g. changing numLines leaves the points unchanged and
+//! changing noiseSigma leaves the geometry unchanged.
+enum Stream
+{
+    STREAM_CAMERAS = 1,
+    STREAM_POINTS,
+    STREAM_LINES,
+    STREAM_OUTLIERS,
+    STREAM_NOISE
+};
+
+//! Seed of one stream: a splitmix64 mix of the user seed and the stream id (cv::RNG needs a
+//! non-zero state; the mix of distinct inputs gives well separated states).
+RNG makeStream(int seed, Stream stream)
+{
+    uint64 z = (uint64)(unsigned)seed * 0x9E3779B97F4A7C15ULL + (uint64)stream * 0xD1B54A32D192ED03ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+    return RNG(z ? z : 0x853C49E6748FEA9BULL);
+}
+
+//! A camera in the frame of view 1: x ~ K (R X + t).
+struct ViewGeometry
+{
+    Matx33d K;
+    Matx33d R;
+    Vec3d t;
+};
+
+Vec3d randomUnitVector(RNG& rng)
+{
+    const double z = rng.uniform(-1.0, 1.0);
+    const double phi = rng.uniform(0.0, 2.0 * CV_PI);
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return Vec3d(r * std::cos(phi), r * std::sin(phi), z);
+}
+
+//! World-to-camera rotation of a camera at @p centre looking at the origin, rolled by @p roll.
+Matx33d lookAtOrigin(const Vec3d& centre, double roll)
+{
+    const Vec3d z = -centre * (1.0 / norm(centre));
+    const Vec3d helper = std::abs(z[0]) < 0.9 ? Vec3d(1, 0, 0) : Vec3d(0, 1, 0);
+    Vec3d x0 = helper.cross(z);
+    x0 *= 1.0 / norm(x0);
+    const Vec3d y0 = z.cross(x0);
+    const Vec3d x = std::cos(roll) * x0 + std::sin(roll) * y0;
+    const Vec3d y = z.cross(x);
+    return Matx33d(x[0], x[1], x[2],
+                   y[0], y[1], y[2],
+                   z[0], z[1], z[2]);
+}
+
+//! Projects X (frame of view 1); false when X is not in front of the camera.
+inline bool project(const ViewGeometry& view, const Vec3d& X, Point2d& x)
+{
+    const Vec3d p = view.K * (view.R * X + view.t);
+    if (!(p[2] > 0))
+        return false;
+    x = Point2d(p[0] / p[2], p[1] / p[2]);
+    return true;
+}
+
+inline bool insideImage(const Point2d& x, const Size& size)
+{
+    return x.x >= kImageMarginPx && x.x <= size.width - 1 - kImageMarginPx &&
+           x.y >= kImageMarginPx && x.y <= size.height - 1 - kImageMarginPx;
+}
+
+Point2d randomImagePoint(RNG& rng, const Size& size)
+{
+    return Point2d(rng.uniform(kImageMarginPx, size.width - 1 - kImageMarginPx),
+                   rng.uniform(kImageMarginPx, size.height - 1 - kImageMarginPx));
+}
+
+//! Distance of @p x to the infinite line through @p a and @p b.
+double distanceToLine(const Point2d& x, const Point2d& a, const Point2d& b)
+{
+    const Point2d d = b - a;
+    return std::abs(d.cross(x - a)) / std::sqrt(d.dot(d));
+}
+
+[[noreturn]] void badParam(const char* name, const String& expected)
+{
+    CV_Error(Error::StsBadArg, format("generateSyntheticScene: SyntheticSceneParams::%s: %s", name, expected.c_str()));
+}
+
+[[noreturn]] void infeasible(const char* what)
+{
+    CV_Error(Error::StsBadArg,
+             format("generateSyntheticScene: no %s found after %d random attempts; the cube is barely visible "
+                    "in all three views (check cubeSize, cameraDistance, imageSize and cameraMatrices)",
+                    what, kMaxAttemptsPerFeature));
+}
+
+//! Checked, normalised (K(2,2) = 1) intrinsics of the three views.
+void intrinsicsFromParams(const SyntheticSceneParams& params, Matx33d K[3])
+{
+    const std::vector<Mat>& given = params.cameraMatrices;
+    if (given.empty())
+    {
+        const Matx33d K0(kDefaultFocalPx, 0, (params.imageSize.width - 1) * 0.5,
+                         0, kDefaultFocalPx, (params.imageSize.height - 1) * 0.5,
+                         0, 0, 1);
+        K[0] = K[1] = K[2] = K0;
+        return;
+    }
+    if (given.size() != 1 && given.size() != 3)
+        badParam("cameraMatrices", format("expected 0 (default f = 800 px), 1 or 3 matrices, got %d", (int)given.size()));
+    for (size_t i = 0; i < given.size(); ++i)
+    {
+        const String name = format("cameraMatrices[%d]", (int)i);
+        const Mat& m = given[i];
+        if (m.rows != 3 || m.cols != 3 || m.channels() != 1)
+            badParam(name.c_str(), format("expected a 3x3 1-channel matrix, got %dx%d with %d channels",
+                                          m.rows, m.cols, m.channels()));
+        Mat m64;
+        m.convertTo(m64, CV_64F);
+        Matx33d k(m64.ptr<double>());
+        if (!checkRange(m64) || k(2, 2) == 0)
+            badParam(name.c_str(), "expected finite entries and K(2,2) != 0");
+        k *= 1.0 / k(2, 2);
+        if (k(1, 0) != 0 || k(2, 0) != 0 || k(2, 1) != 0 || !(k(0, 0) > 0) || !(k(1, 1) > 0))
+            badParam(name.c_str(), "expected an upper-triangular intrinsic matrix with positive focal lengths");
+        K[i] = k;
+    }
+    if (given.size() == 1)
+        K[1] = K[2] = K[0];
+}
+
+void validate(const SyntheticSceneParams& p)
+{
+    if (p.numPoints < 0)
+        badParam("numPoints", format("expected >= 0, got %d", p.numPoints));
+    if (p.numLines < 0)
+        badParam("numLines", format("expected >= 0, got %d", p.numLines));
+    if (p.motion != MOTION_LARGE && p.motion != MOTION_SMALL)
+        badParam("motion", format("expected MOTION_LARGE (0) or MOTION_SMALL (1), got %d", p.motion));
+    if (!(p.noiseSigma >= 0) || !std::isfinite(p.noiseSigma))
+        badParam("noiseSigma", format("expected a finite value >= 0, got %g", p.noiseSigma));
+    if (!(p.outlierRatio >= 0 && p.outlierRatio < 1))
+        badParam("outlierRatio", format("expected a value in [0, 1), got %g", p.outlierRatio));
+    if (!(p.cubeSize > 0) || !std::isfinite(p.cubeSize))
+        badParam("cubeSize", format("expected a finite value > 0, got %g", p.cubeSize));
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * p.cubeSize;
+    if (!(p.cameraDistance > halfDiagonal) || !std::isfinite(p.cameraDistance))
+        badParam("cameraDistance", format("expected a finite value > the cube's half diagonal (%g), got %g",
+                                          halfDiagonal, p.cameraDistance));
+    if (!(p.smallMotionRadius >= 0) || !std::isfinite(p.smallMotionRadius))
+        badParam("smallMotionRadius", format("expected a finite value >= 0, got %g", p.smallMotionRadius));
+    if (p.motion == MOTION_SMALL && !(p.cameraDistance - p.smallMotionRadius > halfDiagonal))
+        badParam("smallMotionRadius", format("views 2 and 3 could enter the cube: expected cameraDistance - "
+                                             "smallMotionRadius > %g (the cube's half diagonal), got %g - %g",
+                                             halfDiagonal, p.cameraDistance, p.smallMotionRadius));
+    const int minSide = (int)(2 * kImageMarginPx) + 2;
+    if (p.imageSize.width < minSide || p.imageSize.height < minSide)
+        badParam("imageSize", format("expected both sides >= %d px, got %dx%d", minSide,
+                                     p.imageSize.width, p.imageSize.height));
+}
+
+//! The three cameras in the frame of view 1, plus the world-to-view-1 transform of the structure.
+void placeCameras(const SyntheticSceneParams& p, const Matx33d K[3], ViewGeometry views[3],
+                  Matx33d& worldToView1R, Vec3d& worldToView1t)
+{
+    RNG rng = makeStream(p.seed, STREAM_CAMERAS);
+    Vec3d centres[3];
+    Matx33d rotations[3];
+    centres[0] = p.cameraDistance * randomUnitVector(rng);
+    for (int v = 1; v < 3; ++v)
+    {
+        if (p.motion == MOTION_LARGE)
+            centres[v] = p.cameraDistance * randomUnitVector(rng);
+        else // uniform in the ball of radius smallMotionRadius around view 1
+            centres[v] = centres[0] + p.smallMotionRadius * std::cbrt(rng.uniform(0.0, 1.0)) * randomUnitVector(rng);
+    }
+    for (int v = 0; v < 3; ++v)
+        rotations[v] = lookAtOrigin(centres[v], rng.uniform(0.0, 2.0 * CV_PI));
+
+    worldToView1R = rotations[0];
+    worldToView1t = -(rotations[0] * centres[0]);
+    for (int v = 0; v < 3; ++v)
+    {
+        // X_v = R_v (X_w - C_v) with X_w = R_1^T (X_1 - t_1).
+        views[v].K = K[v];
+        views[v].R = rotations[v] * rotations[0].t();
+        views[v].t = -(rotations[v] * centres[v]) - views[v].R * worldToView1t;
+    }
+    views[0].R = Matx33d::eye(); // exact, not a rounded R_1 R_1^T
+    views[0].t = Vec3d(0, 0, 0);
+}
+
+Vec3d randomCubePoint(RNG& rng, double halfSize, const Matx33d& R, const Vec3d& t)
+{
+    const Vec3d Xw(rng.uniform(-halfSize, halfSize), rng.uniform(-halfSize, halfSize), rng.uniform(-halfSize, halfSize));
+    return R * Xw + t;
+}
+
+} // namespace
+
+SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
+{
+    CV_INSTRUMENT_REGION();
+    validate(params);
+    Matx33d K[3];
+    intrinsicsFromParams(params, K);
+
+    ViewGeometry views[3];
+    Matx33d toView1R;
+    Vec3d toView1t;
+    placeCameras(params, K, views, toView1R, toView1t);
+
+    const int N = params.numPoints, M = params.numLines;
+    const Size size = params.imageSize;
+    const double halfSize = 0.5 * params.cubeSize;
+
+    SyntheticScene scene;
+    scene.points3d.create(N, 3, CV_64F);
+    scene.lines3d.create(M, 6, CV_64F);
+    Mat* pointObs[3] = { &scene.points1, &scene.points2, &scene.points3 };
+    Mat* lineObs[3] = { &scene.lines1, &scene.lines2, &scene.lines3 };
+    for (int v = 0; v < 3; ++v)
+    {
+        pointObs[v]->create(N, 2, CV_64F);
+        lineObs[v]->create(M, 4, CV_64F);
+    }
+
+    // Points: uniform in the cube, kept if inside every image and in front of every camera.
+    RNG pointRng = makeStream(params.seed, STREAM_POINTS);
+    for (int i = 0; i < N; ++i)
+    {
+        Point2d x[3];
+        Vec3d X;
+        int attempt = 0;
+        for (;; ++attempt)
+        {
+            if (attempt == kMaxAttemptsPerFeature)
+                infeasible("point projecting inside all three images");
+            X = randomCubePoint(pointRng, halfSize, toView1R, toView1t);
+            bool ok = true;
+            for (int v = 0; v < 3 && ok; ++v)
+                ok = project(views[v], X, x[v]) && insideImage(x[v], size);
+            if (ok)
+                break;
+        }
+        double* X3 = scene.points3d.ptr<double>(i);
+        X3[0] = X[0]; X3[1] = X[1]; X3[2] = X[2];
+        for (int v = 0; v < 3; ++v)
+        {
+            double* o = pointObs[v]->ptr<double>(i);
+            o[0] = x[v].x; o[1] = x[v].y;
+        }
+    }
+
+    // Segments: both end points in the cube and visible, long enough in every view.
+    RNG lineRng = makeStream(params.seed, STREAM_LINES);
+    for (int i = 0; i < M; ++i)
+    {
+        Point2d a[3], b[3];
+        Vec3d A, B;
+        int attempt = 0;
+        for (;; ++attempt)
+        {
+            if (attempt == kMaxAttemptsPerFeature)
+                infeasible(format("segment inside all three images and at least %g px long in each",
+                                  kMinSegmentLengthPx).c_str());
+            A = randomCubePoint(lineRng, halfSize, toView1R, toView1t);
+            B = randomCubePoint(lineRng, halfSize, toView1R, toView1t);
+            bool ok = true;
+            for (int v = 0; v < 3 && ok; ++v)
+                ok = project(views[v], A, a[v]) && project(views[v], B, b[v]) && insideImage(a[v], size) &&
+                     insideImage(b[v], size) && norm(b[v] - a[v]) >= kMinSegmentLengthPx;
+            if (ok)
+                break;
+        }
+        double* L3 = scene.lines3d.ptr<double>(i);
+        L3[0] = A[0]; L3[1] = A[1]; L3[2] = A[2];
+        L3[3] = B[0]; L3[4] = B[1]; L3[5] = B[2];
+        for (int v = 0; v < 3; ++v)
+        {
+            double* o = lineObs[v]->ptr<double>(i);
+            o[0] = a[v].x; o[1] = a[v].y; o[2] = b[v].x; o[3] = b[v].y;
+        }
+    }
+
+    // Outliers: exactly round(ratio * count) view-3 observations replaced by random ones that are
+    // clearly inconsistent with the truth.
+    scene.pointInliers = Mat::ones(N, 1, CV_8U);
+    scene.lineInliers = Mat::ones(M, 1, CV_8U);
+    RNG outlierRng = makeStream(params.seed, STREAM_OUTLIERS);
+    std::vector<int> order;
+    const int numPointOutliers = (int)std::lround(params.outlierRatio * N);
+    order.resize(N);
+    for (int i = 0; i < N; ++i)
+        order[i] = i;
+    for (int i = 0; i < numPointOutliers; ++i)
+    {
+        std::swap(order[i], order[outlierRng.uniform(i, N)]);
+        const int k = order[i];
+        scene.pointInliers.at<uchar>(k) = 0;
+        double* o = scene.points3.ptr<double>(k);
+        const Point2d truth(o[0], o[1]);
+        Point2d x;
+        int attempt = 0;
+        do
+        {
+            if (attempt++ == kMaxAttemptsPerFeature)
+                infeasible("outlier point far enough from the true one");
+            x = randomImagePoint(outlierRng, size);
+        } while (norm(x - truth) < kOutlierMinOffsetPx);
+        o[0] = x.x; o[1] = x.y;
+    }
+    const int numLineOutliers = (int)std::lround(params.outlierRatio * M);
+    order.resize(M);
+    for (int i = 0; i < M; ++i)
+        order[i] = i;
+    for (int i = 0; i < numLineOutliers; ++i)
+    {
+        std::swap(order[i], order[outlierRng.uniform(i, M)]);
+        const int k = order[i];
+        scene.lineInliers.at<uchar>(k) = 0;
+        double* o = scene.lines3.ptr<double>(k);
+        const Point2d ta(o[0], o[1]), tb(o[2], o[3]);
+        Point2d a, b;
+        int attempt = 0;
+        do
+        {
+            if (attempt++ == kMaxAttemptsPerFeature)
+                infeasible("outlier segment far enough from the true line");
+            a = randomImagePoint(outlierRng, size);
+            b = randomImagePoint(outlierRng, size);
+        } while (norm(b - a) < kMinSegmentLengthPx ||
+                 std::max(distanceToLine(a, ta, tb), distanceToLine(b, ta, tb)) < kOutlierMinOffsetPx);
+        o[0] = a.x; o[1] = a.y; o[2] = b.x; o[3] = b.y;
+    }
+
+    if (params.noiseSigma > 0)
+    {
+        RNG noiseRng = makeStream(params.seed, STREAM_NOISE);
+        for (int v = 0; v < 3; ++v)
+            for (Mat* obs : { pointObs[v], lineObs[v] })
+            {
+                double* d = obs->ptr<double>();
+                for (size_t j = 0, n = obs->total(); j < n; ++j)
+                    d[j] += noiseRng.gaussian(params.noiseSigma);
+            }
+    }
+
+    scene.cameraMatrices.resize(3);
+    for (int v = 0; v < 3; ++v)
+        scene.cameraMatrices[v] = Mat(views[v].K, true);
+    scene.R12 = Mat(views[1].R, true);
+    scene.t12 = Mat(views[1].t, true);
+    scene.R = Mat(views[2].R, true);
+    scene.t = Mat(views[2].t, true);
+    return scene;
+}
+
+} // namespace tripose
+} // namespace cv
