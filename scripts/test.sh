@@ -19,4 +19,5 @@ cmake --build build/consumer
 build/consumer/tripose_consumer
 
 (cd build && ctest --output-on-failure)
+.venv/bin/python codegen/generate.py --check
 .venv/bin/python -m pytest -q
