@@ -4,10 +4,12 @@
 
 #include "test_precomp.hpp"
 
-#include <filesystem>
+#include <cstdio>
 #include <functional>
 #include <fstream>
 #include <sstream>
+
+#include "opencv2/core/utils/filesystem.hpp"
 
 namespace opencv_test {
 namespace {
@@ -315,39 +317,43 @@ TEST(Tripose_VggDataset, bad_arguments_are_named)
     EXPECT_NE(msg.find(missing), std::string::npos) << msg;
 }
 
-//! A writable copy of a bundled sequence, removed at the end of the test.
+//! A writable copy of a bundled sequence (text files only), removed at the end of the test.
 class SequenceCopy
 {
 public:
     explicit SequenceCopy(const std::string& name)
     {
-        namespace fs = std::filesystem;
-        const fs::path source = findDataDirectory("vgg/" + name);
-        RNG rng((uint64)std::hash<std::string>()(name + std::to_string((long long)cv::getTickCount())));
-        dir_ = fs::temp_directory_path() / format("tripose_vgg_%s_%08x", name.c_str(), (unsigned)rng.next());
-        fs::create_directories(dir_);
-        for (const auto& entry : fs::directory_iterator(source))
-            if (entry.path().extension() != ".jpg")
-                fs::copy_file(entry.path(), dir_ / entry.path().filename());
+        const std::string source = findDataDirectory("vgg/" + name);
+        dir_ = cv::tempfile("_tripose_vgg");
+        CV_Assert(utils::fs::createDirectories(dir_));
+        std::vector<String> files;
+        utils::fs::glob_relative(source, "", files, false, false);
+        for (const String& f : files)
+            if (f.size() < 4 || f.compare(f.size() - 4, 4, ".jpg") != 0)
+                write(f, readFile(utils::fs::join(source, f)));
     }
-    ~SequenceCopy() { std::filesystem::remove_all(dir_); }
-    std::string dir() const { return dir_.string(); }
-    std::string file(const std::string& name) const { return (dir_ / name).string(); }
+    ~SequenceCopy() { utils::fs::remove_all(dir_); }
+    std::string dir() const { return dir_; }
+    std::string file(const std::string& name) const { return utils::fs::join(dir_, name); }
     void write(const std::string& name, const std::string& text) const
     {
-        std::ofstream out(file(name), std::ios::trunc);
+        std::ofstream out(file(name), std::ios::binary | std::ios::trunc);
         out << text;
+        CV_Assert(out.good());
     }
-    std::string read(const std::string& name) const
+    std::string read(const std::string& name) const { return readFile(file(name)); }
+    void remove(const std::string& name) const { CV_Assert(std::remove(file(name).c_str()) == 0); }
+
+private:
+    static std::string readFile(const std::string& path)
     {
-        std::ifstream in(file(name));
+        std::ifstream in(path, std::ios::binary);
+        CV_Assert(in.good());
         std::stringstream ss;
         ss << in.rdbuf();
         return ss.str();
     }
-
-private:
-    std::filesystem::path dir_;
+    std::string dir_;
 };
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to)
@@ -390,12 +396,12 @@ TEST(Tripose_VggDataset, missing_or_malformed_files_are_named)
     const std::string name = "Merton-College-III";
     {
         SequenceCopy copy(name);
-        std::filesystem::remove(copy.file("002.lines"));
+        copy.remove("002.lines");
         expectNamed(copy.dir(), { "002.lines" });
     }
     {
         SequenceCopy copy(name);
-        std::filesystem::remove(copy.file("nview-corners"));
+        copy.remove("nview-corners");
         expectNamed(copy.dir(), { "nview-corners" });
     }
     {

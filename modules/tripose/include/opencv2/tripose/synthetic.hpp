@@ -57,9 +57,27 @@ struct CV_EXPORTS_W_SIMPLE SyntheticScene
 };
 
 /** @brief Generates a random three-view scene of points and line segments following the synthetic
-protocol of @cite QadirNeubert2017 (Sec. IV-A). Every feature projects inside the image in all three
-views (before noise) and lies in front of every camera. Deterministic for a given seed.
-@throws cv::Exception naming the parameter when a parameter is out of range.
+protocol of @cite QadirNeubert2017 (Sec. IV-A).
+
+Points and segment end points are uniform in the cube centred at the world origin. View 1 is at
+cameraDistance from the origin in a uniformly random direction, looking at the origin with a random
+roll; views 2 and 3 are placed the same way (#MOTION_LARGE) or uniformly in the ball of radius
+smallMotionRadius around view 1, looking at the origin (#MOTION_SMALL). Everything is then
+expressed in the frame of view 1, where the cube centre is at (0, 0, cameraDistance).
+
+Features are rejection-sampled: before noise, every point and both end points of every segment
+project at least 2 px inside the image in all three views, in front of every camera, and every
+projected segment is at least 20 px long. Gaussian noise of standard deviation noiseSigma is then
+added to every observed coordinate in all three views. Outliers: exactly round(outlierRatio * N)
+points and round(outlierRatio * M) segments, chosen at random, have their view-3 observation
+replaced by a random one in the image that is at least 20 px from consistent (point distance, or
+largest end-point distance to the true image line); their mask entry is 0.
+
+Deterministic for a given seed and thread-safe (no global state). The cameras, points, lines,
+outliers and noise use separate random streams, so that e.g. changing noiseSigma or numLines keeps
+the cameras and points of a seed.
+@throws cv::Exception naming the parameter when a parameter is out of range, or when no feature can
+be placed inside all three images (e.g. a principal point far outside the image).
 */
 CV_EXPORTS_W SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params);
 

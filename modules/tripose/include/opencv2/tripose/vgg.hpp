@@ -35,11 +35,19 @@ struct CV_EXPORTS_W_SIMPLE VggTriplet
 /** @brief Number of views of a VGG multi-view sequence stored in a folder. */
 CV_EXPORTS_W int vggSequenceViewCount(const String& sequenceDir);
 
-/** @brief Loads three views (0-based indices in image order) of a VGG multi-view sequence.
+/** @brief Loads three views (0-based indices in image order, distinct, in any order) of a VGG
+multi-view sequence.
 
-The camera matrices are decomposed into K[R|t]; a sequence whose world frame is mirrored
-(det of the left 3x3 block negative while the structure lies in front of the cameras) is read in a
-world frame with one axis flipped, so that every rotation is proper.
+The files are found by name: {stem}.P, {stem}.corners and {stem}.lines per view (stems sorted by
+name, e.g. bt.000 ... bt.010 or 001 ... 003) and {prefix}p3d, {prefix}l3d, {prefix}nview-corners,
+{prefix}nview-lines, where {prefix} is what precedes the view number ("bt.", "house." or nothing).
+Unseen features are '*' (or -1) in the nview files; extra columns of .lines files are ignored.
+
+Each camera matrix is scaled by -1 if needed so that the structure it sees is in front of it, then
+decomposed into K[R|t] (RQ decomposition, K with positive diagonal and K(2,2) = 1). A sequence
+whose world frame is mirrored (Model House and Corridor: det of the left 3x3 block negative while
+the structure lies in front of the cameras) is read in a world frame with the Z axis flipped, so
+that every rotation is proper. Features are returned in p3d / l3d order.
 @throws cv::Exception naming the file when a file is missing or malformed, or the view index when
 it is out of range.
 */
