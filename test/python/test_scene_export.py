@@ -130,8 +130,9 @@ def test_noise_and_outliers(tmp_path):
     assert (~point_inliers).sum() == round(0.3 * n)
     assert (~line_inliers).sum() == round(0.3 * n)
 
-    # Residuals of the inliers in view 3 are N(0, sigma^2) per coordinate: with ~420 points and
-    # ~840 end points (2520 coordinates) the sample std is within +-10% of sigma (7 standard errors).
+    # Residuals of the inliers in view 3 are N(0, sigma^2) per coordinate: 140 points and 280 end
+    # points give 840 coordinates, so the sample std has a relative standard error of
+    # 1/sqrt(2 * 840) = 2.4%; +-10% is 4 standard errors.
     K, (R, t) = s["K3"], poses(s)[2]
     x, _ = project(K, R, t, rows(s["points3d"], 3)[point_inliers])
     L = rows(s["lines3d"], 6)[line_inliers]
