@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -49,6 +50,10 @@ inline std::string findDataDirectory(const std::string& relative, bool required 
 namespace opencv_test {
 using namespace cvtest;
 using namespace cv;
+using std::get;
+using std::make_tuple;
+using std::tie;
+using std::tuple;
 using testing::Values;
 using testing::ValuesIn;
 using testing::Combine;

@@ -39,7 +39,7 @@ double polishRoot(const double* c, int degree, double x)
 
 } // namespace
 
-int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots)
+int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots, double imaginaryTolerance)
 {
     CV_Assert(degree >= 0 && degree <= kMaxDegree);
     double largest = 0;
@@ -89,7 +89,8 @@ int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots)
         for (int i = 0; i < m; ++i)
         {
             const std::complex<double> y = solver.eigenvalues()(i);
-            if (std::abs(y.imag()) <= 1e-6 * std::max(1.0, std::abs(y)))
+            // A complex pair is reported once (its member with positive imaginary part).
+            if (std::abs(y.imag()) <= imaginaryTolerance * std::max(1.0, std::abs(y)) && y.imag() >= 0)
                 roots[count++] = polishRoot(c, m, s * y.real());
         }
     }

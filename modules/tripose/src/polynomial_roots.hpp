@@ -12,11 +12,12 @@ namespace detail {
 /** Real roots of p(x) = sum_i coeffs[i] x^i (ascending powers, degree <= 16).
 
 Eigenvalues of the companion matrix of p after scaling x so that the coefficients are balanced,
-kept where their imaginary part is negligible, then polished by Newton steps on p itself (a step
+kept where their imaginary part is below @p imaginaryTolerance relative to their magnitude (a
+larger tolerance also returns the real parts of nearly real complex pairs), then polished by Newton steps on p itself (a step
 is kept only if it lowers |p|). Leading coefficients that are exactly zero lower the degree.
 Returns the number of roots written to @p roots (at most the degree), in ascending order.
 */
-int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots);
+int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots, double imaginaryTolerance = 1e-6);
 
 //! p(x) by Horner's rule (ascending coefficients).
 inline double evaluatePolynomial(const double* coeffs, int degree, double x)

@@ -5,7 +5,7 @@
 #include "precomp.hpp"
 
 #include <Eigen/Dense>
-#include <opencv2/calib3d.hpp>
+#include "opencv_compat.hpp"
 
 #include "triplet_input.hpp"
 

@@ -1,0 +1,68 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+
+#include "candidate_scoring.hpp"
+#include "linear_solver.hpp"
+#include "pose_conversion.hpp"
+#include "triplet_input.hpp"
+
+namespace cv {
+namespace tripose {
+
+int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray points3,
+                          InputArray lines1, InputArray lines2, InputArray lines3,
+                          InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                          InputArray R12, InputArray t12, OutputArray R, OutputArray t, int method,
+                          OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray reprojectionErrors)
+{
+    CV_INSTRUMENT_REGION();
+    if (method != POSE_LINEAR)
+        CV_Error_(Error::StsBadArg, ("method must be POSE_LINEAR (%d), got %d", (int)POSE_LINEAR, method));
+
+    const detail::TripletData data = detail::readTripletInput(points1, points2, points3, lines1, lines2, lines3,
+                                                              cameraMatrix, distCoeffs, R12, t12);
+    std::vector<detail::CameraPose> poses;
+    detail::linearPoseCandidates(data, poses);
+    const detail::TwoViewStructure structure = detail::triangulateTwoViewStructure(data);
+    const std::vector<detail::ScoredPose> ranked = detail::rankCandidates(data, structure, poses);
+
+    const int n = (int)ranked.size();
+    if (n == 0)
+    {
+        R.release();
+        t.release();
+    }
+    else
+    {
+        detail::toMat(ranked[0].pose.R).copyTo(R);
+        detail::toMat(ranked[0].pose.t).copyTo(t);
+    }
+    if (Rs.needed())
+    {
+        CV_Assert(Rs.kind() == _InputArray::STD_VECTOR_MAT && "Rs must be a std::vector<Mat>");
+        Rs.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            Rs.getMatRef(i) = detail::toMat(ranked[i].pose.R);
+    }
+    if (ts.needed())
+    {
+        CV_Assert(ts.kind() == _InputArray::STD_VECTOR_MAT && "ts must be a std::vector<Mat>");
+        ts.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            ts.getMatRef(i) = detail::toMat(ranked[i].pose.t);
+    }
+    if (reprojectionErrors.needed())
+    {
+        Mat errors(n, 1, CV_64F);
+        for (int i = 0; i < n; ++i)
+            errors.at<double>(i) = ranked[i].rms;
+        errors.copyTo(reprojectionErrors);
+    }
+    return n;
+}
+
+} // namespace tripose
+} // namespace cv

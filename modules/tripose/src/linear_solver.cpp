@@ -1,0 +1,85 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+
+#include <Eigen/Dense>
+
+#include "kernel_solutions.hpp"
+#include "linear_solver.hpp"
+#include "linear_system.hpp"
+#include "pose_recovery.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+int kernelDimensionFor(int numFeatures)
+{
+    CV_Assert(numFeatures >= 4);
+    return numFeatures >= 6 ? 1 : 12 - 2 * numFeatures;
+}
+
+int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
+                         const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
+{
+    const int numFeatures = (pointIndices ? (int)pointIndices->size() : data.numPoints()) +
+                            (lineIndices ? (int)lineIndices->size() : data.numLines());
+    const double translationScale = data.view2.t.norm();
+    const ConstraintMatrix A = buildConstraintMatrix(data, translationScale, pointIndices, lineIndices);
+    if (!A.allFinite())
+        return 0;
+
+    // The kernel from the SVD of A itself: eigenvectors of A^T A would square its conditioning.
+    // Rows beyond 12 are first folded into a 12x12 triangular factor (same right singular vectors).
+    Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12> reduced;
+    if (A.rows() > 12)
+    {
+        Eigen::HouseholderQR<ConstraintMatrix> qr(A);
+        reduced = qr.matrixQR().topRows<12>().triangularView<Eigen::Upper>();
+    }
+    else
+        reduced = A;
+    Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
+    const int N = kernelDimensionFor(numFeatures);
+    // Singular values descend: the last N right singular vectors span the (approximate) kernel.
+    const Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> basis = svd.matrixV().rightCols(N);
+    const Matrix12d normalMatrix = reduced.transpose() * reduced;
+
+    std::vector<Vector12d> solutions;
+    solveKernelCombinations(basis, solutions);
+
+    int added = 0;
+    for (const Vector12d& v : solutions)
+    {
+        CameraPose pose;
+        if (!poseFromSolutionVector(v, normalMatrix, pose))
+            continue;
+        polishPoseAlgebraic(normalMatrix, pose);
+        pose.t *= translationScale;
+        poses.push_back(pose);
+        ++added;
+    }
+    return added;
+}
+
+std::vector<ScoredPose> rankCandidates(const TripletData& data, const TwoViewStructure& structure,
+                                       const std::vector<CameraPose>& poses)
+{
+    std::vector<ScoredPose> ranked;
+    for (const CameraPose& pose : poses)
+    {
+        const ReprojectionScore score = scorePose(data, structure, pose);
+        if (2 * score.behind > score.considered || !std::isfinite(score.rms))
+            continue;
+        ranked.push_back({ pose, score.rms });
+    }
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const ScoredPose& a, const ScoredPose& b) { return a.rms < b.rms; });
+    return ranked;
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv

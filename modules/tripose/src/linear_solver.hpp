@@ -1,0 +1,48 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_LINEAR_SOLVER_HPP
+#define OPENCV_TRIPOSE_LINEAR_SOLVER_HPP
+
+#include <vector>
+
+#include "candidate_scoring.hpp"
+#include "triplet_data.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+/** Dimension N of the kernel the linear method works in for a number of features. Each point and
+each line constrains two of the 12 unknowns (a point's four trilinear rows have rank 2 on exact
+data), so N = 12 - 2 (points + lines) for four or five features and N = 1 from six on.
+*/
+int kernelDimensionFor(int numFeatures);
+
+/** Candidate poses of view 3 by the unified linear method (@cite QadirNeubert2017, Sec. III), before
+any scoring: the kernel of the stacked system, its combinations fixed by the orthonormality of R,
+the nearest rotation and a least-squares translation for each. Uses the selected features only
+(null pointers: all of them). Appends to @p poses and returns how many were appended.
+*/
+int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
+                         const std::vector<int>* pointIndices = nullptr,
+                         const std::vector<int>* lineIndices = nullptr);
+
+struct ScoredPose
+{
+    CameraPose pose;
+    double rms = 0; //!< RMS reprojection error in view 3 (px).
+};
+
+/** The paper's selection (Sec. III-G): drops candidates that put most of the structure behind
+view 3 and sorts the rest by reprojection error in view 3, best first.
+*/
+std::vector<ScoredPose> rankCandidates(const TripletData& data, const TwoViewStructure& structure,
+                                       const std::vector<CameraPose>& poses);
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_LINEAR_SOLVER_HPP

@@ -1,0 +1,178 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_pose_common.hpp"
+
+#include "../src/opencv_compat.hpp"
+
+namespace opencv_test {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Noise-free accuracy: the true pose must be among the candidates (and selected) for every mix.
+// ---------------------------------------------------------------------------------------------
+
+typedef testing::TestWithParam<testing::tuple<FeatureMix, int>> Tripose_LinearExact;
+
+TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
+{
+    const FeatureMix mix = testing::get<0>(GetParam());
+    const int motion = testing::get<1>(GetParam());
+    const int scenes = 1000;
+    // Exact data: the method is exact, so only rounding separates the estimate from the truth.
+    const double rotationTolerance = 1e-6, translationTolerance = 1e-6;
+    int found = 0, selected = 0;
+    double worstSelectedRotation = 0;
+    for (int seed = 0; seed < scenes; ++seed)
+    {
+        const tripose::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
+        std::vector<Mat> Rs, ts;
+        Mat R, t;
+        const int n = solveScene(s, Rs, ts, R, t);
+        ASSERT_EQ(n, (int)Rs.size());
+        bool hit = false;
+        for (int i = 0; i < n && !hit; ++i)
+            hit = rotationError(Rs[i], s.R) < rotationTolerance &&
+                  relativeTranslationError(ts[i], s.t) < translationTolerance;
+        found += hit;
+        if (n > 0)
+        {
+            const double e = rotationError(R, s.R);
+            worstSelectedRotation = std::max(worstSelectedRotation, e);
+            selected += e < rotationTolerance && relativeTranslationError(t, s.t) < translationTolerance;
+        }
+    }
+    std::cout << mixName(mix) << (motion == tripose::MOTION_LARGE ? " large" : " small")
+              << ": true pose among candidates " << found << "/" << scenes << ", selected " << selected
+              << "/" << scenes << ", worst selected rotation error " << worstSelectedRotation << " rad" << std::endl;
+    EXPECT_GE(found, scenes * 999 / 1000);
+    EXPECT_GE(selected, scenes * 99 / 100);
+}
+
+const FeatureMix kExactMixes[] = {
+    { 4, 0 }, { 0, 4 }, { 2, 2 }, { 3, 1 }, { 1, 3 }, // four features: kernel of dimension 4
+    { 3, 2 }, { 2, 3 }, { 5, 0 }, { 0, 5 },           // five features: dimension 2
+    { 3, 3 }, { 6, 0 }, { 0, 6 }, { 4, 4 }, { 10, 10 } // six and more: dimension 1
+};
+
+INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
+                        testing::Combine(testing::ValuesIn(kExactMixes),
+                                         testing::Values((int)tripose::MOTION_LARGE, (int)tripose::MOTION_SMALL)));
+
+// ---------------------------------------------------------------------------------------------
+// Input forms: all accepted layouts give the same pose.
+// ---------------------------------------------------------------------------------------------
+
+TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrinsics)
+{
+    const tripose::SyntheticScene s = makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 7);
+    Mat R, t;
+    ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                             s.cameraMatrices[0], noArray(), s.R12, s.t12, R, t), 0);
+    EXPECT_EQ(R.type(), CV_64F);
+    EXPECT_EQ(R.size(), Size(3, 3));
+    EXPECT_EQ(t.size(), Size(1, 3));
+    EXPECT_LT(rotationError(R, s.R), 1e-9);
+
+    // CV_32F, Nx1 2-channel points, Mx1 4-channel segments, Rodrigues R12.
+    Mat p[3], l[3];
+    const Mat* points[3] = { &s.points1, &s.points2, &s.points3 };
+    const Mat* lines[3] = { &s.lines1, &s.lines2, &s.lines3 };
+    for (int v = 0; v < 3; ++v)
+    {
+        points[v]->convertTo(p[v], CV_32F);
+        p[v] = p[v].reshape(2);
+        lines[v]->convertTo(l[v], CV_32F);
+        l[v] = l[v].reshape(4);
+    }
+    Mat rvec;
+    Rodrigues(s.R12, rvec);
+    Mat R32, t32;
+    ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices, noArray(),
+                                             rvec, s.t12, R32, t32), 0);
+    // Float inputs carry ~1e-7 relative rounding: a few micro-radians at this geometry.
+    EXPECT_LT(rotationError(R32, s.R), 1e-4);
+    EXPECT_LT(relativeTranslationError(t32, s.t), 1e-3);
+}
+
+TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
+{
+    const tripose::SyntheticScene s = makeScene({ 2, 4 }, tripose::MOTION_SMALL, 0.0, 3);
+    Mat homogeneous[3];
+    const Mat* lines[3] = { &s.lines1, &s.lines2, &s.lines3 };
+    for (int v = 0; v < 3; ++v)
+    {
+        homogeneous[v].create(lines[v]->rows, 3, CV_64F);
+        for (int i = 0; i < lines[v]->rows; ++i)
+        {
+            const Vec3d a(lines[v]->at<double>(i, 0), lines[v]->at<double>(i, 1), 1.0);
+            const Vec3d b(lines[v]->at<double>(i, 2), lines[v]->at<double>(i, 3), 1.0);
+            const Vec3d h = a.cross(b);
+            for (int k = 0; k < 3; ++k)
+                homogeneous[v].at<double>(i, k) = h[k];
+        }
+    }
+    Mat R, t;
+    ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, homogeneous[0], homogeneous[1],
+                                             homogeneous[2], s.cameraMatrices, noArray(), s.R12, s.t12, R, t), 0);
+    EXPECT_LT(rotationError(R, s.R), 1e-6);
+    EXPECT_LT(relativeTranslationError(t, s.t), 1e-6);
+}
+
+TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
+{
+    const tripose::SyntheticScene s = makeScene({ 10, 10 }, tripose::MOTION_LARGE, 0.0, 5);
+    const Mat dist = (Mat_<double>(1, 5) << -0.3, 0.1, 0.001, -0.0005, 0.0);
+    const Mat K = s.cameraMatrices[0];
+    // Distort every observation: pixel -> normalised -> projectPoints with the model.
+    auto distort = [&](const Mat& pixels) {
+        Mat pts = pixels.reshape(1, (int)pixels.total() * pixels.channels() / 2);
+        std::vector<Point3d> rays;
+        for (int i = 0; i < pts.rows; ++i)
+            rays.emplace_back((pts.at<double>(i, 0) - K.at<double>(0, 2)) / K.at<double>(0, 0),
+                              (pts.at<double>(i, 1) - K.at<double>(1, 2)) / K.at<double>(1, 1), 1.0);
+        std::vector<Point2d> out;
+        projectPoints(rays, Vec3d::all(0), Vec3d::all(0), K, dist, out);
+        return Mat(out, true).reshape(1, pixels.rows).clone();
+    };
+    Mat p[3] = { distort(s.points1), distort(s.points2), distort(s.points3) };
+    Mat l[3] = { distort(s.lines1.reshape(1, s.lines1.rows * 2)).reshape(1, s.lines1.rows),
+                 distort(s.lines2.reshape(1, s.lines2.rows * 2)).reshape(1, s.lines2.rows),
+                 distort(s.lines3.reshape(1, s.lines3.rows * 2)).reshape(1, s.lines3.rows) };
+    ASSERT_GT(cv::norm(p[2], s.points3, NORM_INF), 2.0) << "the distortion must move the points";
+    Mat R, t;
+    ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, dist, s.R12, s.t12, R, t), 0);
+    // Straight 3D lines are curved in distorted images; their end points undistort exactly.
+    EXPECT_LT(rotationError(R, s.R), 1e-6);
+    EXPECT_LT(relativeTranslationError(t, s.t), 1e-6);
+
+    Mat Rbad, tbad; // Ignoring the distortion must cost accuracy, or the test above proves nothing.
+    tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, noArray(), s.R12, s.t12, Rbad, tbad);
+    EXPECT_TRUE(Rbad.empty() || rotationError(Rbad, s.R) > 1e-4);
+}
+
+TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_error)
+{
+    const tripose::SyntheticScene s = makeScene({ 2, 2 }, tripose::MOTION_LARGE, 1.0, 21);
+    std::vector<Mat> Rs, ts;
+    Mat R, t, errors;
+    const int n = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                                 s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
+                                                 tripose::POSE_LINEAR, Rs, ts, errors);
+    ASSERT_GT(n, 0);
+    ASSERT_EQ((int)Rs.size(), n);
+    ASSERT_EQ((int)ts.size(), n);
+    ASSERT_EQ((int)errors.total(), n);
+    EXPECT_EQ(cv::norm(R, Rs[0], NORM_INF), 0.0);
+    for (int i = 0; i < n; ++i)
+    {
+        EXPECT_LT(cv::norm(Rs[i].t() * Rs[i], Mat::eye(3, 3, CV_64F), NORM_INF), 1e-12);
+        EXPECT_NEAR(cv::determinant(Rs[i]), 1.0, 1e-12);
+        EXPECT_TRUE(cv::checkRange(ts[i]));
+        if (i > 0)
+            EXPECT_LE(errors.at<double>(i - 1), errors.at<double>(i));
+    }
+}
+
+}} // namespace

@@ -1,0 +1,61 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_TEST_POSE_COMMON_HPP
+#define OPENCV_TRIPOSE_TEST_POSE_COMMON_HPP
+
+#include <string>
+#include <vector>
+
+#include "test_precomp.hpp"
+
+namespace opencv_test {
+
+//! Rotation angle (rad) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
+inline double rotationError(const Mat& A, const Mat& B)
+{
+    const double d = cv::norm(A, B, NORM_L2) / (2.0 * std::sqrt(2.0));
+    return 2.0 * std::asin(std::min(1.0, d));
+}
+
+//! |a - b| / |b|.
+inline double relativeTranslationError(const Mat& a, const Mat& b)
+{
+    return cv::norm(a.reshape(1, 3), b.reshape(1, 3), NORM_L2) / cv::norm(b, NORM_L2);
+}
+
+//! A feature mix: numbers of point and line triplets.
+struct FeatureMix
+{
+    int points;
+    int lines;
+};
+
+inline std::string mixName(const FeatureMix& m)
+{
+    return cv::format("%dP%dL", m.points, m.lines);
+}
+
+inline tripose::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
+{
+    tripose::SyntheticSceneParams params;
+    params.numPoints = mix.points;
+    params.numLines = mix.lines;
+    params.motion = motion;
+    params.noiseSigma = noise;
+    params.seed = seed;
+    return tripose::generateSyntheticScene(params);
+}
+
+//! Solves a scene with the linear method; all candidates best first.
+inline int solveScene(const tripose::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
+{
+    return tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                          s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
+                                          tripose::POSE_LINEAR, Rs, ts);
+}
+
+} // namespace opencv_test
+
+#endif // OPENCV_TRIPOSE_TEST_POSE_COMMON_HPP
