@@ -21,9 +21,12 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> ConstraintMat
 /** The matrix A of the linear system A v = 0 in v = [r1; r2; r3; t] (@cite QadirNeubert2017,
 Sec. III-A to III-C): four rows per point triplet (the trilinear equations 9-12 in Hartley-normalised
 coordinates) and two rows per line triplet (the planes of views 1 and 2 eliminated by a Householder
-QR, leaving "two points of the 3D line project onto l3"). Each feature's block of rows is scaled
-to the same Frobenius norm (sqrt 2), so that points and lines weigh alike whatever the
-normalising scales; this keeps A well conditioned.
+QR, leaving "two points of the 3D line project onto l3"). Each point's block of rows is scaled
+to Frobenius norm sqrt 2, so that points and lines weigh alike whatever the normalising scales,
+which keeps A well conditioned. A line's two rows use, as the two points of its 3D line, the
+view-1 end points lifted onto the plane of view 2, which makes them near-geometric residuals;
+with six or more features they are weighted by the inverse of their predicted noise (see
+linear_system.cpp).
 
 @p translationScale divides t12 before the rows are formed, so that the unknown t is expressed in
 units of |t12| and the columns of A are balanced whatever the user's units; multiply the solved t by
