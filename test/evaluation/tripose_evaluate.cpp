@@ -1,0 +1,474 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// tripose_evaluate: one experiment of the evaluation suite (doc/evaluation.md) per invocation.
+// Every trial is one JSON object on one line of stdout, so that a driver in any language reads
+// the results as they come and runs further peers on exactly the same inputs.
+//
+//   synthetic scenes (Qadir & Neubert, Sec. IV-A):
+//     tripose_evaluate synthetic --points N --lines M --noise px [--motion large|small]
+//                      [--outliers ratio] [--trials T] [--seed S] [--repeats K] [--threshold px]
+//                      [--methods list] [--dump-inputs]
+//   random subsets of a VGG multi-view sequence (Sec. IV-B):
+//     tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M
+//                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list]
+//                      [--dump-inputs]
+//
+// Methods (--methods, comma separated; default all that apply):
+//   linear         estimatePoseLinePoint (the paper's linear solver)
+//   linear+refine  refinePoseLinePoint started from the linear estimate
+//   ransac         estimatePoseLinePointRansac (robust + refined), threshold --threshold px
+//   ml_from_truth  refinePoseLinePoint started from the ground truth: the accuracy limit
+//   tri+sqpnp      points triangulated from views 1-2, then cv::solvePnP(SOLVEPNP_SQPNP), >= 3 points
+//   tri+epnp       the same with SOLVEPNP_EPNP, >= 4 points
+// Per method: rot_deg (angle of R_est R_gt^T), t_rel (|t - t_gt| / |t_gt|), time_us (median of
+// --repeats calls, one thread), ok. With --dump-inputs each line also carries the inputs and the
+// structure triangulated from views 1-2 (points and lines, with the time that took), which is
+// what the PoseLib peers of the Python driver consume.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/tripose.hpp>
+
+namespace {
+
+const char* kUsage =
+    "usage: tripose_evaluate synthetic --points N --lines M --noise px [--motion large|small]\n"
+    "                        [--outliers ratio] [--trials T] [--seed S] [--repeats K]\n"
+    "                        [--threshold px] [--methods list] [--dump-inputs]\n"
+    "       tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M [--trials T]\n"
+    "                        [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
+    "methods: linear, linear+refine, ransac, ml_from_truth, tri+sqpnp, tri+epnp (default: all)\n";
+
+const std::vector<std::string> kAllMethods = { "linear", "linear+refine", "ransac", "ml_from_truth", "tri+sqpnp",
+                                               "tri+epnp" };
+
+struct Options
+{
+    std::string source;  // "synthetic" or "vgg"
+    int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1;
+    double noise = 0.0, outliers = 0.0, threshold = -1.0;
+    int motion = cv::tripose::MOTION_LARGE;
+    std::string sequence;
+    int views[3] = { 0, 1, 2 };
+    std::vector<std::string> methods = kAllMethods;
+    bool dumpInputs = false;
+};
+
+//! One three-view problem with its ground truth, whatever produced it.
+struct Problem
+{
+    cv::Mat points1, points2, points3, lines1, lines2, lines3;  // Nx2, Mx4, CV_64F
+    std::vector<cv::Mat> K;                                      // three 3x3
+    cv::Mat R12, t12, R, t;                                      // R, t: ground truth of view 3
+};
+
+std::vector<std::string> split(const std::string& s, char sep)
+{
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    std::string item;
+    while (std::getline(ss, item, sep))
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+Options parse(int argc, char** argv)
+{
+    if (argc < 2)
+        throw std::runtime_error("missing experiment kind (synthetic or vgg)");
+    Options o;
+    o.source = argv[1];
+    if (o.source != "synthetic" && o.source != "vgg")
+        throw std::runtime_error("experiment kind must be synthetic or vgg, got " + o.source);
+    for (int i = 2; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        if (arg == "--dump-inputs") { o.dumpInputs = true; continue; }
+        if (i + 1 >= argc)
+            throw std::runtime_error("argument " + arg + ": missing value");
+        const std::string v = argv[++i];
+        if (arg == "--points") o.points = std::stoi(v);
+        else if (arg == "--lines") o.lines = std::stoi(v);
+        else if (arg == "--trials") o.trials = std::stoi(v);
+        else if (arg == "--seed") o.seed = std::stoi(v);
+        else if (arg == "--repeats") o.repeats = std::stoi(v);
+        else if (arg == "--noise") o.noise = std::stod(v);
+        else if (arg == "--outliers") o.outliers = std::stod(v);
+        else if (arg == "--threshold") o.threshold = std::stod(v);
+        else if (arg == "--sequence") o.sequence = v;
+        else if (arg == "--motion")
+        {
+            if (v != "large" && v != "small")
+                throw std::runtime_error("argument --motion: expected large or small, got " + v);
+            o.motion = v == "small" ? cv::tripose::MOTION_SMALL : cv::tripose::MOTION_LARGE;
+        }
+        else if (arg == "--views")
+        {
+            const std::vector<std::string> parts = split(v, ',');
+            if (parts.size() != 3)
+                throw std::runtime_error("argument --views: expected three indices a,b,c, got " + v);
+            for (int k = 0; k < 3; ++k)
+                o.views[k] = std::stoi(parts[k]);
+        }
+        else if (arg == "--methods")
+        {
+            o.methods = split(v, ',');
+            for (const std::string& m : o.methods)
+                if (std::find(kAllMethods.begin(), kAllMethods.end(), m) == kAllMethods.end())
+                    throw std::runtime_error("argument --methods: unknown method " + m);
+        }
+        else
+            throw std::runtime_error("unknown argument " + arg);
+    }
+    if (o.points < 0 || o.lines < 0 || o.points + o.lines < 4)
+        throw std::runtime_error("arguments --points/--lines: need at least four features in all");
+    if (o.trials < 1 || o.repeats < 1)
+        throw std::runtime_error("arguments --trials/--repeats: expected >= 1");
+    if (o.source == "vgg" && o.sequence.empty())
+        throw std::runtime_error("argument --sequence: required for vgg");
+    if (o.threshold <= 0)  // A fixed 2 px would drop inliers at high noise; 3 sigma keeps ~99% of them.
+        o.threshold = std::max(2.0, 3.0 * o.noise);
+    return o;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Error measures
+
+double rotationErrorDeg(const cv::Mat& A, const cv::Mat& B)
+{
+    // |A - B|_F = 2 sqrt(2) sin(theta / 2): accurate for tiny angles, unlike acos of the trace.
+    return 2.0 * std::asin(std::min(1.0, cv::norm(A, B) / (2.0 * std::sqrt(2.0)))) * 180.0 / CV_PI;
+}
+
+double translationError(const cv::Mat& a, const cv::Mat& b)
+{
+    return cv::norm(a.reshape(1, 3), b.reshape(1, 3)) / cv::norm(b);
+}
+
+double medianOf(std::vector<double> v)
+{
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Triangulation from views 1-2: the structure the PnP peers work with.
+
+cv::Mat projection(const cv::Mat& K, const cv::Mat& R, const cv::Mat& t)
+{
+    cv::Mat Rt;
+    cv::hconcat(R, t, Rt);
+    return K * Rt;
+}
+
+//! Nx3 points triangulated (DLT) from views 1 and 2.
+cv::Mat triangulatePoints12(const Problem& p)
+{
+    if (p.points1.rows == 0)
+        return cv::Mat(0, 3, CV_64F);
+    const cv::Mat P1 = projection(p.K[0], cv::Mat::eye(3, 3, CV_64F), cv::Mat::zeros(3, 1, CV_64F));
+    const cv::Mat P2 = projection(p.K[1], p.R12, p.t12);
+    cv::Mat X4, X;
+    cv::triangulatePoints(P1, P2, p.points1.t(), p.points2.t(), X4);
+    cv::convertPointsFromHomogeneous(X4.t(), X);
+    return X.reshape(1, p.points1.rows);
+}
+
+//! Mx6 3D segments from views 1 and 2: the view-1 end-point rays cut by the plane back-projected
+//! from the view-2 line (the 3D line is the intersection of the two planes).
+cv::Mat triangulateLines12(const Problem& p)
+{
+    cv::Mat L(p.lines1.rows, 6, CV_64F, cv::Scalar(std::numeric_limits<double>::quiet_NaN()));
+    const cv::Mat P2 = projection(p.K[1], p.R12, p.t12);
+    const cv::Mat K1inv = p.K[0].inv();
+    for (int i = 0; i < p.lines1.rows; ++i)
+    {
+        const double* s2 = p.lines2.ptr<double>(i);
+        const cv::Vec3d l2 = cv::Vec3d(s2[0], s2[1], 1.0).cross(cv::Vec3d(s2[2], s2[3], 1.0));
+        const cv::Mat plane = P2.t() * cv::Mat(l2);  // 4x1
+        const cv::Vec3d n(plane.at<double>(0), plane.at<double>(1), plane.at<double>(2));
+        const double d = plane.at<double>(3);
+        const double* s1 = p.lines1.ptr<double>(i);
+        for (int e = 0; e < 2; ++e)
+        {
+            const cv::Mat ray = K1inv * cv::Mat(cv::Vec3d(s1[2 * e], s1[2 * e + 1], 1.0));
+            const cv::Vec3d r(ray.at<double>(0), ray.at<double>(1), ray.at<double>(2));
+            const double denom = n.dot(r);
+            if (std::abs(denom) < 1e-12 * cv::norm(n) * cv::norm(r))
+                continue;  // ray parallel to the plane: the line is not determined by views 1-2
+            const double lambda = -d / denom;
+            for (int k = 0; k < 3; ++k)
+                L.at<double>(i, 3 * e + k) = lambda * r[k];
+        }
+    }
+    return L;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Problem sources
+
+Problem syntheticProblem(const Options& o, int trial)
+{
+    cv::tripose::SyntheticSceneParams params;
+    params.numPoints = o.points;
+    params.numLines = o.lines;
+    params.motion = o.motion;
+    params.noiseSigma = o.noise;
+    params.outlierRatio = o.outliers;
+    params.seed = o.seed + trial;
+    const cv::tripose::SyntheticScene s = cv::tripose::generateSyntheticScene(params);
+    Problem p;
+    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
+    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
+    p.K = s.cameraMatrices;
+    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
+    return p;
+}
+
+//! k distinct row indices out of n, drawn by a partial Fisher-Yates shuffle (same seed, same rows).
+std::vector<int> drawRows(int n, int k, cv::RNG& rng)
+{
+    std::vector<int> idx(n);
+    for (int i = 0; i < n; ++i)
+        idx[i] = i;
+    for (int i = 0; i < k; ++i)
+        std::swap(idx[i], idx[i + (int)rng.uniform(0, n - i)]);
+    idx.resize(k);
+    return idx;
+}
+
+cv::Mat selectRows(const cv::Mat& m, const std::vector<int>& rows)
+{
+    cv::Mat out(0, m.cols, m.type());
+    for (int r : rows)
+        out.push_back(m.row(r));
+    return out.empty() ? cv::Mat(0, m.cols, CV_64F) : out;
+}
+
+Problem vggProblem(const cv::tripose::VggTriplet& v, const Options& o, int trial)
+{
+    if (v.points1.rows < o.points || v.lines1.rows < o.lines)
+        throw std::runtime_error(cv::format("the sequence has %d points and %d lines in the three views, %d and %d requested",
+                                            v.points1.rows, v.lines1.rows, o.points, o.lines));
+    cv::RNG rng((uint64)(0x9E3779B97F4A7C15ull ^ (uint64)(o.seed * 100003 + trial)));
+    const std::vector<int> pr = drawRows(v.points1.rows, o.points, rng);
+    const std::vector<int> lr = drawRows(v.lines1.rows, o.lines, rng);
+    Problem p;
+    p.points1 = selectRows(v.points1, pr); p.points2 = selectRows(v.points2, pr); p.points3 = selectRows(v.points3, pr);
+    p.lines1 = selectRows(v.lines1, lr); p.lines2 = selectRows(v.lines2, lr); p.lines3 = selectRows(v.lines3, lr);
+    p.K = v.cameraMatrices;
+    p.R12 = v.R12; p.t12 = v.t12; p.R = v.R; p.t = v.t;
+    return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Methods
+
+struct Result
+{
+    bool ok = false;
+    double rot = 0, trans = 0, timeUs = 0;
+};
+
+//! Runs solve() `repeats` times; the median wall time, the errors of the last run.
+Result timed(const Problem& p, int repeats, const std::function<bool(cv::Mat&, cv::Mat&)>& solve)
+{
+    std::vector<double> times;
+    Result res;
+    cv::Mat R, t;
+    for (int r = 0; r < repeats; ++r)
+    {
+        R.release(); t.release();
+        const int64 t0 = cv::getTickCount();
+        res.ok = solve(R, t);
+        const int64 t1 = cv::getTickCount();
+        times.push_back(1e6 * double(t1 - t0) / cv::getTickFrequency());
+    }
+    res.timeUs = medianOf(times);
+    res.ok = res.ok && !R.empty() && cv::checkRange(R) && cv::checkRange(t);
+    if (res.ok)
+    {
+        res.rot = rotationErrorDeg(R, p.R);
+        res.trans = translationError(t, p.t);
+    }
+    return res;
+}
+
+bool linearSolve(const Problem& p, cv::Mat& R, cv::Mat& t)
+{
+    return cv::tripose::estimatePoseLinePoint(p.points1, p.points2, p.points3, p.lines1, p.lines2, p.lines3, p.K,
+                                              cv::noArray(), p.R12, p.t12, R, t) > 0;
+}
+
+bool refineFrom(const Problem& p, cv::Mat& R, cv::Mat& t)
+{
+    const double rms = cv::tripose::refinePoseLinePoint(p.points1, p.points2, p.points3, p.lines1, p.lines2,
+                                                        p.lines3, p.K, cv::noArray(), p.R12, p.t12, R, t);
+    return std::isfinite(rms);
+}
+
+bool triangulateThenPnP(const Problem& p, int flags, cv::Mat& R, cv::Mat& t)
+{
+    const cv::Mat X = triangulatePoints12(p);
+    cv::Mat rvec, tvec;
+    if (!cv::solvePnP(X, p.points3, p.K[2], cv::noArray(), rvec, tvec, false, flags))
+        return false;
+    cv::Rodrigues(rvec, R);
+    t = tvec;
+    return true;
+}
+
+bool applies(const std::string& method, const Problem& p)
+{
+    if (method == "tri+sqpnp") return p.points1.rows >= 3;
+    if (method == "tri+epnp") return p.points1.rows >= 4;
+    return true;
+}
+
+Result runMethod(const std::string& method, const Problem& p, const Options& o)
+{
+    try
+    {
+        if (method == "linear")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return linearSolve(p, R, t); });
+        if (method == "linear+refine")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return linearSolve(p, R, t) && refineFrom(p, R, t); });
+        if (method == "ml_from_truth")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) {
+                R = p.R.clone(); t = p.t.clone();
+                return refineFrom(p, R, t);
+            });
+        if (method == "ransac")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) {
+                cv::tripose::RansacParams params;
+                params.threshold = o.threshold;
+                params.seed = o.seed;
+                return cv::tripose::estimatePoseLinePointRansac(p.points1, p.points2, p.points3, p.lines1, p.lines2,
+                                                                p.lines3, p.K, cv::noArray(), p.R12, p.t12, R, t,
+                                                                params) > 0;
+            });
+        if (method == "tri+sqpnp")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_SQPNP, R, t); });
+        if (method == "tri+epnp")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_EPNP, R, t); });
+    }
+    catch (const cv::Exception&)
+    {
+        // A degenerate draw (e.g. collinear points for PnP) is a failure of that method, not of the run.
+    }
+    return Result();
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON output
+
+std::string num(double x)
+{
+    if (!std::isfinite(x))
+        return "null";
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.10g", x);
+    return buf;
+}
+
+std::string matrix(const cv::Mat& m)
+{
+    std::string s = "[";
+    for (int r = 0; r < m.rows; ++r)
+    {
+        s += r ? ",[" : "[";
+        for (int c = 0; c < m.cols; ++c)
+            s += (c ? "," : "") + num(m.at<double>(r, c));
+        s += "]";
+    }
+    return s + "]";
+}
+
+std::string inputsJson(const Problem& p)
+{
+    const int64 t0 = cv::getTickCount();
+    const cv::Mat X = triangulatePoints12(p);
+    const cv::Mat L = triangulateLines12(p);
+    const double triUs = 1e6 * double(cv::getTickCount() - t0) / cv::getTickFrequency();
+    std::string s = "{\"K\":[" + matrix(p.K[0]) + "," + matrix(p.K[1]) + "," + matrix(p.K[2]) + "]";
+    s += ",\"R12\":" + matrix(p.R12) + ",\"t12\":" + matrix(p.t12.reshape(1, 3));
+    s += ",\"R_gt\":" + matrix(p.R) + ",\"t_gt\":" + matrix(p.t.reshape(1, 3));
+    s += ",\"points1\":" + matrix(p.points1) + ",\"points2\":" + matrix(p.points2) + ",\"points3\":" + matrix(p.points3);
+    s += ",\"lines1\":" + matrix(p.lines1) + ",\"lines2\":" + matrix(p.lines2) + ",\"lines3\":" + matrix(p.lines3);
+    s += ",\"points3d_12\":" + matrix(X) + ",\"lines3d_12\":" + matrix(L) + ",\"triangulation_us\":" + num(triUs) + "}";
+    return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options o;
+    try
+    {
+        o = parse(argc, argv);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_evaluate: " << e.what() << "\n" << kUsage;
+        return 1;
+    }
+    cv::setNumThreads(1);  // times are single-thread, as in the paper and the perf tests
+
+    try
+    {
+        cv::tripose::VggTriplet vgg;
+        if (o.source == "vgg")
+            vgg = cv::tripose::loadVggTriplet(o.sequence, o.views[0], o.views[1], o.views[2]);
+        for (int trial = 0; trial < o.trials; ++trial)
+        {
+            const Problem p = o.source == "vgg" ? vggProblem(vgg, o, trial) : syntheticProblem(o, trial);
+            std::string line = "{\"source\":\"" + o.source + "\",\"trial\":" + std::to_string(trial) +
+                               ",\"seed\":" + std::to_string(o.seed) + ",\"points\":" + std::to_string(o.points) +
+                               ",\"lines\":" + std::to_string(o.lines) + ",\"repeats\":" + std::to_string(o.repeats) +
+                               ",\"threshold\":" + num(o.threshold);
+            if (o.source == "synthetic")
+                line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"motion\":\"" +
+                        (o.motion == cv::tripose::MOTION_SMALL ? "small" : "large") + "\"";
+            else
+                line += ",\"sequence\":\"" + o.sequence.substr(o.sequence.find_last_of('/') + 1) + "\",\"views\":[" +
+                        std::to_string(o.views[0]) + "," + std::to_string(o.views[1]) + "," +
+                        std::to_string(o.views[2]) + "]";
+            line += ",\"methods\":{";
+            bool first = true;
+            for (const std::string& m : o.methods)
+            {
+                if (!applies(m, p))
+                    continue;
+                const Result r = runMethod(m, p, o);
+                line += std::string(first ? "" : ",") + "\"" + m + "\":{\"ok\":" + (r.ok ? "true" : "false") +
+                        ",\"rot_deg\":" + (r.ok ? num(r.rot) : "null") + ",\"t_rel\":" + (r.ok ? num(r.trans) : "null") +
+                        ",\"time_us\":" + num(r.timeUs) + "}";
+                first = false;
+            }
+            line += "}";
+            if (o.dumpInputs)
+                line += ",\"inputs\":" + inputsJson(p);
+            std::cout << line << "}\n" << std::flush;
+        }
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_evaluate: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}
