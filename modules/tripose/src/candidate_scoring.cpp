@@ -34,7 +34,8 @@ TwoViewStructure triangulateTwoViewStructure(const TripletData& data)
         const double lambda1 = (e - b * f) / denominator;
         const double lambda2 = (b * e - f) / denominator;
         s.points[i] = 0.5 * (lambda1 * d1 + centre2 + lambda2 * d2);
-        s.pointValid[i] = s.points[i].allFinite();
+        // A point triangulated behind view 1 or 2 is noise, not structure: it must not vote.
+        s.pointValid[i] = s.points[i].allFinite() && lambda1 > 0 && lambda2 > 0;
     }
 
     s.lineEnds.resize(2 * data.numLines());
@@ -54,7 +55,14 @@ TwoViewStructure triangulateTwoViewStructure(const TripletData& data)
                 valid = false;
                 break;
             }
-            s.lineEnds[2 * i + end] = (-offset2 / denominator) * ray;
+            const double depth1 = -offset2 / denominator;
+            s.lineEnds[2 * i + end] = depth1 * ray;
+            // Ends lifted behind view 1 or 2 (grazing rays under noise) are not structure.
+            if (!(depth1 > 0) || !((R0 * s.lineEnds[2 * i + end] + t0).z() > 0))
+            {
+                valid = false;
+                break;
+            }
         }
         s.lineValid[i] = valid && s.lineEnds[2 * i].allFinite() && s.lineEnds[2 * i + 1].allFinite();
     }

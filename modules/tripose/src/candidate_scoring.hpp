@@ -19,9 +19,9 @@ namespace detail {
 struct TwoViewStructure
 {
     std::vector<Eigen::Vector3d> points;    //!< Triangulated points (midpoint of the two rays).
-    std::vector<unsigned char> pointValid;  //!< 0 where the rays are (nearly) parallel.
+    std::vector<unsigned char> pointValid;  //!< 0 where the rays are (nearly) parallel or meet behind view 1 or 2.
     std::vector<Eigen::Vector3d> lineEnds;  //!< Two 3D points per line: view-1 end rays cut by the plane of view 2.
-    std::vector<unsigned char> lineValid;   //!< 0 where a ray is (nearly) parallel to that plane.
+    std::vector<unsigned char> lineValid;   //!< 0 where a ray is (nearly) parallel to that plane or an end lies behind view 1 or 2.
 };
 
 TwoViewStructure triangulateTwoViewStructure(const TripletData& data);

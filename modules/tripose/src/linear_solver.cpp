@@ -15,6 +15,24 @@ namespace cv {
 namespace tripose {
 namespace detail {
 
+namespace {
+
+//! R' = (2 t t^T - I) R with t the unit baseline direction, and its least-squares translation.
+bool twistedPair(const CameraPose& pose, const Matrix12d& normalMatrix, CameraPose& twisted)
+{
+    const double n = pose.t.norm();
+    if (!(n > 0))
+        return false;
+    const Eigen::Vector3d d = pose.t / n;
+    Vector12d v;
+    v << Eigen::Map<const Eigen::Matrix<double, 9, 1>>(
+             Eigen::Matrix3d((2.0 * d * d.transpose() - Eigen::Matrix3d::Identity()) * pose.R).data()),
+        Eigen::Vector3d::Zero();
+    return poseFromSolutionVector(v, normalMatrix, twisted);
+}
+
+} // namespace
+
 int kernelDimensionFor(int numFeatures)
 {
     CV_Assert(numFeatures >= 4);
@@ -43,12 +61,16 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         reduced = A;
     Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
     const int N = kernelDimensionFor(numFeatures);
-    // Singular values descend: the last N right singular vectors span the (approximate) kernel.
-    const Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> basis = svd.matrixV().rightCols(N);
     const Matrix12d normalMatrix = reduced.transpose() * reduced;
 
+    // Singular values descend: the last N right singular vectors span the (approximate) kernel.
+    // An over-determined system also tries N = 2: with noise and few redundant constraints the
+    // two smallest singular values can be close, and the orthonormality constraints then pick the
+    // rotation better than the last singular vector alone; selection by reprojection error decides.
     std::vector<Vector12d> solutions;
-    solveKernelCombinations(basis, solutions);
+    solveKernelCombinations(svd.matrixV().rightCols(N), solutions);
+    if (N == 1)
+        solveKernelCombinations(svd.matrixV().rightCols(2), solutions);
 
     int added = 0;
     for (const Vector12d& v : solutions)
@@ -57,9 +79,21 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         if (!poseFromSolutionVector(v, normalMatrix, pose))
             continue;
         polishPoseAlgebraic(normalMatrix, pose);
+        CameraPose twisted;
+        // The twisted pair (R rotated by pi about the baseline direction t) fits the rows almost
+        // as well when the constraints are weak (small motion, few features, noise); only
+        // cheirality tells them apart, so both go to the selection.
+        const bool addTwisted = twistedPair(pose, normalMatrix, twisted);
         pose.t *= translationScale;
         poses.push_back(pose);
         ++added;
+        if (addTwisted)
+        {
+            polishPoseAlgebraic(normalMatrix, twisted);
+            twisted.t *= translationScale;
+            poses.push_back(twisted);
+            ++added;
+        }
     }
     return added;
 }
