@@ -1,0 +1,114 @@
+# This file is part of OpenCV project.
+# It is subject to the license terms in the LICENSE file found in the top-level directory
+# of this distribution and at http://opencv.org/license.html.
+
+"""The evaluation suite (test/evaluation/run_evaluation.py) at its smoke size, into a temporary folder.
+
+Runs every experiment of doc/evaluation.md with few trials (well under 3 minutes on 2 cores) and
+checks what must hold whatever the machine: every artefact is written, noise-free problems are
+solved to rounding error, errors grow with the noise, the maximum-likelihood estimate is at least
+as accurate as the linear solver it starts from, and RANSAC survives outliers that break the
+linear solver. Skipped when tripose_evaluate has not been built ($TRIPOSE_BUILD_DIR or build/).
+"""
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+DRIVER = REPO / "test" / "evaluation" / "run_evaluation.py"
+
+
+def _tool_built():
+    dirs = [Path(os.environ["TRIPOSE_BUILD_DIR"])] if os.environ.get("TRIPOSE_BUILD_DIR") else []
+    dirs.append(REPO / "build")
+    return any((d / "test" / "evaluation" / "tripose_evaluate").is_file() for d in dirs)
+
+
+pytestmark = pytest.mark.skipif(not _tool_built(), reason="tripose_evaluate is not built")
+
+
+@pytest.fixture(scope="module")
+def smoke(tmp_path_factory):
+    pytest.importorskip("poselib")
+    pytest.importorskip("matplotlib")
+    pytest.importorskip("tqdm")
+    out = tmp_path_factory.mktemp("evaluation")
+    subprocess.run([sys.executable, str(DRIVER), "--size", "smoke", "--out", str(out)], check=True,
+                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+    summary = json.loads((out / "data" / "summary.json").read_text())
+    return out, summary["results"]
+
+
+def _groups(results, name, **match):
+    return [g for g in results[name] if all(g["key"].get(k) == v for k, v in match.items())]
+
+
+def test_every_artefact_is_written(smoke):
+    out, results = smoke
+    assert set(results) == {"fig3", "fig4", "fig5", "fig6", "outliers"}
+    expected = ["fig3_large", "fig3_small", "fig4_large", "fig4_small", "fig5_time", "outliers"]
+    expected += [f"fig6_{s}" for s in ("University-Library", "Merton-College-I", "Merton-College-II",
+                                       "Merton-College-III", "Wadham-College", "Corridor", "Model-House")]
+    for name in expected:
+        png = out / f"{name}.png"
+        assert png.is_file() and png.stat().st_size > 10_000, name
+    tables = (out / "tables.md").read_text()
+    for heading in ("Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6", "Outliers"):
+        assert heading in tables
+
+
+def test_noise_free_problems_are_solved_exactly(smoke):
+    _, results = smoke
+    for name in ("fig3", "fig4"):
+        for g in _groups(results, name, noise=0.0):
+            s = g["methods"]["linear"]
+            # Median over the trials: a single near-degenerate draw must not hide a systematic error.
+            assert s["fails"] == 0, g["key"]
+            assert s["rot_deg"]["median"] < 1e-6, g["key"]
+            assert s["t_rel"]["median"] < 1e-8, g["key"]
+
+
+def test_errors_grow_with_noise(smoke):
+    _, results = smoke
+    for motion in ("large", "small"):
+        for method in ("linear", "ml_from_truth"):
+            for n in (4, 8):
+                medians = [g["methods"][method]["rot_deg"]["median"]
+                           for g in sorted(_groups(results, "fig4", motion=motion, points=n), key=lambda g: g["key"]["noise"])]
+                assert medians == sorted(medians), (motion, method, n, medians)
+                assert medians[-1] > 100 * max(medians[0], 1e-12), (motion, method, n, medians)
+
+
+def test_maximum_likelihood_is_at_least_as_accurate_as_linear(smoke):
+    _, results = smoke
+    # Pooled over the noisy Fig. 4 groups: the ML estimate uses the noise model the linear solver
+    # ignores, so its median errors must not be larger overall (20 trials per group: compare sums).
+    for quantity in ("rot_deg", "t_rel"):
+        ml = linear = 0.0
+        for g in results["fig4"]:
+            if g["key"]["noise"] > 0:
+                ml += g["methods"]["ml_from_truth"][quantity]["median"]
+                linear += g["methods"]["linear"][quantity]["median"]
+        assert ml <= linear, (quantity, ml, linear)
+
+
+def test_ransac_survives_outliers_that_break_the_linear_solver(smoke):
+    _, results = smoke
+    g = _groups(results, "outliers", outliers=0.3)[0]
+    assert g["methods"]["ransac"]["rot_deg"]["median"] < 1.0
+    assert g["methods"]["ransac"]["t_rel"]["median"] < 0.02
+    assert g["methods"]["linear"]["rot_deg"]["median"] > 5.0
+
+
+def test_vgg_sequences_give_accurate_poses_with_ten_of_each(smoke):
+    _, results = smoke
+    groups = _groups(results, "fig6", lines=10, points=10)
+    assert len(groups) == 7
+    for g in groups:
+        assert g["methods"]["ransac"]["rot_deg"]["median"] < 2.0, g["key"]
+        assert g["methods"]["ml_from_truth"]["rot_deg"]["median"] < 2.0, g["key"]
