@@ -2,16 +2,21 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// tripose_benchmark: median time per call of estimatePoseLinePoint beside "triangulate the points
-// from views 1-2, then cv::solvePnP(SOLVEPNP_SQPNP) in view 3" on the same scenes, in the same
-// process, one thread; with the median rotation and translation errors of both so that speed is
-// read together with accuracy.
+// tripose_benchmark: median time per call of our estimators (estimatePoseLinePoint, the same
+// followed by refinePoseLinePoint) beside "triangulate the points from views 1-2, then
+// cv::solvePnP in view 3" (SQPnP and EPnP) on the same scenes, in the same process, one thread;
+// each peer's time is also printed as a ratio to the linear solver's, and the median rotation and
+// translation errors of every method are printed so that speed is read together with accuracy.
+// PoseLib (a Python package here) is compared by test/evaluation/run_evaluation.py.
 //
 //   tripose_benchmark [--scenes 200] [--repeats 20] [--noise 1.0] [--motion large|small]
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
@@ -71,15 +76,48 @@ int main(int argc, char** argv)
         else if (arg == "--motion") motion = value == "small" ? cv::tripose::MOTION_SMALL : cv::tripose::MOTION_LARGE;
         else { std::fprintf(stderr, "unknown argument %s\n", arg.c_str()); return 1; }
     }
+    if (scenes < 1 || repeats < 1)
+    {
+        std::fprintf(stderr, "--scenes and --repeats must be >= 1\n");
+        return 1;
+    }
     cv::setNumThreads(1);
+
+    typedef std::function<bool(const cv::tripose::SyntheticScene&, cv::Mat&, cv::Mat&)> Solver;
+    const std::vector<std::pair<std::string, Solver>> methods = {
+        { "linear", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+              return cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                                        s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) > 0;
+          } },
+        { "lin+refine", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+              if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                                     s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) == 0)
+                  return false;
+              return std::isfinite(cv::tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1,
+                                                                    s.lines2, s.lines3, s.cameraMatrices,
+                                                                    cv::noArray(), s.R12, s.t12, R, t));
+          } },
+        { "tri+SQPnP", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+              return triangulateThenPnP(s, cv::SOLVEPNP_SQPNP, R, t);
+          } },
+        { "tri+EPnP", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+              return triangulateThenPnP(s, cv::SOLVEPNP_EPNP, R, t);
+          } },
+    };
+    const size_t M = methods.size();
+
     const int configs[][2] = { { 4, 4 }, { 5, 5 }, { 10, 10 }, { 20, 20 }, { 45, 45 } };
     std::printf("%d scenes x %d repeats, noise %.2f px, %s motion, one thread\n", scenes, repeats, noise,
                 motion == cv::tripose::MOTION_LARGE ? "large" : "small");
-    std::printf("%-8s | %12s %12s %8s | %10s %10s | %10s %10s\n", "features", "tripose us", "SQPnP us",
-                "ratio", "rot tri", "rot SQPnP", "t tri", "t SQPnP");
+    std::printf("per method: median time (us) [ratio to linear] median rotation error (deg) / median relative "
+                "translation error; failures count as infinite error\n");
+    std::printf("%-9s", "features");
+    for (const auto& m : methods)
+        std::printf(" | %-34s", m.first.c_str());
+    std::printf("\n");
     for (const auto& c : configs)
     {
-        std::vector<double> ours, peer, rotOurs, rotPeer, tOurs, tPeer;
+        std::vector<std::vector<double>> times(M), rot(M), trans(M);
         for (int k = 0; k < scenes; ++k)
         {
             cv::tripose::SyntheticSceneParams params;
@@ -89,37 +127,43 @@ int main(int argc, char** argv)
             params.motion = motion;
             params.seed = 1000 + k;
             const cv::tripose::SyntheticScene s = cv::tripose::generateSyntheticScene(params);
-            cv::Mat R, t, Rp, tp;
-            // Interleave the two methods so that frequency changes hit both alike.
-            std::vector<double> a, b;
+            std::vector<std::vector<double>> perScene(M);
+            std::vector<cv::Mat> Rs(M), ts(M);
+            std::vector<bool> ok(M, false);
+            // Interleave the methods so that frequency changes hit all of them alike.
             for (int r = 0; r < repeats; ++r)
+                for (size_t m = 0; m < M; ++m)
+                {
+                    cv::Mat R, t;
+                    const int64 t0 = cv::getTickCount();
+                    bool good = false;
+                    try { good = methods[m].second(s, R, t); } catch (const cv::Exception&) { good = false; }
+                    const int64 t1 = cv::getTickCount();
+                    perScene[m].push_back(1e6 * double(t1 - t0) / cv::getTickFrequency());
+                    ok[m] = good && !R.empty();
+                    Rs[m] = R;
+                    ts[m] = t;
+                }
+            for (size_t m = 0; m < M; ++m)
             {
-                int64 t0 = cv::getTickCount();
-                cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
-                                                   s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t);
-                int64 t1 = cv::getTickCount();
-                triangulateThenPnP(s, cv::SOLVEPNP_SQPNP, Rp, tp);
-                int64 t2 = cv::getTickCount();
-                a.push_back(1e6 * double(t1 - t0) / cv::getTickFrequency());
-                b.push_back(1e6 * double(t2 - t1) / cv::getTickFrequency());
-            }
-            ours.push_back(median(a));
-            peer.push_back(median(b));
-            if (!R.empty())
-            {
-                rotOurs.push_back(rotationErrorDeg(R, s.R));
-                tOurs.push_back(translationError(t, s.t));
-            }
-            if (!Rp.empty())
-            {
-                rotPeer.push_back(rotationErrorDeg(Rp, s.R));
-                tPeer.push_back(translationError(tp, s.t));
+                times[m].push_back(median(perScene[m]));
+                rot[m].push_back(ok[m] ? rotationErrorDeg(Rs[m], s.R) : HUGE_VAL);
+                trans[m].push_back(ok[m] ? translationError(ts[m], s.t) : HUGE_VAL);
             }
         }
-        const double mo = median(ours), mp = median(peer);
-        std::printf("%2dP+%-2dL  | %12.2f %12.2f %8.2f | %10.4f %10.4f | %10.4f %10.4f\n", c[0], c[1], mo, mp,
-                    mp / mo, median(rotOurs), median(rotPeer), median(tOurs), median(tPeer));
+        const double base = median(times[0]);
+        char label[32];
+        std::snprintf(label, sizeof(label), "%dP+%dL", c[0], c[1]);
+        std::printf("%-9s", label);
+        for (size_t m = 0; m < M; ++m)
+        {
+            const double tm = median(times[m]);
+            char cell[64];
+            std::snprintf(cell, sizeof(cell), "%7.1f [x%5.2f] %.3f/%.4f", tm, tm / base, median(rot[m]), median(trans[m]));
+            std::printf(" | %-34s", cell);
+        }
+        std::printf("\n");
     }
-    std::printf("ratio = SQPnP time / tripose time (> 1: tripose is faster); rot in degrees, t relative\n");
+    std::printf("ratio = method time / linear time (> 1: the linear solver is faster)\n");
     return 0;
 }
