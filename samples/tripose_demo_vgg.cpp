@@ -131,8 +131,13 @@ int main(int argc, char** argv)
         for (int i = 0; i < triplet.points3.rows; ++i)
             cv::circle(image, cv::Point2d(triplet.points3.at<double>(i, 0), triplet.points3.at<double>(i, 1)), 3,
                        cv::Scalar(255, 128, 0), 1, cv::LINE_AA);
-        cv::putText(image, "green: 3D lines reprojected with the estimated pose; red: observed segments",
-                    cv::Point(10, 25), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(255, 255, 255), 2, cv::LINE_AA);
+        const std::string caption = "green: 3D lines reprojected with the estimated pose; red: observed segments";
+        int baseline = 0;
+        const cv::Size textSize = cv::getTextSize(caption, cv::FONT_HERSHEY_SIMPLEX, 0.6, 2, &baseline);
+        cv::rectangle(image, cv::Rect(0, 0, textSize.width + 20, textSize.height + baseline + 16), cv::Scalar(0, 0, 0),
+                      cv::FILLED);
+        cv::putText(image, caption, cv::Point(10, textSize.height + 8), cv::FONT_HERSHEY_SIMPLEX, 0.6,
+                    cv::Scalar(255, 255, 255), 2, cv::LINE_AA);
         if (!cv::imwrite(output, image))
         {
             std::cerr << "tripose_demo_vgg: cannot write " << output << "\n";
