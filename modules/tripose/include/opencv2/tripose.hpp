@@ -6,6 +6,8 @@
 #define OPENCV_TRIPOSE_HPP
 
 #include "opencv2/tripose/pose.hpp"
+#include "opencv2/tripose/refine.hpp"
+#include "opencv2/tripose/robust.hpp"
 #include "opencv2/tripose/synthetic.hpp"
 #include "opencv2/tripose/vgg.hpp"
 

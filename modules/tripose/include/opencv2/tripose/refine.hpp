@@ -1,0 +1,98 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_REFINE_HPP
+#define OPENCV_TRIPOSE_REFINE_HPP
+
+#include "opencv2/core.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_pose
+//! @{
+
+//! Loss applied to the reprojection error of each observation (a point, or the two end points of a segment, in one view).
+enum RobustLoss
+{
+    LOSS_SQUARED = 0, //!< Plain least squares: the maximum-likelihood estimate under Gaussian noise.
+    LOSS_HUBER = 1,   //!< Quadratic up to RefineParams::lossScale pixels, linear beyond.
+    LOSS_CAUCHY = 2,  //!< \f$c^2 \log(1 + e^2 / c^2)\f$ with \f$c\f$ = RefineParams::lossScale: gross errors barely count.
+};
+
+/** @brief Parameters of refinePoseLinePoint().
+*/
+struct CV_EXPORTS_W_SIMPLE RefineParams
+{
+    CV_WRAP RefineParams();
+    CV_PROP_RW int maxIterations; //!< Maximum number of Levenberg-Marquardt steps, accepted or rejected (> 0, default 30).
+    CV_PROP_RW int loss;          //!< One of #RobustLoss (default LOSS_SQUARED).
+    CV_PROP_RW double lossScale;  //!< Scale \f$c\f$ of the robust loss in pixels (> 0, default 1); unused by LOSS_SQUARED.
+    CV_PROP_RW double tolerance;  //!< Stop when an accepted step lowers the cost by less than this fraction of it (>= 0, default 1e-10).
+};
+
+/** @brief Refines the pose of the third view and the 3D structure by minimizing the reprojection
+error in all three views (maximum likelihood under Gaussian image noise).
+
+Views 1 (\f$[I|0]\f$) and 2 (\f$[R_{12}|t_{12}]\f$) are fixed; the pose \f$[R|t]\f$ of view 3 and every
+3D point (3 parameters) and 3D line (4 parameters, orthonormal representation) are estimated. The
+residuals, in pixels, are for a point its reprojection minus the observation in each view, and for a
+line the signed distances of the two observed segment end points to the projected 3D line in each
+view. The structure is initialised by triangulating over the three views with the given pose.
+
+Levenberg-Marquardt with the structure eliminated (Schur complement, one small block per feature),
+so a step costs time linear in the number of features. The rotation is updated by a left
+multiplicative increment \f$R \leftarrow \exp([\omega]_\times) R\f$, the translation additively. With a
+robust loss the problem is solved by iteratively reweighted least squares.
+
+Features that the three views cannot determine (a point on the line through the camera centres,
+three coincident planes of a line, a point behind a camera) do not enter the cost; they keep their
+initial structure.
+
+This is the final stage of estimatePoseLinePointRansac(); call it directly to polish a pose from
+estimatePoseLinePoint() or from elsewhere.
+
+@param points1 Points in view 1: Nx2 1-channel or 1xN/Nx1 2-channel, CV_32F or CV_64F, pixels. N may be 0.
+@param points2 The same N points in view 2, same layout.
+@param points3 The same N points in view 3, same layout.
+@param lines1 Lines in view 1: Mx4 segments \f$(x_0, y_0, x_1, y_1)\f$ or Mx3 homogeneous lines
+\f$(a, b, c)\f$, as in estimatePoseLinePoint(). For homogeneous lines two points 50 px either side of
+the point of the line closest to the principal point stand in for the end points.
+@param lines2 The same M lines in view 2, same layout.
+@param lines3 The same M lines in view 3, same layout.
+@param cameraMatrix One 3x3 intrinsic matrix shared by the three views, or a vector of three.
+@param distCoeffs Distortion coefficients (4, 5, 8, 12 or 14 values), one vector or three; empty for none.
+@param R12 Rotation of view 2: 3x3 matrix or 3-element Rodrigues vector, CV_32F or CV_64F.
+@param t12 Translation of view 2, 3x1 or 1x3, non-zero.
+@param R Input: initial rotation of view 3, 3x3 matrix or 3-element Rodrigues vector, CV_32F or
+CV_64F. Output: the refined rotation as CV_64F, in the form it was given (a Rodrigues vector keeps
+its shape).
+@param t Input: initial translation of view 3, 3 elements, CV_32F or CV_64F. Output: 3x1 CV_64F.
+@param params See RefineParams.
+@param points3d Optional output: Nx3 CV_64F refined 3D points in the frame of view 1.
+@param lines3d Optional output: Mx6 CV_64F, two points \f$(X_0, Y_0, Z_0, X_1, Y_1, Z_1)\f$ of each refined
+3D line: the points closest to the back-projected rays of the view-1 end points.
+@return The RMS reprojection error in pixels at the refined estimate over every residual of the
+three views (two per point and per line in each view) of the features that enter the cost; +inf when
+no feature does (then R, t are returned unchanged).
+
+@throws cv::Exception naming the argument for the input errors listed at estimatePoseLinePoint()
+(with at least three features required), when R is not a rotation or R, t are malformed or not finite,
+or when a field of @p params is out of range.
+*/
+CV_EXPORTS_W double refinePoseLinePoint(
+    InputArray points1, InputArray points2, InputArray points3,
+    InputArray lines1, InputArray lines2, InputArray lines3,
+    InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+    InputArray R12, InputArray t12,
+    InputOutputArray R, InputOutputArray t,
+    const RefineParams& params = RefineParams(),
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_REFINE_HPP

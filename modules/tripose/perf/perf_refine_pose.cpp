@@ -1,0 +1,87 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "perf_precomp.hpp"
+
+#include "../src/opencv_compat.hpp"
+
+#include "../src/ml_refinement.hpp"
+#include "../src/triplet_input.hpp"
+
+namespace opencv_test {
+namespace {
+
+// (points, lines): a small problem, a typical frame, and the inliers of the robust estimator's
+// 1000-point + 400-line target (about 700 + 280).
+typedef std::tuple<int, int> FeatureCounts;
+typedef perf::TestBaseWithParam<FeatureCounts> Tripose_RefinePose;
+typedef perf::TestBaseWithParam<FeatureCounts> Tripose_RefinePoseEngine;
+
+const FeatureCounts kSizes[] = { FeatureCounts(10, 10), FeatureCounts(100, 40), FeatureCounts(700, 280) };
+
+tripose::SyntheticScene makeScene(const FeatureCounts& counts)
+{
+    tripose::SyntheticSceneParams params;
+    params.numPoints = std::get<0>(counts);
+    params.numLines = std::get<1>(counts);
+    params.noiseSigma = 1.0;
+    params.seed = 5;
+    return tripose::generateSyntheticScene(params);
+}
+
+//! A start like the robust estimator's: the truth off by 0.5 degrees and 2 % of |t|.
+void startingPose(const tripose::SyntheticScene& s, Mat& R, Mat& t)
+{
+    Mat dR;
+    Rodrigues(Vec3d(0.5, -0.5, 0.5) * (0.5 * CV_PI / 180.0 / std::sqrt(0.75)), dR);
+    R = dR * s.R;
+    t = s.t + Mat(Vec3d(0.02, -0.01, 0.01) * (norm(s.t) / norm(Vec3d(0.02, -0.01, 0.01)) * 0.02));
+}
+
+//! The public function: input validation, undistortion and the refinement.
+PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
+{
+    const tripose::SyntheticScene s = makeScene(GetParam());
+    Mat R0, t0;
+    startingPose(s, R0, t0);
+    Mat R, t;
+    declare.iterations(500);
+    TEST_CYCLE()
+    {
+        R0.copyTo(R);
+        t0.copyTo(t);
+        tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                     s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
+    }
+    SANITY_CHECK_NOTHING();
+}
+
+//! The engine alone, as the robust estimator calls it on already parsed data.
+PERF_TEST_P(Tripose_RefinePoseEngine, refinePoseAndStructure, testing::ValuesIn(kSizes))
+{
+    const tripose::SyntheticScene s = makeScene(GetParam());
+    Mat R0, t0;
+    startingPose(s, R0, t0);
+    const tripose::detail::TripletData data = tripose::detail::readTripletInput(
+        s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
+    tripose::detail::CameraPose start;
+    for (int r = 0; r < 3; ++r)
+    {
+        start.t(r) = t0.at<double>(r);
+        for (int c = 0; c < 3; ++c)
+            start.R(r, c) = R0.at<double>(r, c);
+    }
+    tripose::detail::RefinementSummary summary;
+    declare.iterations(500);
+    TEST_CYCLE()
+    {
+        tripose::detail::CameraPose pose = start;
+        summary = tripose::detail::refinePoseAndStructure(data, pose, tripose::RefineParams());
+    }
+    std::printf("[ PERFINFO ] %d iterations, RMS %.3f -> %.3f px\n", summary.iterations, summary.initialRms,
+                summary.finalRms);
+    SANITY_CHECK_NOTHING();
+}
+
+}} // namespace

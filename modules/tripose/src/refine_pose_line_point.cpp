@@ -1,0 +1,140 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+
+#include <Eigen/Dense>
+#include "opencv_compat.hpp"
+
+#include "ml_refinement.hpp"
+#include "triplet_input.hpp"
+
+namespace cv {
+namespace tripose {
+
+RefineParams::RefineParams() : maxIterations(30), loss(LOSS_SQUARED), lossScale(1.0), tolerance(1e-10)
+{
+}
+
+namespace {
+
+//! How the caller gave the rotation, so that it is written back in the same form.
+struct RotationForm
+{
+    bool rodrigues = false;
+    int rows = 3, cols = 3;
+};
+
+Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
+{
+    const Mat m = arr.getMat();
+    const bool isMatrix = m.total() == 9 && m.channels() == 1;
+    const bool isVector = m.total() * m.channels() == 3;
+    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) || !(isMatrix || isVector))
+        CV_Error(Error::StsBadArg, "R must be the initial rotation of view 3: a 3x3 matrix or a 3-element Rodrigues "
+                                   "vector, CV_32F or CV_64F");
+    Mat R;
+    m.convertTo(R, CV_64F);
+    if (!checkRange(R))
+        CV_Error(Error::StsBadArg, "R contains NaN or Inf values");
+    form.rodrigues = isVector;
+    form.rows = m.rows;
+    form.cols = m.cols;
+    if (isVector)
+    {
+        Mat rmat;
+        Rodrigues(R.reshape(1, 3), rmat);
+        R = rmat;
+    }
+    R = R.reshape(1, 3);
+    Eigen::Matrix3d E;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            E(r, c) = R.at<double>(r, c);
+    const double tolerance = m.depth() == CV_32F ? 1e-4 : 1e-6;
+    const double orthogonality = (E.transpose() * E - Eigen::Matrix3d::Identity()).norm();
+    if (!(orthogonality < tolerance) || E.determinant() < 0)
+        CV_Error_(Error::StsBadArg, ("R is not a rotation: |R^T R - I| = %g, det = %g", orthogonality, E.determinant()));
+    // The refinement updates R multiplicatively: start from an exact rotation.
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(E, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    return svd.matrixU() * svd.matrixV().transpose();
+}
+
+Eigen::Vector3d readInitialTranslation(InputArray arr)
+{
+    const Mat m = arr.getMat();
+    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) || m.total() * m.channels() != 3)
+        CV_Error(Error::StsBadArg, "t must be the initial translation of view 3: 3 elements, CV_32F or CV_64F");
+    Mat t;
+    m.convertTo(t, CV_64F);
+    if (!checkRange(t))
+        CV_Error(Error::StsBadArg, "t contains NaN or Inf values");
+    t = t.reshape(1, 3);
+    return Eigen::Vector3d(t.at<double>(0), t.at<double>(1), t.at<double>(2));
+}
+
+void writeRotation(const Eigen::Matrix3d& E, const RotationForm& form, OutputArray out)
+{
+    Mat R(3, 3, CV_64F);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            R.at<double>(r, c) = E(r, c);
+    if (!form.rodrigues)
+    {
+        R.copyTo(out);
+        return;
+    }
+    Mat rvec;
+    Rodrigues(R, rvec);
+    rvec.reshape(1, form.rows).copyTo(out);
+}
+
+} // namespace
+
+double refinePoseLinePoint(InputArray points1, InputArray points2, InputArray points3,
+                           InputArray lines1, InputArray lines2, InputArray lines3,
+                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                           InputArray R12, InputArray t12, InputOutputArray R, InputOutputArray t,
+                           const RefineParams& params, OutputArray points3d, OutputArray lines3d)
+{
+    CV_INSTRUMENT_REGION();
+
+    const detail::TripletData data = detail::readTripletInput(points1, points2, points3, lines1, lines2, lines3,
+                                                              cameraMatrix, distCoeffs, R12, t12, 3);
+    RotationForm form;
+    detail::CameraPose pose;
+    pose.R = readInitialRotation(R, form);
+    pose.t = readInitialTranslation(t);
+    detail::checkRefineParams(params);
+
+    detail::RefinedStructure structure;
+    const detail::RefinementSummary summary = detail::refinePoseAndStructure(data, pose, params, nullptr, nullptr,
+                                                                             &structure);
+
+    writeRotation(pose.R, form, R);
+    Mat(Matx31d(pose.t.x(), pose.t.y(), pose.t.z())).copyTo(t);
+    if (points3d.needed())
+    {
+        points3d.create(data.numPoints(), 3, CV_64F);
+        Mat out = points3d.getMat();
+        for (int i = 0; i < data.numPoints(); ++i)
+            for (int c = 0; c < 3; ++c)
+                out.at<double>(i, c) = structure.points[i](c);
+    }
+    if (lines3d.needed())
+    {
+        lines3d.create(data.numLines(), 6, CV_64F);
+        Mat out = lines3d.getMat();
+        for (int i = 0; i < data.numLines(); ++i)
+            for (int c = 0; c < 3; ++c)
+            {
+                out.at<double>(i, c) = structure.lineEnds[2 * i](c);
+                out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
+            }
+    }
+    return summary.finalRms;
+}
+
+} // namespace tripose
+} // namespace cv

@@ -1,0 +1,236 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "precomp.hpp"
+
+#include "candidate_scoring.hpp"
+#include "linear_solver.hpp"
+#include "ml_refinement.hpp"
+#include "robust_estimator.hpp"
+#include "three_view_residuals.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+namespace {
+
+constexpr int kSampleSize = 4;
+constexpr int kLocalOptimizationRounds = 3;
+// The sampling loop measures view-3 residuals against structure triangulated from views 1-2 alone,
+// which carries the triangulation error of those views on top of the image noise; it tests them
+// against twice the user's threshold. The final inliers use residuals over all three views
+// (threeViewResiduals) against the threshold itself.
+constexpr double kSamplingThresholdFactor = 2.0;
+
+//! A model's support: MSAC cost and the inliers it implies.
+struct Support
+{
+    double cost = std::numeric_limits<double>::infinity();
+    int inliers = 0;
+};
+
+class RobustEstimator
+{
+public:
+    RobustEstimator(const TripletData& data, const RansacParams& params)
+        : data_(data), params_(params), structure_(triangulateTwoViewStructure(data)),
+          threshold2_(kSamplingThresholdFactor * kSamplingThresholdFactor * params.threshold * params.threshold)
+    {}
+
+    bool run(RobustEstimate& estimate)
+    {
+        const int numFeatures = data_.numFeatures();
+        RNG rng((uint64)(int64)params_.seed);
+        std::vector<int> sample(kSampleSize), samplePoints, sampleLines;
+        std::vector<CameraPose> candidates;
+        long maxIterations = params_.maxIterations;
+        int iteration = 0;
+        for (; iteration < maxIterations; ++iteration)
+        {
+            drawSample(rng, numFeatures, sample);
+            samplePoints.clear();
+            sampleLines.clear();
+            for (int f : sample)
+                (f < data_.numPoints() ? samplePoints : sampleLines).push_back(f < data_.numPoints() ? f : f - data_.numPoints());
+            candidates.clear();
+            linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines);
+            bool improved = false;
+            for (const CameraPose& pose : candidates)
+            {
+                const Support s = support(pose);
+                if (s.cost < best_.cost)
+                {
+                    best_ = s;
+                    bestPose_ = pose;
+                    improved = true;
+                }
+            }
+            if (!improved)
+                continue;
+            if (params_.localOptimization)
+                optimizeLocally();
+            maxIterations = std::min<long>(maxIterations, requiredIterations(best_.inliers, numFeatures));
+        }
+        if (!std::isfinite(best_.cost) || best_.inliers == 0)
+            return false;
+
+        estimate.iterations = iteration;
+        estimate.pose = bestPose_;
+        // Final inliers: consistency with all three views under the pose. Refinement on them may
+        // change the classification; one more round settles it.
+        estimate.numInliers = inlierMasks(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+        for (int round = 0; round < 2 && params_.refine; ++round)
+        {
+            refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+            std::vector<unsigned char> points, lines;
+            estimate.numInliers = inlierMasks(estimate.pose, points, lines);
+            const bool settled = points == estimate.pointInliers && lines == estimate.lineInliers;
+            estimate.pointInliers.swap(points);
+            estimate.lineInliers.swap(lines);
+            if (settled)
+                break;
+        }
+        return estimate.numInliers > 0;
+    }
+
+private:
+    void drawSample(RNG& rng, int numFeatures, std::vector<int>& sample) const
+    {
+        for (int k = 0; k < kSampleSize; ++k)
+        {
+            int f;
+            do
+                f = rng.uniform(0, numFeatures);
+            while (std::find(sample.begin(), sample.begin() + k, f) != sample.begin() + k);
+            sample[k] = f;
+        }
+    }
+
+    //! Truncated quadratic cost over all features and the number of features under the threshold.
+    Support support(const CameraPose& pose)
+    {
+        scorePose(data_, structure_, pose, &pointResiduals_, &lineResiduals_);
+        Support s;
+        s.cost = 0;
+        for (const std::vector<double>* residuals : { &pointResiduals_, &lineResiduals_ })
+            for (double r : *residuals)
+            {
+                const double r2 = r * r;
+                if (r2 < threshold2_)
+                {
+                    s.cost += r2;
+                    ++s.inliers;
+                }
+                else
+                    s.cost += threshold2_;
+            }
+        return s;
+    }
+
+    void collectInliers(const CameraPose& pose, std::vector<int>& points, std::vector<int>& lines)
+    {
+        scorePose(data_, structure_, pose, &pointResiduals_, &lineResiduals_);
+        points.clear();
+        lines.clear();
+        for (int i = 0; i < (int)pointResiduals_.size(); ++i)
+            if (pointResiduals_[i] * pointResiduals_[i] < threshold2_)
+                points.push_back(i);
+        for (int i = 0; i < (int)lineResiduals_.size(); ++i)
+            if (lineResiduals_[i] * lineResiduals_[i] < threshold2_)
+                lines.push_back(i);
+    }
+
+    //! Re-solves from the inliers of the best model while that lowers the cost.
+    void optimizeLocally()
+    {
+        std::vector<int> points, lines;
+        std::vector<CameraPose> poses;
+        for (int round = 0; round < kLocalOptimizationRounds; ++round)
+        {
+            collectInliers(bestPose_, points, lines);
+            if ((int)(points.size() + lines.size()) < 6) // below six the linear solve is not over-determined
+                return;
+            poses.clear();
+            linearPoseCandidates(data_, poses, &points, &lines);
+            bool improved = false;
+            for (const CameraPose& pose : poses)
+            {
+                const Support s = support(pose);
+                if (s.cost < best_.cost)
+                {
+                    best_ = s;
+                    bestPose_ = pose;
+                    improved = true;
+                }
+            }
+            if (!improved)
+                return;
+        }
+    }
+
+    void refineOnInliers(CameraPose& pose, const std::vector<unsigned char>& pointMask,
+                         const std::vector<unsigned char>& lineMask)
+    {
+        std::vector<int> points, lines;
+        for (int i = 0; i < (int)pointMask.size(); ++i)
+            if (pointMask[i])
+                points.push_back(i);
+        for (int i = 0; i < (int)lineMask.size(); ++i)
+            if (lineMask[i])
+                lines.push_back(i);
+        if (points.size() + lines.size() < 3)
+            return;
+        CameraPose refined = pose;
+        refinePoseAndStructure(data_, refined, RefineParams(), &points, &lines);
+        if (refined.R.allFinite() && refined.t.allFinite())
+            pose = refined;
+    }
+
+    //! Inliers by their residual over the three views (see threeViewResiduals()).
+    int inlierMasks(const CameraPose& pose, std::vector<unsigned char>& pointMask, std::vector<unsigned char>& lineMask)
+    {
+        threeViewResiduals(data_, pose, pointResiduals_, lineResiduals_);
+        int count = 0;
+        pointMask.resize(pointResiduals_.size());
+        for (size_t i = 0; i < pointResiduals_.size(); ++i)
+            count += pointMask[i] = pointResiduals_[i] < params_.threshold;
+        lineMask.resize(lineResiduals_.size());
+        for (size_t i = 0; i < lineResiduals_.size(); ++i)
+            count += lineMask[i] = lineResiduals_[i] < params_.threshold;
+        return count;
+    }
+
+    //! Samples needed to draw one all-inlier sample with the requested confidence.
+    long requiredIterations(int inliers, int numFeatures) const
+    {
+        const double w = double(inliers) / numFeatures;
+        const double allInliers = std::pow(w, kSampleSize);
+        if (allInliers >= 1.0)
+            return 1;
+        if (allInliers <= 0.0)
+            return params_.maxIterations;
+        const double n = std::log(1.0 - params_.confidence) / std::log(1.0 - allInliers);
+        return (long)std::min<double>(std::ceil(n), params_.maxIterations);
+    }
+
+    const TripletData& data_;
+    const RansacParams& params_;
+    const TwoViewStructure structure_;
+    const double threshold2_;
+    std::vector<double> pointResiduals_, lineResiduals_;
+    Support best_;
+    CameraPose bestPose_;
+};
+
+} // namespace
+
+bool estimatePoseRobust(const TripletData& data, const RansacParams& params, RobustEstimate& estimate)
+{
+    return RobustEstimator(data, params).run(estimate);
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv

@@ -1,0 +1,116 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_pose_common.hpp"
+
+namespace opencv_test {
+namespace {
+
+tripose::SyntheticScene outlierScene(double outlierRatio, int seed)
+{
+    tripose::SyntheticSceneParams params;
+    params.numPoints = 100;
+    params.numLines = 40;
+    params.noiseSigma = 1.0;
+    params.outlierRatio = outlierRatio;
+    params.seed = seed;
+    return tripose::generateSyntheticScene(params);
+}
+
+int runRansac(const tripose::SyntheticScene& s, const tripose::RansacParams& params, Mat& R, Mat& t,
+              Mat& pointMask, Mat& lineMask)
+{
+    return tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                                s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params,
+                                                pointMask, lineMask);
+}
+
+typedef testing::TestWithParam<double> Tripose_Ransac;
+
+// The goal: up to 50 % outliers (random wrong matches in view 3), 100 points + 40 lines at
+// 1 px noise: at least 99 % of trials within 1 degree and 5 % translation, masks at least 95 % right.
+TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
+{
+    const double outlierRatio = GetParam();
+    const int trials = 100;
+    int accurate = 0, masksRight = 0;
+    std::vector<double> rotationErrors;
+    for (int seed = 0; seed < trials; ++seed)
+    {
+        const tripose::SyntheticScene s = outlierScene(outlierRatio, seed);
+        tripose::RansacParams params;
+        params.seed = seed;
+        Mat R, t, pointMask, lineMask;
+        const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
+        if (inliers == 0)
+            continue;
+        const double rotDeg = rotationError(R, s.R) * 180 / CV_PI;
+        rotationErrors.push_back(rotDeg);
+        accurate += rotDeg < 1.0 && relativeTranslationError(t, s.t) < 0.05;
+        ASSERT_EQ(pointMask.total(), (size_t)s.points1.rows);
+        ASSERT_EQ(lineMask.total(), (size_t)s.lines1.rows);
+        EXPECT_EQ(inliers, countNonZero(pointMask) + countNonZero(lineMask));
+        const int agree = (int)(pointMask.total() + lineMask.total()) -
+                          countNonZero(pointMask.reshape(1, 1) != s.pointInliers.reshape(1, 1)) -
+                          countNonZero(lineMask.reshape(1, 1) != s.lineInliers.reshape(1, 1));
+        masksRight += agree >= 0.95 * (pointMask.total() + lineMask.total());
+    }
+    std::sort(rotationErrors.begin(), rotationErrors.end());
+    std::cout << "outliers " << outlierRatio * 100 << " %: accurate " << accurate << "/" << trials
+              << ", masks >= 95 % right " << masksRight << "/" << trials << ", median rotation error "
+              << (rotationErrors.empty() ? -1.0 : rotationErrors[rotationErrors.size() / 2]) << " deg" << std::endl;
+    EXPECT_GE(accurate, 99);
+    EXPECT_GE(masksRight, 99);
+}
+
+INSTANTIATE_TEST_CASE_P(/**/, Tripose_Ransac, testing::Values(0.0, 0.1, 0.3, 0.5));
+
+TEST(Tripose_RansacDeterminism, same_seed_same_result)
+{
+    const tripose::SyntheticScene s = outlierScene(0.4, 77);
+    tripose::RansacParams params;
+    params.seed = 5;
+    Mat R1, t1, p1, l1, R2, t2, p2, l2;
+    runRansac(s, params, R1, t1, p1, l1);
+    runRansac(s, params, R2, t2, p2, l2);
+    ASSERT_FALSE(R1.empty());
+    EXPECT_EQ(cv::norm(R1, R2, NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(t1, t2, NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(p1, p2, NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(l1, l2, NORM_INF), 0.0);
+}
+
+TEST(Tripose_RansacParams, invalid_parameters_are_named)
+{
+    const tripose::SyntheticScene s = outlierScene(0.0, 1);
+    Mat R, t, pm, lm;
+    auto expectNamed = [&](const tripose::RansacParams& p, const std::string& name) {
+        try
+        {
+            runRansac(s, p, R, t, pm, lm);
+            ADD_FAILURE() << "no exception for " << name;
+        }
+        catch (const cv::Exception& e)
+        {
+            EXPECT_NE(e.err.find(name), std::string::npos) << e.err;
+        }
+    };
+    tripose::RansacParams p;
+    p.threshold = 0;
+    expectNamed(p, "params.threshold");
+    p = tripose::RansacParams();
+    p.threshold = -1;
+    expectNamed(p, "params.threshold");
+    p = tripose::RansacParams();
+    p.confidence = 1.0;
+    expectNamed(p, "params.confidence");
+    p = tripose::RansacParams();
+    p.confidence = 0.0;
+    expectNamed(p, "params.confidence");
+    p = tripose::RansacParams();
+    p.maxIterations = 0;
+    expectNamed(p, "params.maxIterations");
+}
+
+}} // namespace

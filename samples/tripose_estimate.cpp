@@ -1,0 +1,180 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// tripose_estimate: the pose of view 3 from a problem file.
+//
+//   tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]
+//                    [--threshold px] [--refine 0|1] [--seed n]
+//
+// The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
+// (or dist1..dist3), R12, t12, points1..points3 (Nx2) and lines1..lines3 (Mx4); either kind of
+// feature may be absent. The result holds num_solutions and, when a pose was found, R (3x3) and
+// t (3x1); with --method ransac also num_inliers, inliers_points and inliers_lines (one 0/1 per
+// feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
+// 2 when the solver rejects the input. No output file is left behind on failure.
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include <opencv2/tripose.hpp>
+
+#include "problem_io.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
+    "                        [--threshold px] [--refine 0|1] [--seed n]\n"
+    "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
+    "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4)\n"
+    "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
+    "               (ransac: also num_inliers, inliers_points, inliers_lines)\n"
+    "  --method     linear (default): the unified linear solver on all features;\n"
+    "               ransac: robust estimation with outlier rejection and refinement\n"
+    "  --threshold  ransac inlier threshold in pixels (default 2)\n"
+    "  --refine     ransac: 1 (default) refines over the three views, 0 does not\n"
+    "  --seed       ransac sampler seed (default 0)\n";
+
+struct Options
+{
+    std::string input, output, method = "linear";
+    cv::tripose::RansacParams ransac;
+};
+
+double parseNumber(const std::string& arg, const std::string& value)
+{
+    size_t used = 0;
+    double x = 0;
+    try
+    {
+        x = std::stod(value, &used);
+    }
+    catch (const std::exception&)
+    {
+        used = 0;
+    }
+    if (used != value.size() || !std::isfinite(x))
+        throw std::runtime_error("argument " + arg + ": expected a number, got '" + value + "'");
+    return x;
+}
+
+Options parseArguments(int argc, char** argv)
+{
+    Options o;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+        {
+            std::cout << kUsage;
+            std::exit(0);
+        }
+        if (i + 1 >= argc)
+            throw std::runtime_error("argument " + arg + " needs a value");
+        const std::string value = argv[++i];
+        if (arg == "--input")
+            o.input = value;
+        else if (arg == "--output")
+            o.output = value;
+        else if (arg == "--method")
+            o.method = value;
+        else if (arg == "--threshold")
+        {
+            o.ransac.threshold = parseNumber(arg, value);
+            if (!(o.ransac.threshold > 0))
+                throw std::runtime_error("argument --threshold: expected a positive number of pixels, got '" + value + "'");
+        }
+        else if (arg == "--refine")
+        {
+            if (value != "0" && value != "1")
+                throw std::runtime_error("argument --refine: expected 0 or 1, got '" + value + "'");
+            o.ransac.refine = value == "1";
+        }
+        else if (arg == "--seed")
+        {
+            const double seed = parseNumber(arg, value);
+            if (seed != std::floor(seed) || std::abs(seed) > 2147483647.0)
+                throw std::runtime_error("argument --seed: expected an integer, got '" + value + "'");
+            o.ransac.seed = (int)seed;
+        }
+        else
+            throw std::runtime_error("unknown argument " + arg);
+    }
+    if (o.input.empty())
+        throw std::runtime_error("argument --input is required");
+    if (o.output.empty())
+        throw std::runtime_error("argument --output is required");
+    if (o.method != "linear" && o.method != "ransac")
+        throw std::runtime_error("argument --method: expected 'linear' or 'ransac', got '" + o.method + "'");
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options options;
+    tripose_samples::Problem problem;
+    try
+    {
+        options = parseArguments(argc, argv);
+        problem = tripose_samples::readProblem(options.input);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_estimate: " << e.what() << "\n" << kUsage;
+        return 1;
+    }
+
+    cv::Mat R, t, pointInliers, lineInliers;
+    int n = 0, inliers = 0;
+    const bool robust = options.method == "ransac";
+    try
+    {
+        if (robust)
+        {
+            inliers = cv::tripose::estimatePoseLinePointRansac(
+                problem.points[0], problem.points[1], problem.points[2], problem.lines[0], problem.lines[1],
+                problem.lines[2], problem.K, problem.dist, problem.R12, problem.t12, R, t, options.ransac,
+                pointInliers, lineInliers);
+            n = inliers > 0 ? 1 : 0;
+        }
+        else
+            n = cv::tripose::estimatePoseLinePoint(problem.points[0], problem.points[1], problem.points[2],
+                                                   problem.lines[0], problem.lines[1], problem.lines[2],
+                                                   problem.K, problem.dist, problem.R12, problem.t12, R, t,
+                                                   cv::tripose::POSE_LINEAR);
+    }
+    catch (const cv::Exception& e)
+    {
+        std::cerr << "tripose_estimate: the solver rejected the input: " << e.err << "\n";
+        return 2;
+    }
+
+    try
+    {
+        tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
+            fs << "num_solutions" << n;
+            if (n > 0)
+                fs << "R" << R << "t" << t;
+            if (robust)
+            {
+                // Masks as Nx1 integer matrices (0x1 when there are no features of that kind).
+                cv::Mat p = pointInliers.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(pointInliers.reshape(1, (int)pointInliers.total()));
+                cv::Mat l = lineInliers.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(lineInliers.reshape(1, (int)lineInliers.total()));
+                p.convertTo(p, CV_32S);
+                l.convertTo(l, CV_32S);
+                fs << "num_inliers" << inliers << "inliers_points" << p << "inliers_lines" << l;
+            }
+        });
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_estimate: " << e.what() << "\n";
+        return 1;
+    }
+    std::cout << "tripose_estimate: " << n << " solution(s); result written to " << options.output << "\n";
+    return 0;
+}
