@@ -234,9 +234,10 @@ private:
 
     struct SelectedFeature
     {
-        int index;                //!< Index in the TripletData.
-        bool used = false;        //!< Enters the cost (well determined, in front of the cameras).
-        bool initialized = false; //!< Has a finite structure estimate (for the output).
+        // No default member initializers: brace initialisation must stay valid C++11 (an aggregate).
+        int index;        //!< Index in the TripletData.
+        bool used;        //!< Enters the cost (well determined, in front of the cameras).
+        bool initialized; //!< Has a finite structure estimate (for the output).
     };
 
     static void select(const std::vector<int>* indices, int count, std::vector<SelectedFeature>& out)
