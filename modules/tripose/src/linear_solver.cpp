@@ -40,7 +40,7 @@ int kernelDimensionFor(int numFeatures)
 }
 
 int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
-                         const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
+                         const std::vector<int>* pointIndices, const std::vector<int>* lineIndices, bool twistedPairs)
 {
     const int numFeatures = (pointIndices ? (int)pointIndices->size() : data.numPoints()) +
                             (lineIndices ? (int)lineIndices->size() : data.numLines());
@@ -83,7 +83,7 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         // The twisted pair (R rotated by pi about the baseline direction t) fits the rows almost
         // as well when the constraints are weak (small motion, few features, noise); only
         // cheirality tells them apart, so both go to the selection.
-        const bool addTwisted = twistedPair(pose, normalMatrix, twisted);
+        const bool addTwisted = twistedPairs && twistedPair(pose, normalMatrix, twisted);
         pose.t *= translationScale;
         poses.push_back(pose);
         ++added;

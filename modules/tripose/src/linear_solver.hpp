@@ -23,13 +23,13 @@ int kernelDimensionFor(int numFeatures);
 /** Candidate poses of view 3 by the unified linear method (@cite QadirNeubert2017, Sec. III), before
 any scoring: the kernel of the stacked system, its combinations fixed by the orthonormality of R,
 the nearest rotation and a least-squares translation for each, polished on the algebraic error,
-plus its twisted pair (rotated by pi about the baseline). Over-determined systems (N = 1) also
+plus its twisted pair (rotated by pi about the baseline) unless @p twistedPairs is false. Over-determined systems (N = 1) also
 contribute the N = 2 candidate. Uses the selected features only
 (null pointers: all of them). Appends to @p poses and returns how many were appended.
 */
 int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
                          const std::vector<int>* pointIndices = nullptr,
-                         const std::vector<int>* lineIndices = nullptr);
+                         const std::vector<int>* lineIndices = nullptr, bool twistedPairs = true);
 
 struct ScoredPose
 {

@@ -4,6 +4,8 @@
 
 #include "precomp.hpp"
 
+#include <Eigen/Geometry>
+
 #include "candidate_scoring.hpp"
 #include "linear_solver.hpp"
 #include "ml_refinement.hpp"
@@ -23,6 +25,9 @@ constexpr int kLocalOptimizationRounds = 3;
 // against twice the user's threshold. The final inliers use residuals over all three views
 // (threeViewResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
+// Twisted pairs double the hypotheses to score for little gain here: local optimisation and
+// refinement on the inliers repair the hypotheses that are merely close.
+constexpr bool kTwistedPairsInSamples = false;
 
 //! A model's support: MSAC cost and the inliers it implies.
 struct Support
@@ -37,7 +42,31 @@ public:
     RobustEstimator(const TripletData& data, const RansacParams& params)
         : data_(data), params_(params), structure_(triangulateTwoViewStructure(data)),
           threshold2_(kSamplingThresholdFactor * kSamplingThresholdFactor * params.threshold * params.threshold)
-    {}
+    {
+        // Flat arrays of what the early-exit cost needs; features without two-view structure
+        // always cost the full threshold.
+        for (int i = 0; i < data.numPoints(); ++i)
+        {
+            if (structure_.pointValid[i])
+            {
+                scoredPoints_.push_back(structure_.points[i]);
+                observedPoints_.push_back(data.pixels[2].points[i]);
+            }
+            else
+                invalidCost_ += threshold2_;
+        }
+        for (int i = 0; i < data.numLines(); ++i)
+        {
+            if (structure_.lineValid[i])
+                for (int end = 0; end < 2; ++end)
+                {
+                    scoredLineEnds_.push_back(structure_.lineEnds[2 * i + end]);
+                    observedLineEnds_.push_back(data.pixels[2].lineEnds[2 * i + end]);
+                }
+            else
+                invalidCost_ += threshold2_;
+        }
+    }
 
     bool run(RobustEstimate& estimate)
     {
@@ -55,10 +84,13 @@ public:
             for (int f : sample)
                 (f < data_.numPoints() ? samplePoints : sampleLines).push_back(f < data_.numPoints() ? f : f - data_.numPoints());
             candidates.clear();
-            linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines);
+            linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines, kTwistedPairsInSamples);
             bool improved = false;
             for (const CameraPose& pose : candidates)
             {
+                // Most hypotheses are bad: stop adding up their cost once it exceeds the best.
+                if (!(truncatedCost(pose, best_.cost) < best_.cost))
+                    continue;
                 const Support s = support(pose);
                 if (s.cost < best_.cost)
                 {
@@ -106,6 +138,43 @@ private:
             while (std::find(sample.begin(), sample.begin() + k, f) != sample.begin() + k);
             sample[k] = f;
         }
+    }
+
+    //! The MSAC cost of a pose, abandoned (+inf) as soon as it exceeds @p bound.
+    double truncatedCost(const CameraPose& pose, double bound) const
+    {
+        const Eigen::Matrix3d& K = data_.pixels[2].K;
+        const Eigen::Matrix3d KR = K * pose.R;
+        const Eigen::Vector3d Kt = K * pose.t;
+        const double inf = std::numeric_limits<double>::infinity();
+        double cost = invalidCost_;
+        for (size_t i = 0; i < scoredPoints_.size(); ++i)
+        {
+            const Eigen::Vector3d x = KR * scoredPoints_[i] + Kt;
+            cost += x.z() > 0 ? std::min((x.hnormalized() - observedPoints_[i]).squaredNorm(), threshold2_) : threshold2_;
+            if (cost > bound)
+                return inf;
+        }
+        for (size_t i = 0; i < scoredLineEnds_.size(); i += 2)
+        {
+            const Eigen::Vector3d a = KR * scoredLineEnds_[i] + Kt, b = KR * scoredLineEnds_[i + 1] + Kt;
+            double r2 = threshold2_;
+            if (a.z() > 0 && b.z() > 0)
+            {
+                Eigen::Vector3d line = a.cross(b);
+                const double n2 = line.head<2>().squaredNorm();
+                if (n2 > 0)
+                {
+                    const double d0 = line.dot(observedLineEnds_[i].homogeneous());
+                    const double d1 = line.dot(observedLineEnds_[i + 1].homogeneous());
+                    r2 = std::min(0.5 * (d0 * d0 + d1 * d1) / n2, threshold2_);
+                }
+            }
+            cost += r2;
+            if (cost > bound)
+                return inf;
+        }
+        return cost;
     }
 
     //! Truncated quadratic cost over all features and the number of features under the threshold.
@@ -220,6 +289,9 @@ private:
     const TwoViewStructure structure_;
     const double threshold2_;
     std::vector<double> pointResiduals_, lineResiduals_;
+    std::vector<Eigen::Vector3d> scoredPoints_, scoredLineEnds_;
+    std::vector<Eigen::Vector2d> observedPoints_, observedLineEnds_;
+    double invalidCost_ = 0;
     Support best_;
     CameraPose bestPose_;
 };
