@@ -22,7 +22,8 @@ function(tripose_add_module_targets)
       ${module_dir}/src)
   target_link_libraries(opencv_tripose
     PUBLIC opencv_core
-    PRIVATE opencv_imgproc opencv_calib3d Eigen3::Eigen)
+    # Eigen is header-only: a build-time dependency that installed consumers need not find.
+    PRIVATE opencv_imgproc opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
   target_compile_options(opencv_tripose PRIVATE
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
 

@@ -5,6 +5,7 @@
 #include "precomp.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include "kernel_solutions.hpp"
 #include "linear_solver.hpp"
@@ -49,8 +50,8 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     if (!A.allFinite())
         return 0;
 
-    // The kernel from the SVD of A itself: eigenvectors of A^T A would square its conditioning.
-    // Rows beyond 12 are first folded into a 12x12 triangular factor (same right singular vectors).
+    // Rows beyond 12 are first folded into a 12x12 triangular factor (same right singular vectors,
+    // same normal matrix).
     Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12> reduced;
     if (A.rows() > 12)
     {
@@ -59,18 +60,30 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     }
     else
         reduced = A;
-    Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
-    const int N = kernelDimensionFor(numFeatures);
     const Matrix12d normalMatrix = reduced.transpose() * reduced;
-
-    // Singular values descend: the last N right singular vectors span the (approximate) kernel.
-    // An over-determined system also tries N = 2: with noise and few redundant constraints the
-    // two smallest singular values can be close, and the orthonormality constraints then pick the
-    // rotation better than the last singular vector alone; selection by reprojection error decides.
+    const int N = kernelDimensionFor(numFeatures);
     std::vector<Vector12d> solutions;
-    solveKernelCombinations(svd.matrixV().rightCols(N), solutions);
     if (N == 1)
-        solveKernelCombinations(svd.matrixV().rightCols(2), solutions);
+    {
+        // Over-determined: the eigenvectors of A^T A are accurate enough here (the rows are
+        // balanced and every candidate is polished on the algebraic error), at a third of the cost
+        // of an SVD. Besides N = 1, try N = 2: with noise and few redundant constraints the two
+        // smallest singular values can be close, and the orthonormality constraints then pick the
+        // rotation better than the last singular vector alone; selection decides.
+        Eigen::SelfAdjointEigenSolver<Matrix12d> eigen(normalMatrix);
+        if (eigen.info() != Eigen::Success)
+            return 0;
+        solveKernelCombinations(eigen.eigenvectors().leftCols(1), solutions);
+        solveKernelCombinations(eigen.eigenvectors().leftCols(2), solutions);
+    }
+    else
+    {
+        // Four or five features: the kernel's edge is where exact data must stay exact, and
+        // eigenvectors of A^T A would square its conditioning. The SVD of the factor keeps it.
+        Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
+        // Singular values descend: the last N right singular vectors span the kernel.
+        solveKernelCombinations(svd.matrixV().rightCols(N), solutions);
+    }
 
     int added = 0;
     for (const Vector12d& v : solutions)
