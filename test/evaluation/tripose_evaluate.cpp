@@ -281,6 +281,7 @@ struct Result
 {
     bool ok = false;
     double rot = 0, trans = 0, timeUs = 0;
+    std::string error;  // the exception message when the method threw
 };
 
 //! Runs solve() `repeats` times; the median wall time, the errors of the last run.
@@ -365,9 +366,12 @@ Result runMethod(const std::string& method, const Problem& p, const Options& o)
         if (method == "tri+epnp")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_EPNP, R, t); });
     }
-    catch (const cv::Exception&)
+    catch (const cv::Exception& e)
     {
         // A degenerate draw (e.g. collinear points for PnP) is a failure of that method, not of the run.
+        Result failed;
+        failed.error = e.err;
+        return failed;
     }
     return Result();
 }
@@ -382,6 +386,18 @@ std::string num(double x)
     char buf[32];
     std::snprintf(buf, sizeof(buf), "%.10g", x);
     return buf;
+}
+
+std::string jsonEscape(const std::string& text)
+{
+    std::string out;
+    for (char c : text)
+    {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) { out += ' '; continue; }
+        out += c;
+    }
+    return out;
 }
 
 std::string matrix(const cv::Mat& m)
@@ -456,7 +472,7 @@ int main(int argc, char** argv)
                 const Result r = runMethod(m, p, o);
                 line += std::string(first ? "" : ",") + "\"" + m + "\":{\"ok\":" + (r.ok ? "true" : "false") +
                         ",\"rot_deg\":" + (r.ok ? num(r.rot) : "null") + ",\"t_rel\":" + (r.ok ? num(r.trans) : "null") +
-                        ",\"time_us\":" + num(r.timeUs) + "}";
+                        ",\"time_us\":" + num(r.timeUs) + (r.error.empty() ? "" : ",\"error\":\"" + jsonEscape(r.error) + "\"") + "}";
                 first = false;
             }
             line += "}";
