@@ -50,26 +50,17 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     if (!A.allFinite())
         return 0;
 
-    // Rows beyond 12 are first folded into a 12x12 triangular factor (same right singular vectors,
-    // same normal matrix).
-    Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12> reduced;
-    if (A.rows() > 12)
-    {
-        Eigen::HouseholderQR<ConstraintMatrix> qr(A);
-        reduced = qr.matrixQR().topRows<12>().triangularView<Eigen::Upper>();
-    }
-    else
-        reduced = A;
-    const Matrix12d normalMatrix = reduced.transpose() * reduced;
     const int N = kernelDimensionFor(numFeatures);
     std::vector<Vector12d> solutions;
+    Matrix12d normalMatrix;
     if (N == 1)
     {
         // Over-determined: the eigenvectors of A^T A are accurate enough here (the rows are
-        // balanced and every candidate is polished on the algebraic error), at a third of the cost
-        // of an SVD. Besides N = 1, try N = 2: with noise and few redundant constraints the two
+        // balanced and every candidate is polished on the algebraic error), at a fraction of the
+        // cost of an SVD. Besides N = 1, try N = 2: with noise and few redundant constraints the two
         // smallest singular values can be close, and the orthonormality constraints then pick the
         // rotation better than the last singular vector alone; selection decides.
+        normalMatrix = A.transpose().lazyProduct(A); // small: coefficient-wise beats blocked GEMM
         Eigen::SelfAdjointEigenSolver<Matrix12d> eigen(normalMatrix);
         if (eigen.info() != Eigen::Success)
             return 0;
@@ -79,7 +70,17 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     else
     {
         // Four or five features: the kernel's edge is where exact data must stay exact, and
-        // eigenvectors of A^T A would square its conditioning. The SVD of the factor keeps it.
+        // eigenvectors of A^T A would square its conditioning: SVD of A (rows beyond 12 folded
+        // first into a 12x12 triangular factor, which has the same right singular vectors).
+        Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12> reduced;
+        if (A.rows() > 12)
+        {
+            Eigen::HouseholderQR<ConstraintMatrix> qr(A);
+            reduced = qr.matrixQR().topRows<12>().triangularView<Eigen::Upper>();
+        }
+        else
+            reduced = A;
+        normalMatrix = reduced.transpose() * reduced;
         Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
         // Singular values descend: the last N right singular vectors span the kernel.
         solveKernelCombinations(svd.matrixV().rightCols(N), solutions);
