@@ -29,36 +29,11 @@ struct RotationForm
 Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
 {
     const Mat m = arr.getMat();
-    const bool isMatrix = m.total() == 9 && m.channels() == 1;
-    const bool isVector = m.total() * m.channels() == 3;
-    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) || !(isMatrix || isVector))
-        CV_Error(Error::StsBadArg, "R must be the initial rotation of view 3: a 3x3 matrix or a 3-element Rodrigues "
-                                   "vector, CV_32F or CV_64F");
-    Mat R;
-    m.convertTo(R, CV_64F);
-    if (!checkRange(R))
-        CV_Error(Error::StsBadArg, "R contains NaN or Inf values");
-    form.rodrigues = isVector;
+    form.rodrigues = m.total() * m.channels() == 3;
     form.rows = m.rows;
     form.cols = m.cols;
-    if (isVector)
-    {
-        Mat rmat;
-        Rodrigues(R.reshape(1, 3), rmat);
-        R = rmat;
-    }
-    R = R.reshape(1, 3);
-    Eigen::Matrix3d E;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            E(r, c) = R.at<double>(r, c);
-    const double tolerance = m.depth() == CV_32F ? 1e-4 : 1e-6;
-    const double orthogonality = (E.transpose() * E - Eigen::Matrix3d::Identity()).norm();
-    if (!(orthogonality < tolerance) || E.determinant() < 0)
-        CV_Error_(Error::StsBadArg, ("R is not a rotation: |R^T R - I| = %g, det = %g", orthogonality, E.determinant()));
-    // The refinement updates R multiplicatively: start from an exact rotation.
-    Eigen::JacobiSVD<Eigen::Matrix3d> svd(E, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    return svd.matrixU() * svd.matrixV().transpose();
+    // Validated like R12; returned as an exact rotation, which the multiplicative update needs.
+    return detail::readRotation(arr, "R");
 }
 
 Eigen::Vector3d readInitialTranslation(InputArray arr)

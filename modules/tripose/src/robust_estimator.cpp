@@ -85,21 +85,7 @@ public:
                 (f < data_.numPoints() ? samplePoints : sampleLines).push_back(f < data_.numPoints() ? f : f - data_.numPoints());
             candidates.clear();
             linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines, kTwistedPairsInSamples);
-            bool improved = false;
-            for (const CameraPose& pose : candidates)
-            {
-                // Most hypotheses are bad: stop adding up their cost once it exceeds the best.
-                if (!(truncatedCost(pose, best_.cost) < best_.cost))
-                    continue;
-                const Support s = support(pose);
-                if (s.cost < best_.cost)
-                {
-                    best_ = s;
-                    bestPose_ = pose;
-                    improved = true;
-                }
-            }
-            if (!improved)
+            if (!keepBest(candidates))
                 continue;
             if (params_.localOptimization)
                 optimizeLocally();
@@ -138,6 +124,26 @@ private:
             while (std::find(sample.begin(), sample.begin() + k, f) != sample.begin() + k);
             sample[k] = f;
         }
+    }
+
+    //! Makes the cheapest of @p poses the best model if it beats it; true if it did.
+    bool keepBest(const std::vector<CameraPose>& poses)
+    {
+        bool improved = false;
+        for (const CameraPose& pose : poses)
+        {
+            // Most hypotheses are bad: stop adding up their cost once it exceeds the best.
+            if (!(truncatedCost(pose, best_.cost) < best_.cost))
+                continue;
+            const Support s = support(pose);
+            if (s.cost < best_.cost)
+            {
+                best_ = s;
+                bestPose_ = pose;
+                improved = true;
+            }
+        }
+        return improved;
     }
 
     //! The MSAC cost of a pose, abandoned (+inf) as soon as it exceeds @p bound.
@@ -223,18 +229,7 @@ private:
                 return;
             poses.clear();
             linearPoseCandidates(data_, poses, &points, &lines);
-            bool improved = false;
-            for (const CameraPose& pose : poses)
-            {
-                const Support s = support(pose);
-                if (s.cost < best_.cost)
-                {
-                    best_ = s;
-                    bestPose_ = pose;
-                    improved = true;
-                }
-            }
-            if (!improved)
+            if (!keepBest(poses))
                 return;
         }
     }

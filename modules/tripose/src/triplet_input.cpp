@@ -112,35 +112,6 @@ Mat readDistortion(const Mat& m, const std::string& name)
     return countNonZero(d) == 0 ? Mat() : d;
 }
 
-Eigen::Matrix3d readRotation(InputArray arr, const char* name)
-{
-    Mat m = arr.getMat();
-    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) ||
-        !((m.total() == 9 && m.channels() == 1) || m.total() * m.channels() == 3))
-        CV_Error_(Error::StsBadArg, ("%s must be a 3x3 rotation matrix or a 3-element Rodrigues vector, CV_32F or CV_64F", name));
-    Mat R;
-    m.convertTo(R, CV_64F);
-    requireFinite(R, name);
-    if (R.total() * R.channels() == 3)
-    {
-        Mat rmat;
-        Rodrigues(R.reshape(1, 3), rmat);
-        R = rmat;
-    }
-    R = R.reshape(1, 3);
-    Eigen::Matrix3d E;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            E(r, c) = R.at<double>(r, c);
-    const double tolerance = m.depth() == CV_32F ? 1e-4 : 1e-6;
-    const double orthogonality = (E.transpose() * E - Eigen::Matrix3d::Identity()).norm();
-    if (!(orthogonality < tolerance) || E.determinant() < 0)
-        CV_Error_(Error::StsBadArg, ("%s is not a rotation: |R^T R - I| = %g, det = %g", name, orthogonality, E.determinant()));
-    // Remove rounding so that later algebra sees an exact rotation.
-    Eigen::JacobiSVD<Eigen::Matrix3d> svd(E, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    return svd.matrixU() * svd.matrixV().transpose();
-}
-
 Eigen::Vector3d readTranslation(InputArray arr, const char* name)
 {
     Mat m = arr.getMat();
@@ -223,6 +194,35 @@ void convertLines(const Mat& lines, const Eigen::Matrix3d& K, const Mat& dist, c
 }
 
 } // namespace
+
+Eigen::Matrix3d readRotation(InputArray arr, const char* name)
+{
+    Mat m = arr.getMat();
+    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) ||
+        !((m.total() == 9 && m.channels() == 1) || m.total() * m.channels() == 3))
+        CV_Error_(Error::StsBadArg, ("%s must be a 3x3 rotation matrix or a 3-element Rodrigues vector, CV_32F or CV_64F", name));
+    Mat R;
+    m.convertTo(R, CV_64F);
+    requireFinite(R, name);
+    if (R.total() * R.channels() == 3)
+    {
+        Mat rmat;
+        Rodrigues(R.reshape(1, 3), rmat);
+        R = rmat;
+    }
+    R = R.reshape(1, 3);
+    Eigen::Matrix3d E;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            E(r, c) = R.at<double>(r, c);
+    const double tolerance = m.depth() == CV_32F ? 1e-4 : 1e-6;
+    const double orthogonality = (E.transpose() * E - Eigen::Matrix3d::Identity()).norm();
+    if (!(orthogonality < tolerance) || E.determinant() < 0)
+        CV_Error_(Error::StsBadArg, ("%s is not a rotation: |R^T R - I| = %g, det = %g", name, orthogonality, E.determinant()));
+    // Remove rounding so that later algebra sees an exact rotation.
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(E, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    return svd.matrixU() * svd.matrixV().transpose();
+}
 
 TripletData readTripletInput(InputArray points1, InputArray points2, InputArray points3,
                              InputArray lines1, InputArray lines2, InputArray lines3,

@@ -28,6 +28,12 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
 
 constexpr double kHomogeneousLineHalfLength = 50.0;
 
+/** A rotation given as a 3x3 matrix or a Rodrigues vector (CV_32F/CV_64F), checked (finite,
+orthonormal within the input precision, det +1; cv::Exception naming @p name otherwise) and
+returned as the nearest exact rotation.
+*/
+Eigen::Matrix3d readRotation(InputArray arr, const char* name);
+
 } // namespace detail
 } // namespace tripose
 } // namespace cv
