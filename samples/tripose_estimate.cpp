@@ -20,7 +20,11 @@
 
 #include <opencv2/tripose.hpp>
 
+#include "arguments.hpp"
 #include "problem_io.hpp"
+
+using tripose_samples::parseInteger;
+using tripose_samples::parseNumber;
 
 namespace {
 
@@ -42,23 +46,6 @@ struct Options
     std::string input, output, method = "linear";
     cv::tripose::RansacParams ransac;
 };
-
-double parseNumber(const std::string& arg, const std::string& value)
-{
-    size_t used = 0;
-    double x = 0;
-    try
-    {
-        x = std::stod(value, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != value.size() || !std::isfinite(x))
-        throw std::runtime_error("argument " + arg + ": expected a number, got '" + value + "'");
-    return x;
-}
 
 Options parseArguments(int argc, char** argv)
 {
@@ -94,10 +81,7 @@ Options parseArguments(int argc, char** argv)
         }
         else if (arg == "--seed")
         {
-            const double seed = parseNumber(arg, value);
-            if (seed != std::floor(seed) || std::abs(seed) > 2147483647.0)
-                throw std::runtime_error("argument --seed: expected an integer, got '" + value + "'");
-            o.ransac.seed = (int)seed;
+            o.ransac.seed = parseInteger(arg, value, -2147483647.0);
         }
         else
             throw std::runtime_error("unknown argument " + arg);

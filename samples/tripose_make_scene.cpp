@@ -21,7 +21,12 @@
 
 #include <opencv2/tripose.hpp>
 
+#include "arguments.hpp"
 #include "problem_io.hpp"
+
+using tripose_samples::argumentError;
+using tripose_samples::parseInteger;
+using tripose_samples::parseNumber;
 
 namespace {
 
@@ -43,37 +48,6 @@ struct Options
     std::string output;
     cv::tripose::SyntheticSceneParams scene;
 };
-
-std::runtime_error argumentError(const std::string& arg, const std::string& what)
-{
-    return std::runtime_error("argument " + arg + ": " + what);
-}
-
-double parseNumber(const std::string& arg, const std::string& value)
-{
-    size_t used = 0;
-    double x = 0;
-    try
-    {
-        x = std::stod(value, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != value.size() || !std::isfinite(x))
-        throw argumentError(arg, "expected a number, got '" + value + "'");
-    return x;
-}
-
-int parseInteger(const std::string& arg, const std::string& value, double lowest)
-{
-    const double x = parseNumber(arg, value);
-    if (x != std::floor(x) || x < lowest || x > 2147483647.0)
-        throw argumentError(arg, lowest >= 0 ? "expected an integer >= 0, got '" + value + "'"
-                                             : "expected an integer, got '" + value + "'");
-    return (int)x;
-}
 
 bool hasExtension(const std::string& path, const std::string& extension)
 {

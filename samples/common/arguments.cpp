@@ -1,0 +1,42 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "arguments.hpp"
+
+#include <cmath>
+
+namespace tripose_samples {
+
+std::runtime_error argumentError(const std::string& arg, const std::string& what)
+{
+    return std::runtime_error("argument " + arg + ": " + what);
+}
+
+double parseNumber(const std::string& arg, const std::string& value)
+{
+    size_t used = 0;
+    double x = 0;
+    try
+    {
+        x = std::stod(value, &used);
+    }
+    catch (const std::exception&)
+    {
+        used = 0;
+    }
+    if (used != value.size() || !std::isfinite(x))
+        throw argumentError(arg, "expected a number, got '" + value + "'");
+    return x;
+}
+
+int parseInteger(const std::string& arg, const std::string& value, double lowest)
+{
+    const double x = parseNumber(arg, value);
+    if (x != std::floor(x) || x < lowest || x > 2147483647.0)
+        throw argumentError(arg, lowest >= 0 ? "expected an integer >= 0, got '" + value + "'"
+                                             : "expected an integer, got '" + value + "'");
+    return (int)x;
+}
+
+} // namespace tripose_samples

@@ -1,0 +1,25 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Command-line values of the tools: parsed whole or rejected with a message naming the argument.
+#ifndef TRIPOSE_SAMPLES_ARGUMENTS_HPP
+#define TRIPOSE_SAMPLES_ARGUMENTS_HPP
+
+#include <stdexcept>
+#include <string>
+
+namespace tripose_samples {
+
+//! "argument <arg>: <what>".
+std::runtime_error argumentError(const std::string& arg, const std::string& what);
+
+//! A finite number spanning all of @p value, else argumentError.
+double parseNumber(const std::string& arg, const std::string& value);
+
+//! A whole number in [lowest, 2^31 - 1], else argumentError.
+int parseInteger(const std::string& arg, const std::string& value, double lowest);
+
+} // namespace tripose_samples
+
+#endif // TRIPOSE_SAMPLES_ARGUMENTS_HPP
