@@ -43,8 +43,11 @@ seconds() { date +%s; }
 t_start=$(seconds)
 log() { echo "[opencv-intree $version] $*" >&2; }
 
-# 1. The sdist, checked against the sha256 that the index publishes.
-archive=$("$python" "$repo/scripts/opencv/fetch_sdist.py" "$package" "$version" "$cache/sdist")
+# 1. The sdist, checked against the sha256 that the index publishes. The index is the one pip is
+#    configured with, so ask a Python that has pip: the project's venv, else the system one.
+fetch_python="$repo/.venv/bin/python"
+[ -x "$fetch_python" ] || fetch_python=$python
+archive=$("$fetch_python" "$repo/scripts/opencv/fetch_sdist.py" "$package" "$version" "$cache/sdist")
 
 # 2. Unpack opencv/ only (opencv_contrib/ is not needed to build tripose).
 if [ ! -f "$src/.unpacked" ] || [ "$(cat "$src/.unpacked")" != "$(basename "$archive")" ]; then

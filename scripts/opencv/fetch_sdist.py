@@ -30,7 +30,10 @@ def index_url():
         except (subprocess.CalledProcessError, OSError):
             url = ""
     if not url:
-        from pip._internal.models.index import PyPI  # pip's built-in default index
+        try:
+            from pip._internal.models.index import PyPI  # pip's built-in default index
+        except ImportError:
+            sys.exit("fetch_sdist: pip is not importable here; set PIP_INDEX_URL to the package index")
         url = PyPI.simple_url
     return url.rstrip("/") + "/"
 
