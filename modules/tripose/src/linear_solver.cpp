@@ -121,7 +121,10 @@ std::vector<ScoredPose> rankCandidates(const TripletData& data, const TwoViewStr
         const ReprojectionScore score = scorePose(data, structure, pose);
         if (2 * score.behind > score.considered || !std::isfinite(score.rms))
             continue;
-        ranked.push_back({ pose, score.rms });
+        ScoredPose scored; // not brace-initialised: OpenCV 4.x builds modules as C++11
+        scored.pose = pose;
+        scored.rms = score.rms;
+        ranked.push_back(scored);
     }
     std::stable_sort(ranked.begin(), ranked.end(),
                      [](const ScoredPose& a, const ScoredPose& b) { return a.rms < b.rms; });
