@@ -3,7 +3,7 @@
 # minimal OpenCV: only the modules tripose needs, OpenCV's test module (ts) and the Python 3
 # bindings, and only the targets the tests use (opencv_test_tripose, opencv_perf_tripose, cv2).
 #
-#   bash scripts/build_opencv_intree.sh [4|5|<sdist version>]     (default 4 = 4.12.0.88)
+#   bash scripts/build_opencv_intree.sh [4|5|<sdist version>] [--run COMMAND...]   (default 4 = 4.12.0.88)
 #
 # The OpenCV sources come from the source distribution of opencv-contrib-python-headless on the
 # package index pip uses (it holds opencv/ and opencv_contrib/); nothing else is downloaded.
@@ -11,18 +11,28 @@
 # that a fresh clone on the same machine reuses it): the archive, the unpacked sources and the
 # build folder, so a second run only recompiles what changed. Runs are serialised by a lock.
 #
-# Prints, as its last lines, the paths the tests need:
+# Prints, as its last lines, the paths the tests need (and exports them to --run's COMMAND):
 #   OPENCV_INTREE_BUILD=<build folder>   (bin/opencv_test_tripose)
 #   OPENCV_INTREE_PYTHONPATH=<folder holding the cv2 package>
 #   OPENCV_INTREE_SOURCE=<opencv source folder>
+# With --run, COMMAND runs after the build while the lock is still held, so that another checkout
+# sharing the cache cannot relink the libraries under the tests.
 # Environment: TRIPOSE_OPENCV_JOBS (default 2), TRIPOSE_OPENCV_NICE (default 15).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
-case "${1:-4}" in
+which=4
+if [ $# -gt 0 ] && [ "$1" != "--run" ]; then which=$1; shift; fi
+run=()
+if [ $# -gt 0 ]; then
+  [ "$1" = "--run" ] && [ $# -gt 1 ] || { echo "usage: $0 [4|5|<version>] [--run COMMAND...]" >&2; exit 2; }
+  shift
+  run=("$@")
+fi
+case "$which" in
   4|4.x|4.12) version=4.12.0.88 ;;
   5|5.x|5.0)  version=5.0.0.93 ;;
-  *)          version=$1 ;;
+  *)          version=$which ;;
 esac
 package=opencv-contrib-python-headless
 cache=${TRIPOSE_OPENCV_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/tripose}
@@ -35,7 +45,8 @@ src="$root/src"
 bld="$root/build"
 mkdir -p "$root"
 
-# One build at a time per OpenCV version (the developer's tree and CI may share the cache).
+# One build at a time per OpenCV version (the developer's tree and CI may share the cache). The
+# descriptor stays open through --run's exec, so the lock covers the tests too.
 exec 9>"$root/.lock"
 flock 9
 
@@ -129,3 +140,8 @@ log "times (s): fetch+unpack $((t_unpacked - t_start)), configure $((t_configure
 echo "OPENCV_INTREE_BUILD=$bld"
 echo "OPENCV_INTREE_PYTHONPATH=$pythonpath"
 echo "OPENCV_INTREE_SOURCE=$opencv_src"
+
+if [ ${#run[@]} -gt 0 ]; then
+  export OPENCV_INTREE_BUILD="$bld" OPENCV_INTREE_PYTHONPATH="$pythonpath" OPENCV_INTREE_SOURCE="$opencv_src"
+  exec "${run[@]}"
+fi

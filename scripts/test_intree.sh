@@ -8,17 +8,18 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
-out=$(bash "$repo/scripts/build_opencv_intree.sh" "${1:-4}" | tee /dev/stderr)
-bld=$(sed -n 's/^OPENCV_INTREE_BUILD=//p' <<<"$out")
-pythonpath=$(sed -n 's/^OPENCV_INTREE_PYTHONPATH=//p' <<<"$out")
-opencv_src=$(sed -n 's/^OPENCV_INTREE_SOURCE=//p' <<<"$out")
+# The tests run under the build's lock (--run), so that a run from another checkout sharing the
+# cache cannot rebuild the libraries while they are loaded.
+if [ -z "${OPENCV_INTREE_BUILD:-}" ]; then
+  exec bash "$repo/scripts/build_opencv_intree.sh" "${1:-4}" --run bash "$repo/scripts/test_intree.sh"
+fi
 
 export OPENCV_TEST_DATA_PATH="$repo/test/data"
 
 echo "[intree] C++: opencv_test_tripose"
-"$bld/bin/opencv_test_tripose" --gtest_color=no
+"$OPENCV_INTREE_BUILD/bin/opencv_test_tripose" --gtest_color=no
 
 echo "[intree] Python: test_tripose.py"
 # The runner reads opencv_python_tests.cfg from the current folder to find module test folders.
-(cd "$bld" && PYTHONPATH="$pythonpath" OPENCV_PYTEST_FILTER=test_tripose \
-   /usr/bin/python3 "$opencv_src/modules/python/test/test.py" --repo "$opencv_src" -v)
+(cd "$OPENCV_INTREE_BUILD" && PYTHONPATH="$OPENCV_INTREE_PYTHONPATH" OPENCV_PYTEST_FILTER=test_tripose \
+   /usr/bin/python3 "$OPENCV_INTREE_SOURCE/modules/python/test/test.py" --repo "$OPENCV_INTREE_SOURCE" -v)
