@@ -36,7 +36,7 @@ void startingPose(const tripose::SyntheticScene& s, Mat& R, Mat& t)
     Mat dR;
     Rodrigues(Vec3d(0.5, -0.5, 0.5) * (0.5 * CV_PI / 180.0 / std::sqrt(0.75)), dR);
     R = dR * s.R;
-    t = s.t + Mat(Vec3d(0.02, -0.01, 0.01) * (norm(s.t) / norm(Vec3d(0.02, -0.01, 0.01)) * 0.02));
+    t = s.t + Mat(Vec3d(0.02, -0.01, 0.01) * (cv::norm(s.t) / cv::norm(Vec3d(0.02, -0.01, 0.01)) * 0.02));
 }
 
 //! The public function: input validation, undistortion and the refinement.

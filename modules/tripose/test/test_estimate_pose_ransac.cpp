@@ -50,10 +50,10 @@ TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
         accurate += rotDeg < 1.0 && relativeTranslationError(t, s.t) < 0.05;
         ASSERT_EQ(pointMask.total(), (size_t)s.points1.rows);
         ASSERT_EQ(lineMask.total(), (size_t)s.lines1.rows);
-        EXPECT_EQ(inliers, countNonZero(pointMask) + countNonZero(lineMask));
+        EXPECT_EQ(inliers, cv::countNonZero(pointMask) + cv::countNonZero(lineMask));
         const int agree = (int)(pointMask.total() + lineMask.total()) -
-                          countNonZero(pointMask.reshape(1, 1) != s.pointInliers.reshape(1, 1)) -
-                          countNonZero(lineMask.reshape(1, 1) != s.lineInliers.reshape(1, 1));
+                          cv::countNonZero(pointMask.reshape(1, 1) != s.pointInliers.reshape(1, 1)) -
+                          cv::countNonZero(lineMask.reshape(1, 1) != s.lineInliers.reshape(1, 1));
         masksRight += agree >= 0.95 * (pointMask.total() + lineMask.total());
     }
     std::sort(rotationErrors.begin(), rotationErrors.end());

@@ -4,4 +4,6 @@
 
 #include "test_precomp.hpp"
 
-CV_TEST_MAIN("cv")
+// Test data sits directly under OPENCV_TEST_DATA_PATH (the repository's test/data), with no
+// resource subfolder, in the standalone build and inside OpenCV alike.
+CV_TEST_MAIN("")

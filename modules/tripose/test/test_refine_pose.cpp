@@ -54,12 +54,12 @@ SyntheticScene makeScene(int points, int lines, int motion, double sigma, int se
 void perturbPose(const SyntheticScene& s, double degrees, double fraction, RNG& rng, Mat& R, Mat& t)
 {
     Vec3d axis(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    axis *= (degrees * CV_PI / 180.0) / norm(axis);
+    axis *= (degrees * CV_PI / 180.0) / cv::norm(axis);
     Mat dR;
     Rodrigues(Mat(axis), dR);
     R = dR * s.R;
     Vec3d dt(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    dt *= fraction * norm(s.t) / norm(dt);
+    dt *= fraction * cv::norm(s.t) / cv::norm(dt);
     t = s.t + Mat(dt);
 }
 
@@ -73,9 +73,9 @@ double refineScene(const SyntheticScene& s, Mat& R, Mat& t, const RefineParams& 
 //! Distance of X to the infinite line through A and B.
 double distanceToLine(const Vec3d& X, const Vec3d& A, const Vec3d& B)
 {
-    const Vec3d u = (B - A) * (1.0 / norm(B - A));
+    const Vec3d u = (B - A) * (1.0 / cv::norm(B - A));
     const Vec3d w = X - A;
-    return norm(w - u * w.dot(u));
+    return cv::norm(w - u * w.dot(u));
 }
 
 struct Setting

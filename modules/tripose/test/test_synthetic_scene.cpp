@@ -63,7 +63,7 @@ double maxReprojectionError(const SyntheticScene& s)
             if (v == 2 && !s.pointInliers.at<uchar>(i))
                 continue;
             const Point2d x = projectPoint(K, R[v], t[v], Vec3d(s.points3d.ptr<double>(i)));
-            worst = std::max(worst, norm(x - Point2d(points[v]->at<double>(i, 0), points[v]->at<double>(i, 1))));
+            worst = std::max(worst, cv::norm(x - Point2d(points[v]->at<double>(i, 0), points[v]->at<double>(i, 1))));
         }
         for (int i = 0; i < s.lines3d.rows; ++i)
         {
@@ -73,8 +73,8 @@ double maxReprojectionError(const SyntheticScene& s)
             const double* o = lines[v]->ptr<double>(i);
             const Point2d a = projectPoint(K, R[v], t[v], Vec3d(L[0], L[1], L[2]));
             const Point2d b = projectPoint(K, R[v], t[v], Vec3d(L[3], L[4], L[5]));
-            worst = std::max(worst, norm(a - Point2d(o[0], o[1])));
-            worst = std::max(worst, norm(b - Point2d(o[2], o[3])));
+            worst = std::max(worst, cv::norm(a - Point2d(o[0], o[1])));
+            worst = std::max(worst, cv::norm(b - Point2d(o[2], o[3])));
         }
     }
     return worst;
@@ -207,7 +207,7 @@ TEST(Tripose_SyntheticScene, features_project_inside_the_images_and_in_front)
                     check(Vec3d(L[3], L[4], L[5]), "segment end", i);
                     const Point2d a = projectPoint(K, R[v], t[v], Vec3d(L[0], L[1], L[2]));
                     const Point2d b = projectPoint(K, R[v], t[v], Vec3d(L[3], L[4], L[5]));
-                    EXPECT_GE(norm(b - a), 20.0) << "segment " << i << " view " << v + 1;
+                    EXPECT_GE(cv::norm(b - a), 20.0) << "segment " << i << " view " << v + 1;
                 }
             }
         }
@@ -287,17 +287,17 @@ TEST(Tripose_SyntheticScene, camera_placement_follows_the_motion_regime)
                     EXPECT_NEAR(c[2], d, 1e-9) << "view " << v + 1 << " seed " << seed;
                 else
                 {
-                    EXPECT_LE(norm(cameraCentre), radius + 1e-9) << "view " << v + 1 << " seed " << seed;
-                    largestSmallMotion = std::max(largestSmallMotion, norm(cameraCentre));
+                    EXPECT_LE(cv::norm(cameraCentre), radius + 1e-9) << "view " << v + 1 << " seed " << seed;
+                    largestSmallMotion = std::max(largestSmallMotion, cv::norm(cameraCentre));
                 }
             }
             for (int i = 0; i < s.points3d.rows; ++i)
-                EXPECT_LE(norm(Vec3d(s.points3d.ptr<double>(i)) - centre), halfDiagonal + 1e-9);
+                EXPECT_LE(cv::norm(Vec3d(s.points3d.ptr<double>(i)) - centre), halfDiagonal + 1e-9);
             for (int i = 0; i < s.lines3d.rows; ++i)
             {
                 const double* L = s.lines3d.ptr<double>(i);
-                EXPECT_LE(norm(Vec3d(L[0], L[1], L[2]) - centre), halfDiagonal + 1e-9);
-                EXPECT_LE(norm(Vec3d(L[3], L[4], L[5]) - centre), halfDiagonal + 1e-9);
+                EXPECT_LE(cv::norm(Vec3d(L[0], L[1], L[2]) - centre), halfDiagonal + 1e-9);
+                EXPECT_LE(cv::norm(Vec3d(L[3], L[4], L[5]) - centre), halfDiagonal + 1e-9);
             }
         }
     }
@@ -346,8 +346,8 @@ TEST(Tripose_SyntheticScene, outliers_have_the_requested_count_and_are_marked)
         const SyntheticScene s = generateSyntheticScene(p);
         p.outlierRatio = 0;
         const SyntheticScene truth = generateSyntheticScene(p);
-        EXPECT_EQ(c.n - countNonZero(s.pointInliers), c.expected) << "ratio " << c.ratio;
-        EXPECT_EQ(c.n - countNonZero(s.lineInliers), c.expected) << "ratio " << c.ratio;
+        EXPECT_EQ(c.n - cv::countNonZero(s.pointInliers), c.expected) << "ratio " << c.ratio;
+        EXPECT_EQ(c.n - cv::countNonZero(s.lineInliers), c.expected) << "ratio " << c.ratio;
 
         // Views 1 and 2 are untouched; view 3 changes exactly where the mask says.
         EXPECT_TRUE(identical(s.points1, truth.points1));
@@ -357,10 +357,10 @@ TEST(Tripose_SyntheticScene, outliers_have_the_requested_count_and_are_marked)
             const Point2d x(s.points3.at<double>(i, 0), s.points3.at<double>(i, 1));
             const Point2d x0(truth.points3.at<double>(i, 0), truth.points3.at<double>(i, 1));
             if (s.pointInliers.at<uchar>(i))
-                EXPECT_EQ(norm(x - x0), 0.0);
+                EXPECT_EQ(cv::norm(x - x0), 0.0);
             else
             {
-                EXPECT_GE(norm(x - x0), 20.0) << "point outlier " << i << " is consistent with the truth";
+                EXPECT_GE(cv::norm(x - x0), 20.0) << "point outlier " << i << " is consistent with the truth";
                 EXPECT_TRUE(x.x >= 0 && x.x <= 639 && x.y >= 0 && x.y <= 479);
             }
             const double* o = s.lines3.ptr<double>(i);
@@ -371,8 +371,8 @@ TEST(Tripose_SyntheticScene, outliers_have_the_requested_count_and_are_marked)
             {
                 // Largest end-point distance to the true image line.
                 const Point2d a(o0[0], o0[1]), b(o0[2], o0[3]), d = b - a;
-                const double da = std::abs(d.cross(Point2d(o[0], o[1]) - a)) / norm(d);
-                const double db = std::abs(d.cross(Point2d(o[2], o[3]) - a)) / norm(d);
+                const double da = std::abs(d.cross(Point2d(o[0], o[1]) - a)) / cv::norm(d);
+                const double db = std::abs(d.cross(Point2d(o[2], o[3]) - a)) / cv::norm(d);
                 EXPECT_GE(std::max(da, db), 20.0) << "line outlier " << i << " is consistent with the truth";
             }
         }
@@ -535,7 +535,7 @@ TEST(Tripose_SyntheticScene, large_scenes_are_generated)
     p.outlierRatio = 0.5;
     const SyntheticScene s = generateSyntheticScene(p);
     EXPECT_EQ(s.points3.rows, 2000);
-    EXPECT_EQ(countNonZero(s.lineInliers), 1000);
+    EXPECT_EQ(cv::countNonZero(s.lineInliers), 1000);
 }
 
 }} // namespace opencv_test::namespace

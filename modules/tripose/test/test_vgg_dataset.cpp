@@ -128,7 +128,7 @@ Reprojection reproject(const VggTriplet& t)
         {
             const Vec3d p = project(Vec3d(t.points3d.ptr<double>(i)));
             const Point2d x(p[0] / p[2], p[1] / p[2]);
-            r.pointErrors[v].push_back(norm(x - Point2d(points[v]->at<double>(i, 0), points[v]->at<double>(i, 1))));
+            r.pointErrors[v].push_back(cv::norm(x - Point2d(points[v]->at<double>(i, 0), points[v]->at<double>(i, 1))));
         }
         for (int i = 0; i < t.lines3d.rows; ++i)
         {
@@ -194,7 +194,7 @@ TEST(Tripose_VggDataset, every_consecutive_triplet_reprojects_with_the_decompose
             ASSERT_EQ(t.cameraMatrices.size(), 3u);
             for (int v = 0; v < 3; ++v)
                 expectIntrinsic(t.cameraMatrices[v], where + format(" K%d", v + 1));
-            EXPECT_GT(norm(toVec3(t.t12)), 0) << where;
+            EXPECT_GT(cv::norm(toVec3(t.t12)), 0) << where;
 
             const Reprojection r = reproject(t);
             EXPECT_GT(r.minDepth, 0) << where << ": structure behind a camera";
@@ -256,8 +256,8 @@ TEST(Tripose_VggDataset, observations_are_the_matched_rows_of_the_feature_files)
             const int a = t.pointIds.at<int>(0), b = t.pointIds.at<int>(t.pointIds.rows - 1);
             const Vec3d A(std::stod(p3d[a][0]), std::stod(p3d[a][1]), std::stod(p3d[a][2]));
             const Vec3d B(std::stod(p3d[b][0]), std::stod(p3d[b][1]), std::stod(p3d[b][2]));
-            const double d = norm(Vec3d(t.points3d.ptr<double>(0)) - Vec3d(t.points3d.ptr<double>(t.points3d.rows - 1)));
-            EXPECT_NEAR(d, norm(A - B), 1e-9 * (1 + norm(A - B))) << s.name;
+            const double d = cv::norm(Vec3d(t.points3d.ptr<double>(0)) - Vec3d(t.points3d.ptr<double>(t.points3d.rows - 1)));
+            EXPECT_NEAR(d, cv::norm(A - B), 1e-9 * (1 + cv::norm(A - B))) << s.name;
         }
         ASSERT_GT(t.pointIds.rows, 0) << s.name;
         const Reprojection r = reproject(t);
@@ -280,7 +280,7 @@ TEST(Tripose_VggDataset, overlapping_triplets_agree)
         const Matx33d R12 = R02 * R01.t();
         const Vec3d t12 = t02 - R12 * t01;
         EXPECT_LT(cv::norm(R12 - toMatx33(b.R12), NORM_INF), 1e-9) << name;
-        EXPECT_LT(norm(t12 - toVec3(b.t12)), 1e-9 * (1 + norm(t12))) << name;
+        EXPECT_LT(cv::norm(t12 - toVec3(b.t12)), 1e-9 * (1 + cv::norm(t12))) << name;
         EXPECT_LT(cv::norm(a.cameraMatrices[1], b.cameraMatrices[0], NORM_INF), 1e-9) << name;
     }
 }
