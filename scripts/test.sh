@@ -3,7 +3,7 @@
 #   C++: the module's tests through ctest (standalone build against the system OpenCV),
 #        the installed package consumed by test/consumer.
 #   Python: pytest over codegen/ and test/.
-#   In-tree: the module built inside OpenCV 4.12, its tests and cv2.tripose (scripts/test_intree.sh).
+#   The OpenCV in-tree build runs separately: bash scripts/test_intree.sh (see the README).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -22,7 +22,3 @@ build/consumer/tripose_consumer
 (cd build && ctest --output-on-failure)
 .venv/bin/python codegen/generate.py --check
 .venv/bin/python -m pytest -q
-
-# The same module inside OpenCV 4.12 (extra module, Python bindings): its C++ tests on OpenCV's ts
-# and the cv2.tripose Python test. The OpenCV build is cached in ~/.cache/tripose.
-bash scripts/test_intree.sh 4
