@@ -17,7 +17,7 @@
 #include <fstream>
 #include <string>
 
-#include "opencv2/calib3d.hpp"
+#include "opencv_compat.hpp"
 #include "opencv2/core/utils/filesystem.hpp"
 
 namespace cv {
@@ -42,7 +42,7 @@ enum class Columns
     AT_LEAST    //!< extra columns are ignored (Model House .lines carry two more)
 };
 
-[[noreturn]] void fileError(int code, const std::string& path, const std::string& what)
+[[noreturn]] void fileError(cv::Error::Code code, const std::string& path, const std::string& what)
 {
     CV_Error(code, format("loadVggTriplet: %s: %s", path.c_str(), what.c_str()));
 }

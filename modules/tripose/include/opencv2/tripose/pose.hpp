@@ -7,6 +7,12 @@
 
 #include "opencv2/core.hpp"
 
+// OpenCV 4.8+ marks array arguments that Python passes whole (one 3x3 K, not three rows);
+// older OpenCV (Debian's 4.6) lacks the marker.
+#ifndef CV_ND
+#define CV_ND
+#endif
+
 namespace cv {
 namespace tripose {
 
@@ -68,7 +74,7 @@ not a rotation, \f$t_{12}\f$ is zero or an intrinsic matrix is not usable.
 CV_EXPORTS_W int estimatePoseLinePoint(
     InputArray points1, InputArray points2, InputArray points3,
     InputArray lines1, InputArray lines2, InputArray lines3,
-    InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,

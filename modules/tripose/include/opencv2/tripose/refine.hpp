@@ -7,6 +7,12 @@
 
 #include "opencv2/core.hpp"
 
+// OpenCV 4.8+ marks array arguments that Python passes whole (one 3x3 K, not three rows);
+// older OpenCV (Debian's 4.6) lacks the marker.
+#ifndef CV_ND
+#define CV_ND
+#endif
+
 namespace cv {
 namespace tripose {
 
@@ -84,7 +90,7 @@ or when a field of @p params is out of range.
 CV_EXPORTS_W double refinePoseLinePoint(
     InputArray points1, InputArray points2, InputArray points3,
     InputArray lines1, InputArray lines2, InputArray lines3,
-    InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
     InputArray R12, InputArray t12,
     InputOutputArray R, InputOutputArray t,
     const RefineParams& params = RefineParams(),

@@ -7,6 +7,12 @@
 
 #include "opencv2/core.hpp"
 
+// OpenCV 4.8+ marks array arguments that Python passes whole (one 3x3 K, not three rows);
+// older OpenCV (Debian's 4.6) lacks the marker.
+#ifndef CV_ND
+#define CV_ND
+#endif
+
 namespace cv {
 namespace tripose {
 
@@ -47,7 +53,7 @@ Arguments as in estimatePoseLinePoint().
 CV_EXPORTS_W int estimatePoseLinePointRansac(
     InputArray points1, InputArray points2, InputArray points3,
     InputArray lines1, InputArray lines2, InputArray lines3,
-    InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
