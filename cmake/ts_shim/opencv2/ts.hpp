@@ -58,6 +58,24 @@ using testing::Values;
 using testing::ValuesIn;
 using testing::Combine;
 using testing::TestWithParam;
+
+// opencv_ts shadows these cv:: functions inside opencv_test with its own reference versions, so an
+// unqualified call does not compile there. Shadow them here too, with a type that names the fix,
+// so that the standalone build rejects what the OpenCV build rejects.
+#define TRIPOSE_TS_SHIM_QUALIFY(name) \
+    struct write_cv_ ## name ## _with_its_namespace {}; \
+    using name = write_cv_ ## name ## _with_its_namespace;
+TRIPOSE_TS_SHIM_QUALIFY(norm)
+TRIPOSE_TS_SHIM_QUALIFY(add)
+TRIPOSE_TS_SHIM_QUALIFY(multiply)
+TRIPOSE_TS_SHIM_QUALIFY(divide)
+TRIPOSE_TS_SHIM_QUALIFY(transpose)
+TRIPOSE_TS_SHIM_QUALIFY(copyMakeBorder)
+TRIPOSE_TS_SHIM_QUALIFY(filter2D)
+TRIPOSE_TS_SHIM_QUALIFY(compare)
+TRIPOSE_TS_SHIM_QUALIFY(minMaxIdx)
+TRIPOSE_TS_SHIM_QUALIFY(threshold)
+#undef TRIPOSE_TS_SHIM_QUALIFY
 } // namespace opencv_test
 
 // Same spelling as opencv_ts; the argument (resource prefix) has no meaning here.
