@@ -15,17 +15,13 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "pose_errors.hpp"
+
 namespace {
 
 const char* kUsage =
     "usage: tripose_demo_vgg --data <VGG sequence folder> [--views i j k] [--image <image of view k>] "
     "[--output overlay.png]\n";
-
-double rotationErrorDegrees(const cv::Mat& A, const cv::Mat& B)
-{
-    const double d = cv::norm(A, B, cv::NORM_L2) / (2.0 * std::sqrt(2.0));
-    return 2.0 * std::asin(std::min(1.0, d)) * 180.0 / CV_PI;
-}
 
 //! Projects world segments (Mx6) with K[R|t]; draws those in front of the camera.
 void drawSegments(cv::Mat& image, const cv::Mat& segments, const cv::Mat& K, const cv::Mat& R, const cv::Mat& t,
@@ -104,13 +100,13 @@ int main(int argc, char** argv)
         return 2;
     }
 
-    const double translationError = cv::norm(t, triplet.t, cv::NORM_L2) / cv::norm(triplet.t, cv::NORM_L2);
+    const double translationError = tripose_samples::relativeTranslationError(t, triplet.t);
     const double directionError =
         std::acos(std::max(-1.0, std::min(1.0, t.dot(triplet.t) / (cv::norm(t) * cv::norm(triplet.t))))) * 180.0 / CV_PI;
     std::cout << cv::format("Solved in %.3f ms (%d candidate(s))\n", ms, n)
               << "Estimated R =\n" << R << "\nGround truth R =\n" << triplet.R << "\n"
               << "Estimated t = " << t.t() << "\nGround truth t = " << triplet.t.t() << "\n"
-              << cv::format("Rotation error: %.4f deg\n", rotationErrorDegrees(R, triplet.R))
+              << cv::format("Rotation error: %.4f deg\n", tripose_samples::rotationErrorDegrees(R, triplet.R))
               << cv::format("Translation error: %.2f %% of |t| (direction %.4f deg)\n", 100 * translationError,
                             directionError);
 

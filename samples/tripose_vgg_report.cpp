@@ -15,12 +15,9 @@
 
 #include <opencv2/tripose.hpp>
 
-namespace {
+#include "pose_errors.hpp"
 
-double rotationErrorDeg(const cv::Mat& A, const cv::Mat& B)
-{
-    return 2.0 * std::asin(std::min(1.0, cv::norm(A, B) / (2.0 * std::sqrt(2.0)))) * 180.0 / CV_PI;
-}
+namespace {
 
 std::string baseName(const std::string& path)
 {
@@ -74,14 +71,14 @@ int main(int argc, char** argv)
                 cv::Mat R, t;
                 if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                        s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) > 0)
-                    linear = cv::format("%.3f | %.2f", rotationErrorDeg(R, s.R), 100 * cv::norm(t, s.t) / cv::norm(s.t));
+                    linear = cv::format("%.3f | %.2f", tripose_samples::rotationErrorDegrees(R, s.R), 100 * tripose_samples::relativeTranslationError(t, s.t));
                 cv::Mat pm, lm;
                 const int inliers = cv::tripose::estimatePoseLinePointRansac(
                     s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, cv::noArray(),
                     s.R12, s.t12, R, t, params, pm, lm);
                 if (inliers > 0)
-                    robust = cv::format("%.3f | %.2f | %d/%d", rotationErrorDeg(R, s.R),
-                                        100 * cv::norm(t, s.t) / cv::norm(s.t), inliers, features);
+                    robust = cv::format("%.3f | %.2f | %d/%d", tripose_samples::rotationErrorDegrees(R, s.R),
+                                        100 * tripose_samples::relativeTranslationError(t, s.t), inliers, features);
             }
             std::printf("| %s | %d-%d-%d | %d | %d | %s | %s |\n", baseName(folder).c_str(), v, v + 1, v + 2,
                         s.points1.rows, s.lines1.rows, linear.c_str(), robust.c_str());

@@ -12,6 +12,22 @@
 
 namespace opencv_test {
 
+//! A 3x3 CV_64F Mat as a Matx33d (checks the type and size).
+inline Matx33d toMatx33(const Mat& m)
+{
+    EXPECT_EQ(m.type(), CV_64F);
+    EXPECT_EQ(m.size(), Size(3, 3));
+    return Matx33d(m.ptr<double>());
+}
+
+//! A 3-element CV_64F Mat as a Vec3d (checks the type and size).
+inline Vec3d toVec3(const Mat& m)
+{
+    EXPECT_EQ(m.type(), CV_64F);
+    EXPECT_EQ(m.total(), 3u);
+    return Vec3d(m.ptr<double>());
+}
+
 //! Rotation angle (rad) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
 inline double rotationError(const Mat& A, const Mat& B)
 {

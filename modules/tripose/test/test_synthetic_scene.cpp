@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 namespace opencv_test {
 namespace {
@@ -10,20 +11,6 @@ namespace {
 using tripose::SyntheticScene;
 using tripose::SyntheticSceneParams;
 using tripose::generateSyntheticScene;
-
-Matx33d toMatx33(const Mat& m)
-{
-    EXPECT_EQ(m.type(), CV_64F);
-    EXPECT_EQ(m.size(), Size(3, 3));
-    return Matx33d(m.ptr<double>());
-}
-
-Vec3d toVec3(const Mat& m)
-{
-    EXPECT_EQ(m.type(), CV_64F);
-    EXPECT_EQ(m.total(), 3u);
-    return Vec3d(m.ptr<double>());
-}
 
 //! The three poses of a scene: view 1 = [I|0].
 void scenePoses(const SyntheticScene& s, Matx33d R[3], Vec3d t[3])

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 #include <cstdio>
 #include <functional>
@@ -78,20 +79,6 @@ int countSeenInAll(const std::vector<std::vector<std::string>>& nview, const int
     for (const auto& row : nview)
         count += row.at(views[0]) != "*" && row.at(views[1]) != "*" && row.at(views[2]) != "*";
     return count;
-}
-
-Matx33d toMatx33(const Mat& m)
-{
-    EXPECT_EQ(m.type(), CV_64F);
-    EXPECT_EQ(m.size(), Size(3, 3));
-    return Matx33d(m.ptr<double>());
-}
-
-Vec3d toVec3(const Mat& m)
-{
-    EXPECT_EQ(m.type(), CV_64F);
-    EXPECT_EQ(m.total(), 3u);
-    return Vec3d(m.ptr<double>());
 }
 
 double median(std::vector<double> v)
