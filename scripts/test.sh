@@ -3,7 +3,8 @@
 #   C++: the module's tests through ctest (standalone build against the system OpenCV),
 #        the installed package consumed by test/consumer.
 #   Python: pytest over codegen/ and test/.
-#   The OpenCV in-tree build runs separately: bash scripts/test_intree.sh (see the README).
+#   OpenCV extra-module build: tripose inside OpenCV 4.12, its C++ tests on OpenCV's ts and the
+#        cv2.tripose Python tests (scripts/test_intree.sh; OpenCV 5.0: scripts/test_intree.sh 5).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -22,3 +23,5 @@ build/consumer/tripose_consumer
 (cd build && ctest --output-on-failure)
 .venv/bin/python codegen/generate.py --check
 .venv/bin/python -m pytest -q
+
+bash scripts/test_intree.sh 4
