@@ -23,7 +23,20 @@ Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M)
     return U * V.transpose();
 }
 
-bool poseFromSolutionVector(const Vector12d& v, const Matrix12d& normalMatrix, CameraPose& pose)
+bool reduceNormalMatrix(const Matrix12d& normalMatrix, ReducedNormalSystem& system)
+{
+    Eigen::LDLT<Eigen::Matrix3d> ldlt(normalMatrix.block<3, 3>(9, 9));
+    const Eigen::Vector3d d = ldlt.vectorD();
+    if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(d.maxCoeff(), 1e-300)))
+        return false;
+    system.T = -ldlt.solve(normalMatrix.block<3, 9>(9, 0));
+    system.S = normalMatrix.topLeftCorner<9, 9>() + normalMatrix.block<9, 3>(0, 9).lazyProduct(system.T);
+    // Rounding leaves S slightly asymmetric; the eigen-solver reads one triangle, the polish both.
+    system.S = (0.5 * (system.S + system.S.transpose())).eval();
+    return system.S.allFinite() && system.T.allFinite();
+}
+
+bool poseFromSolutionVector(const Vector12d& v, const ReducedNormalSystem& system, CameraPose& pose)
 {
     // v stacks the columns of R: column-major storage is exactly R.
     const Eigen::Map<const Eigen::Matrix3d> Rraw(v.data());
@@ -33,24 +46,16 @@ bool poseFromSolutionVector(const Vector12d& v, const Matrix12d& normalMatrix, C
     if (!std::isfinite(det) || !(std::abs(det) > 1e-9 * std::pow(scaleNorm / 3.0, 1.5)))
         return false;
     pose.R = nearestRotation(Rraw / std::cbrt(det));
-
-    const Eigen::Matrix3d Att = normalMatrix.block<3, 3>(9, 9);
-    const Eigen::Matrix<double, 3, 9> Atr = normalMatrix.block<3, 9>(9, 0);
-    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> r(pose.R.data());
-    Eigen::LDLT<Eigen::Matrix3d> ldlt(Att);
-    const Eigen::Vector3d d = ldlt.vectorD();
-    if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(d.maxCoeff(), 1e-300)))
-        return false;
-    pose.t = -ldlt.solve(Atr * r);
+    pose.t = system.T * Eigen::Map<const Vector9d>(pose.R.data());
     return pose.t.allFinite() && pose.R.allFinite();
 }
 
 namespace {
 
-double algebraicError(const Matrix12d& M, const CameraPose& pose, Vector12d& v)
+double reducedError(const Matrix9d& S, const Eigen::Matrix3d& R)
 {
-    v << Eigen::Map<const Eigen::Matrix<double, 9, 1>>(pose.R.data()), pose.t;
-    return v.dot(M * v);
+    const Eigen::Map<const Vector9d> r(R.data());
+    return r.dot(S * r);
 }
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& a)
@@ -62,39 +67,35 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& a)
 
 } // namespace
 
-void polishPoseAlgebraic(const Matrix12d& normalMatrix, CameraPose& pose)
+void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
 {
-    Vector12d v;
-    double error = algebraicError(normalMatrix, pose, v);
+    const Matrix9d& S = system.S;
+    double error = reducedError(S, pose.R);
     for (int iteration = 0; iteration < 5 && error > 0; ++iteration)
     {
-        // d r_j / d w = -[r_j]x for the columns r_j of R; d t / d t = I.
-        Eigen::Matrix<double, 12, 6> D = Eigen::Matrix<double, 12, 6>::Zero();
+        // d r_j / d w = -[r_j]x for the columns r_j of R.
+        Eigen::Matrix<double, 9, 3> D;
         for (int j = 0; j < 3; ++j)
             D.block<3, 3>(3 * j, 0) = -skew(pose.R.col(j));
-        D.block<3, 3>(9, 3).setIdentity();
         // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
-        const Eigen::Matrix<double, 6, 12> DtM = D.transpose().lazyProduct(normalMatrix);
-        const Eigen::Matrix<double, 6, 6> H = DtM.lazyProduct(D);
-        const Eigen::Matrix<double, 6, 1> step = H.ldlt().solve(-(DtM * v));
+        const Eigen::Matrix<double, 9, 3> SD = S.lazyProduct(D);
+        const Eigen::Matrix3d H = D.transpose().lazyProduct(SD);
+        const Eigen::Vector3d step = H.ldlt().solve(-(SD.transpose() * Eigen::Map<const Vector9d>(pose.R.data())));
         if (!step.allFinite())
-            return;
-        CameraPose next;
-        const double angle = step.head<3>().norm();
-        next.R = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, step.head<3>() / angle) * pose.R) : pose.R;
-        next.t = pose.t + step.tail<3>();
-        Vector12d vNext;
-        const double nextError = algebraicError(normalMatrix, next, vNext);
+            break;
+        const double angle = step.norm();
+        const Eigen::Matrix3d next = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, step / angle) * pose.R) : pose.R;
+        const double nextError = reducedError(S, next);
         if (!(nextError < error))
-            return;
-        pose = next;
-        v = vNext;
+            break;
+        pose.R = next;
         // Converged once a step gains nothing measurable.
         const bool converged = error - nextError <= 1e-12 * error;
         error = nextError;
         if (converged)
-            return;
+            break;
     }
+    pose.t = system.T * Eigen::Map<const Vector9d>(pose.R.data());
 }
 
 } // namespace detail
