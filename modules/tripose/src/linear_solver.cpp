@@ -20,6 +20,11 @@ namespace {
 
 typedef Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> KernelBasis;
 
+// Polished candidates closer than this (Frobenius norm of the rotation difference, about
+// sqrt(2) times the angle; translation in units of |t12|) are the same minimum of the algebraic
+// error: the polish stops at rounding, about 1e-9 from the minimum.
+constexpr double kDuplicateTolerance = 1e-7;
+
 //! R' = (2 d d^T - I) R with d the unit baseline direction (a rotation by pi about d), and its
 //! least-squares translation.
 bool twistedPair(const CameraPose& pose, const ReducedNormalSystem& system, CameraPose& twisted)
@@ -65,6 +70,16 @@ bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBa
     E.bottomRows(N).setIdentity();
     kernel = qr.householderQ() * E;
     return kernel.allFinite();
+}
+
+//! True when @p pose (t in units of |t12|) equals, to polishing accuracy, one of poses[first..].
+bool isDuplicate(const CameraPose& pose, const std::vector<CameraPose>& poses, size_t first, double translationScale)
+{
+    for (size_t i = first; i < poses.size(); ++i)
+        if ((poses[i].R - pose.R).norm() < kDuplicateTolerance &&
+            (poses[i].t / translationScale - pose.t).norm() < kDuplicateTolerance * (1.0 + pose.t.norm()))
+            return true;
+    return false;
 }
 
 } // namespace
@@ -120,6 +135,7 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         solveKernelCombinations(kernel, solutions);
     }
 
+    const size_t first = poses.size();
     int added = 0;
     for (const Vector12d& v : solutions)
     {
@@ -130,8 +146,12 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         CameraPose twisted;
         // The twisted pair (R rotated by pi about the baseline direction t) fits the rows almost
         // as well when the constraints are weak (small motion, few features, noise); only
-        // cheirality tells them apart, so both go to the selection.
-        const bool addTwisted = twistedPairs && twistedPair(pose, system, twisted);
+        // cheirality tells them apart, so both go to the selection. Several kernel combinations
+        // often polish into the same minimum (N = 1 and N = 2 with noise, several roots for
+        // N = 4): such a duplicate still goes to the selection (the closest to the exact pose
+        // wins there), but its twisted pair would repeat one already polished.
+        const bool addTwisted = twistedPairs && !isDuplicate(pose, poses, first, translationScale) &&
+                                twistedPair(pose, system, twisted);
         pose.t *= translationScale;
         poses.push_back(pose);
         ++added;
