@@ -87,7 +87,7 @@ void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
 {
     const Matrix9d& S = system.S;
     Vector9d r = Eigen::Map<const Vector9d>(pose.R.data());
-    Vector9d Sr = S * r; // kept from the error evaluation for the next gradient
+    Vector9d Sr = S.lazyProduct(r); // kept from the error evaluation for the next gradient
     double error = r.dot(Sr);
     for (int iteration = 0; iteration < 5 && error > 0; ++iteration)
     {
@@ -95,9 +95,9 @@ void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
         Eigen::Matrix<double, 9, 3> D;
         for (int j = 0; j < 3; ++j)
             D.block<3, 3>(3 * j, 0) = -skew(pose.R.col(j));
-        Eigen::Matrix<double, 9, 3> SD;
-        SD.noalias() = S * D;
-        const Eigen::Matrix3d H = D.transpose() * SD;
+        // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
+        const Eigen::Matrix<double, 9, 3> SD = S.lazyProduct(D);
+        const Eigen::Matrix3d H = D.transpose().lazyProduct(SD);
         // H is 3x3 symmetric positive (semi-)definite: the closed-form inverse is the cheapest solve;
         // a singular H gives a non-finite step, which ends the polish.
         const Eigen::Vector3d step = -(H.inverse() * (D.transpose() * Sr));
@@ -106,7 +106,7 @@ void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
         const double angle = step.norm();
         const Eigen::Matrix3d next = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, step / angle) * pose.R) : pose.R;
         const Vector9d rNext = Eigen::Map<const Vector9d>(next.data());
-        const Vector9d SrNext = S * rNext;
+        const Vector9d SrNext = S.lazyProduct(rNext);
         const double nextError = rNext.dot(SrNext);
         if (!(nextError < error))
             break;
