@@ -74,6 +74,9 @@ bool poseFromSolutionVector(const Vector12d& v, const ReducedNormalSystem& syste
 
 namespace {
 
+//! Below this step (rad) the polish keeps its Gauss-Newton matrix (see polishPoseAlgebraic()).
+constexpr double kChordStepAngle = 1e-2;
+
 Eigen::Matrix3d skew(const Eigen::Vector3d& a)
 {
     Eigen::Matrix3d S;
@@ -89,18 +92,27 @@ void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
     Vector9d r = Eigen::Map<const Vector9d>(pose.R.data());
     Vector9d Sr = S.lazyProduct(r); // kept from the error evaluation for the next gradient
     double error = r.dot(Sr);
+    Eigen::Matrix3d Hinv = Eigen::Matrix3d::Zero(); // set in the first iteration
+    double lastAngle = HUGE_VAL;
     for (int iteration = 0; iteration < 5 && error > 0; ++iteration)
     {
         // d r_j / d w = -[r_j]x for the columns r_j of R.
         Eigen::Matrix<double, 9, 3> D;
         for (int j = 0; j < 3; ++j)
             D.block<3, 3>(3 * j, 0) = -skew(pose.R.col(j));
-        // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
-        const Eigen::Matrix<double, 9, 3> SD = S.lazyProduct(D);
-        const Eigen::Matrix3d H = D.transpose().lazyProduct(SD);
-        // H is 3x3 symmetric positive (semi-)definite: the closed-form inverse is the cheapest solve;
-        // a singular H gives a non-finite step, which ends the polish.
-        const Eigen::Vector3d step = -(H.inverse() * (D.transpose() * Sr));
+        // The Gauss-Newton matrix D^T S D changes with R by about the last step: once the steps
+        // are small (near the minimum) the previous one serves (a chord step), which saves its
+        // 9x9x3 product; convergence stays superlinear as the steps shrink.
+        const bool fresh = lastAngle > kChordStepAngle;
+        if (fresh)
+        {
+            // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
+            const Eigen::Matrix3d H = D.transpose().lazyProduct(S.lazyProduct(D));
+            // 3x3 symmetric positive (semi-)definite: the closed-form inverse is the cheapest
+            // solve; a singular H gives a non-finite step, which ends the polish.
+            Hinv = H.inverse();
+        }
+        const Eigen::Vector3d step = -(Hinv * (D.transpose() * Sr));
         if (!step.allFinite())
             break;
         const double angle = step.norm();
@@ -109,8 +121,14 @@ void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
         const Vector9d SrNext = S.lazyProduct(rNext);
         const double nextError = rNext.dot(SrNext);
         if (!(nextError < error))
-            break;
+        {
+            if (fresh)
+                break;
+            lastAngle = HUGE_VAL; // a stale matrix may be the cause: retry with a fresh one
+            continue;
+        }
         pose.R = next;
+        lastAngle = angle;
         r = rNext;
         Sr = SrNext;
         // Converged once a step gains nothing measurable.
