@@ -11,6 +11,7 @@
 #include "linear_solver.hpp"
 #include "linear_system.hpp"
 #include "pose_recovery.hpp"
+#include "smallest_eigenvectors.hpp"
 
 namespace cv {
 namespace tripose {
@@ -117,11 +118,11 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         // try N = 2: with noise and few redundant constraints the two smallest singular values can
         // be close, and the orthonormality constraints then pick the rotation better than the
         // last singular vector alone; selection decides.
-        Eigen::SelfAdjointEigenSolver<Matrix9d> eigen(system.S);
-        if (eigen.info() != Eigen::Success)
+        Eigen::Matrix<double, 9, 2> smallest;
+        if (!smallestEigenvectors(system.S, smallest))
             return 0;
         Eigen::Matrix<double, 12, 2> basis;
-        basis.topRows<9>() = eigen.eigenvectors().leftCols<2>();
+        basis.topRows<9>() = smallest;
         basis.bottomRows<3>() = system.T * basis.topRows<9>();
         solveKernelCombinations(basis.leftCols<1>(), solutions);
         solveKernelCombinations(basis, solutions);
