@@ -101,19 +101,38 @@ int readLines(InputArray arr, const char* name, std::vector<double>& values, int
     return width;
 }
 
-std::vector<Mat> readPerView(InputArrayOfArrays arr, const char* name)
+//! The arrays of a per-view argument: none, one shared by the three views, or three. Element
+//! headers are taken one by one (getMat(i)): a vector of headers would cost an allocation per call.
+struct PerViewArrays
 {
-    std::vector<Mat> mats;
+    Mat mats[3];
+    int count = 0;
+
+    const Mat& forView(int v) const { return mats[count == 1 ? 0 : v]; }
+    bool shared() const { return count == 1; }
+};
+
+PerViewArrays readPerView(InputArrayOfArrays arr, const char* name)
+{
+    PerViewArrays out;
     if (arr.empty())
-        return mats;
+        return out;
     if (arr.isMatVector() || arr.isUMatVector() || arr.kind() == _InputArray::STD_VECTOR_VECTOR)
-        arr.getMatVector(mats);
+    {
+        const int n = (int)arr.total();
+        if (n != 1 && n != 3)
+            CV_Error_(Error::StsBadArg, ("%s must be one array shared by the three views or a vector of three (got %d)",
+                                         name, n));
+        for (int i = 0; i < n; ++i)
+            out.mats[i] = arr.getMat(i);
+        out.count = n;
+    }
     else
-        mats.push_back(arr.getMat());
-    if (mats.size() != 1 && mats.size() != 3)
-        CV_Error_(Error::StsBadArg, ("%s must be one array shared by the three views or a vector of three (got %d)",
-                                     name, (int)mats.size()));
-    return mats;
+    {
+        out.mats[0] = arr.getMat();
+        out.count = 1;
+    }
+    return out;
 }
 
 Eigen::Matrix3d readCameraMatrix(const Mat& m, bool shared, int view)
@@ -294,10 +313,10 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
         CV_Error_(Error::StsBadArg, ("at least %d features (points + lines) are required, got %d points and %d lines",
                                      minFeatures, numPoints, lineCount[0]));
 
-    const std::vector<Mat> Ks = readPerView(cameraMatrix, "cameraMatrix");
-    if (Ks.empty())
+    const PerViewArrays Ks = readPerView(cameraMatrix, "cameraMatrix");
+    if (Ks.count == 0)
         CV_Error(Error::StsBadArg, "cameraMatrix must be one 3x3 matrix or a vector of three");
-    const std::vector<Mat> Ds = readPerView(distCoeffs, "distCoeffs");
+    const PerViewArrays Ds = readPerView(distCoeffs, "distCoeffs");
 
     data.view2.R = readRotation(R12, "R12");
     data.view2.t = readTranslation(t12, "t12");
@@ -307,12 +326,12 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
     static const char* lineNames[3] = { "lines1", "lines2", "lines3" };
     for (int v = 0; v < 3; ++v)
     {
-        const Eigen::Matrix3d K = readCameraMatrix(Ks[Ks.size() == 1 ? 0 : v], Ks.size() == 1, v);
-        const Mat dist = Ds.empty() ? Mat() : readDistortion(Ds[Ds.size() == 1 ? 0 : v], Ds.size() == 1, v);
+        const Eigen::Matrix3d K = readCameraMatrix(Ks.forView(v), Ks.shared(), v);
+        const Mat dist = Ds.count == 0 ? Mat() : readDistortion(Ds.forView(v), Ds.shared(), v);
         if (!dist.empty() && lineCount[v] > 0 && lineWidth[v] == 3)
             CV_Error_(Error::StsBadArg, ("%s are homogeneous lines (Mx3), which cannot be undistorted: "
                                          "pass segments (Mx4) or empty %s", lineNames[v],
-                                         viewArgumentName("distCoeffs", Ds.size() == 1, v).c_str()));
+                                         viewArgumentName("distCoeffs", Ds.shared(), v).c_str()));
         ViewObservations& view = pixels[v];
         view.K = K;
         undistortPixels(view.points, K, dist);
