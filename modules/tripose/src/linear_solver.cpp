@@ -103,7 +103,10 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
 
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
-    const Matrix12d normalMatrix = A.transpose().lazyProduct(A); // small: coefficient-wise beats blocked GEMM
+    // A^T A from one triangle (symmetric rank update), mirrored.
+    Matrix12d normalMatrix = Matrix12d::Zero();
+    normalMatrix.selfadjointView<Eigen::Upper>().rankUpdate(A.transpose());
+    normalMatrix.triangularView<Eigen::StrictlyLower>() = normalMatrix.transpose();
     ReducedNormalSystem system;
     if (!reduceNormalMatrix(normalMatrix, system))
         return 0;
