@@ -98,8 +98,6 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : data.numLines());
     const double translationScale = data.view2.t.norm();
     const ConstraintMatrix A = buildConstraintMatrix(data, translationScale, pointIndices, lineIndices);
-    if (!A.allFinite())
-        return 0;
 
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
@@ -107,6 +105,9 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     Matrix12d normalMatrix = Matrix12d::Zero();
     normalMatrix.selfadjointView<Eigen::Upper>().rankUpdate(A.transpose());
     normalMatrix.triangularView<Eigen::StrictlyLower>() = normalMatrix.transpose();
+    // A non-finite entry of A makes its diagonal entry of A^T A non-finite: one check for both.
+    if (!normalMatrix.allFinite())
+        return 0;
     ReducedNormalSystem system;
     if (!reduceNormalMatrix(normalMatrix, system))
         return 0;

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include "opencv_compat.hpp"
 
+#include "pose_recovery.hpp"
 #include "triplet_input.hpp"
 
 namespace cv {
@@ -73,11 +74,15 @@ void readPoints(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& 
         copyFiniteOrThrow(m, out[0].data(), name); // Eigen::Vector2d is two packed doubles
 }
 
-//! Mx4 segments or Mx3 homogeneous lines, row-major in @p values; returns the width (4 or 3) and
-//! sets @p count. An empty array means no lines (width 4).
-int readLines(InputArray arr, const char* name, std::vector<double>& values, int& count)
+/** Mx4 segments (into @p ends, two points per segment: the layout is the same, x0 y0 x1 y1) or
+Mx3 homogeneous lines (row-major into @p homogeneous); returns the width (4 or 3) and sets
+@p count. An empty array means no lines (width 4).
+*/
+int readLines(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& ends, std::vector<double>& homogeneous,
+              int& count)
 {
-    values.clear();
+    ends.clear();
+    homogeneous.clear();
     count = 0;
     if (arr.empty())
         return 4;
@@ -95,9 +100,18 @@ int readLines(InputArray arr, const char* name, std::vector<double>& values, int
                                      "(got %dx%d, %d channel(s), depth %d)",
                                      name, m.rows, m.cols, m.channels(), m.depth()));
     count = n;
-    values.resize((size_t)n * width);
-    if (n > 0)
-        copyFiniteOrThrow(m, values.data(), name);
+    if (n == 0)
+        return width;
+    if (width == 4)
+    {
+        ends.resize(2 * (size_t)n);
+        copyFiniteOrThrow(m, ends[0].data(), name);
+    }
+    else
+    {
+        homogeneous.resize(3 * (size_t)n);
+        copyFiniteOrThrow(m, homogeneous.data(), name);
+    }
     return width;
 }
 
@@ -214,16 +228,16 @@ Eigen::Vector3d normalizedLine(const Eigen::Vector3d& l)
     return l / l.head<2>().norm();
 }
 
-//! Calibrated lines of one view, plus two undistorted pixel points on each line.
-void convertLines(const std::vector<double>& lines, int width, int count, const Eigen::Matrix3d& K, const Mat& dist,
-                  const char* name, std::vector<Eigen::Vector3d>& calibrated, std::vector<Eigen::Vector2d>& pixelEnds)
+//! Calibrated lines of one view; @p pixelEnds holds the segments' end points (width 4, undistorted
+//! here) or receives two points on each homogeneous line (width 3).
+void convertLines(const std::vector<double>& homogeneous, int width, int count, const Eigen::Matrix3d& K,
+                  const Mat& dist, const char* name, std::vector<Eigen::Vector3d>& calibrated,
+                  std::vector<Eigen::Vector2d>& pixelEnds)
 {
     calibrated.resize(count);
     pixelEnds.resize(2 * count);
     if (width == 4)
     {
-        if (count > 0)
-            std::copy(lines.begin(), lines.end(), pixelEnds[0].data());
         undistortPixels(pixelEnds, K, dist);
         for (int i = 0; i < count; ++i)
         {
@@ -238,7 +252,7 @@ void convertLines(const std::vector<double>& lines, int width, int count, const 
     const Eigen::Vector2d principal(K(0, 2), K(1, 2));
     for (int i = 0; i < count; ++i)
     {
-        const Eigen::Vector3d l(lines[3 * i], lines[3 * i + 1], lines[3 * i + 2]);
+        const Eigen::Vector3d l(homogeneous[3 * i], homogeneous[3 * i + 1], homogeneous[3 * i + 2]);
         const double n = l.head<2>().norm();
         if (!(n > 0))
             CV_Error_(Error::StsBadArg, ("%s: line %d has a = b = 0, which is not a line", name, i));
@@ -274,10 +288,8 @@ Eigen::Matrix3d readRotation(InputArray arr, const char* name)
     const double orthogonality = (E.transpose() * E - Eigen::Matrix3d::Identity()).norm();
     if (!(orthogonality < tolerance) || E.determinant() < 0)
         CV_Error_(Error::StsBadArg, ("%s is not a rotation: |R^T R - I| = %g, det = %g", name, orthogonality, E.determinant()));
-    // Remove rounding so that later algebra sees an exact rotation.
-    const Eigen::Matrix3d M = E;
-    Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    return svd.matrixU() * svd.matrixV().transpose();
+    // Remove rounding so that later algebra sees an exact rotation (det > 0 was checked).
+    return nearestRotation(E);
 }
 
 TripletData readTripletInput(InputArray points1, InputArray points2, InputArray points3,
@@ -290,11 +302,11 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
     readPoints(points1, "points1", pixels[0].points);
     readPoints(points2, "points2", pixels[1].points);
     readPoints(points3, "points3", pixels[2].points);
-    std::vector<double> L[3];
+    std::vector<double> L[3]; // homogeneous lines only; segments go straight to the line ends
     int lineCount[3];
-    const int lineWidth[3] = { readLines(lines1, "lines1", L[0], lineCount[0]),
-                               readLines(lines2, "lines2", L[1], lineCount[1]),
-                               readLines(lines3, "lines3", L[2], lineCount[2]) };
+    const int lineWidth[3] = { readLines(lines1, "lines1", pixels[0].lineEnds, L[0], lineCount[0]),
+                               readLines(lines2, "lines2", pixels[1].lineEnds, L[1], lineCount[1]),
+                               readLines(lines3, "lines3", pixels[2].lineEnds, L[2], lineCount[2]) };
     const int numPoints = (int)pixels[0].points.size();
     for (int v = 1; v < 3; ++v)
     {
