@@ -7,7 +7,8 @@
 // cv::solvePnP in view 3" (SQPnP and EPnP) on the same scenes, in the same process, one thread;
 // each peer's time is also printed as a ratio to the linear solver's, and the median rotation and
 // translation errors of every method are printed so that speed is read together with accuracy.
-// PoseLib (a Python package here) is compared by test/evaluation/run_evaluation.py.
+// PoseLib (a Python package here) is compared by test/evaluation/run_evaluation.py; the robust
+// estimator is compared by tripose_ransac_benchmark.
 //
 //   tripose_benchmark [--scenes 200] [--repeats 20] [--noise 1.0] [--motion large|small]
 
@@ -22,23 +23,13 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "benchmark_common.hpp"
+
 namespace {
 
-double median(std::vector<double> v)
-{
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
-double rotationErrorDeg(const cv::Mat& A, const cv::Mat& B)
-{
-    return 2.0 * std::asin(std::min(1.0, cv::norm(A, B) / (2.0 * std::sqrt(2.0)))) * 180.0 / CV_PI;
-}
-
-double translationError(const cv::Mat& a, const cv::Mat& b)
-{
-    return cv::norm(a, b) / cv::norm(b);
-}
+using tripose_benchmark::median;
+using tripose_benchmark::rotationErrorDeg;
+using tripose_benchmark::translationError;
 
 //! Triangulates the points from views 1-2 and solves PnP in view 3 (the baseline a user would write).
 bool triangulateThenPnP(const cv::tripose::SyntheticScene& s, int flags, cv::Mat& R, cv::Mat& t)

@@ -37,8 +37,7 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
     }
     else
     {
-        detail::toMat(ranked[0].pose.R).copyTo(R);
-        detail::toMat(ranked[0].pose.t).copyTo(t);
+        detail::writePose(ranked[0].pose.R, ranked[0].pose.t, R, t);
     }
     if (Rs.needed())
     {

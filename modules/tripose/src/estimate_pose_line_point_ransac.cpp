@@ -54,8 +54,7 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
         writeMask(std::vector<unsigned char>(data.numLines(), 0), inliersLines);
         return 0;
     }
-    detail::toMat(estimate.pose.R).copyTo(R);
-    detail::toMat(estimate.pose.t).copyTo(t);
+    detail::writePose(estimate.pose.R, estimate.pose.t, R, t);
     writeMask(estimate.pointInliers, inliersPoints);
     writeMask(estimate.lineInliers, inliersLines);
     return estimate.numInliers;

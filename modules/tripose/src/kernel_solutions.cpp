@@ -39,8 +39,11 @@ int solveN2(const Eigen::Matrix<double, 12, 2>& basis, std::vector<Vector12d>& s
 {
     Eigen::Matrix<double, 5, 3, Eigen::RowMajor> C;
     generated::betaConstraintsN2(basis.col(0).data(), basis.col(1).data(), C.data());
-    Eigen::JacobiSVD<Eigen::Matrix<double, 5, 3>> svd(C, Eigen::ComputeFullV);
-    Eigen::Vector3d m = svd.matrixV().col(2); // [b1^2, b2^2, b1 b2]
+    // Null vector from the 3x3 Gram matrix in closed form: a fraction of the cost of a 5x3 SVD.
+    // Its squared conditioning only costs digits that the polish of every candidate restores.
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(C.transpose() * C);
+    Eigen::Vector3d m = eigen.eigenvectors().col(0); // [b1^2, b2^2, b1 b2]
     if (m(0) + m(1) < 0)
         m = -m;
     Eigen::Matrix2d B;

@@ -11,6 +11,7 @@
 #include "linear_solver.hpp"
 #include "linear_system.hpp"
 #include "pose_recovery.hpp"
+#include "smallest_eigenvectors.hpp"
 
 namespace cv {
 namespace tripose {
@@ -18,18 +19,68 @@ namespace detail {
 
 namespace {
 
-//! R' = (2 t t^T - I) R with t the unit baseline direction, and its least-squares translation.
-bool twistedPair(const CameraPose& pose, const Matrix12d& normalMatrix, CameraPose& twisted)
+typedef Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> KernelBasis;
+
+// Polished candidates closer than this (Frobenius norm of the rotation difference, about
+// sqrt(2) times the angle; translation in units of |t12|) are the same minimum of the algebraic
+// error: the polish stops at rounding, about 1e-9 from the minimum.
+constexpr double kDuplicateTolerance = 1e-7;
+
+//! R' = (2 d d^T - I) R with d the unit baseline direction (a rotation by pi about d), and its
+//! least-squares translation.
+bool twistedPair(const CameraPose& pose, const ReducedNormalSystem& system, CameraPose& twisted)
 {
     const double n = pose.t.norm();
     if (!(n > 0))
         return false;
     const Eigen::Vector3d d = pose.t / n;
-    Vector12d v;
-    v << Eigen::Map<const Eigen::Matrix<double, 9, 1>>(
-             Eigen::Matrix3d((2.0 * d * d.transpose() - Eigen::Matrix3d::Identity()) * pose.R).data()),
-        Eigen::Vector3d::Zero();
-    return poseFromSolutionVector(v, normalMatrix, twisted);
+    // Already a rotation: no projection needed.
+    twisted.R = (2.0 * d * d.transpose() - Eigen::Matrix3d::Identity()) * pose.R;
+    twisted.t = system.T * Eigen::Map<const Vector9d>(twisted.R.data());
+    return twisted.R.allFinite() && twisted.t.allFinite();
+}
+
+/** Orthonormal basis of the N-dimensional kernel of a system of four or five features. A point's
+four rows have rank 2 on exact data (the other two carry noise only): each block is first replaced
+by its best rank-2 row space (the two dominant eigenvectors of its 4x4 Gram matrix), which leaves
+exactly 2 (points + lines) rows. Their null space then comes from a column-pivoted QR of the
+transpose (backward stable, so exact data stays exact to rounding) at a fraction of the cost of an
+SVD of A.
+*/
+bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBasis& kernel)
+{
+    const int rows = 12 - N;
+    Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 12> At(12, rows);
+    int out = 0;
+    for (int k = 0; k < numPoints; ++k)
+    {
+        const Eigen::Matrix<double, 4, 12> P = A.middleRows<4>(4 * k);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(P.lazyProduct(P.transpose()));
+        if (eigen.info() != Eigen::Success)
+            return false;
+        // Eigenvalues ascend: the last two span the row space; u^T P are the rows s_i v_i^T.
+        At.col(out++) = P.transpose() * eigen.eigenvectors().col(3);
+        At.col(out++) = P.transpose() * eigen.eigenvectors().col(2);
+    }
+    for (int r = 4 * numPoints; r < A.rows(); ++r)
+        At.col(out++) = A.row(r).transpose();
+    CV_DbgAssert(out == rows);
+    const Eigen::ColPivHouseholderQR<Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 12>> qr(At);
+    // Q's trailing columns are orthogonal to every constraint row: the kernel.
+    Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> E = Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4>::Zero(12, N);
+    E.bottomRows(N).setIdentity();
+    kernel = qr.householderQ() * E;
+    return kernel.allFinite();
+}
+
+//! True when @p pose (t in units of |t12|) equals, to polishing accuracy, one of poses[first..].
+bool isDuplicate(const CameraPose& pose, const std::vector<CameraPose>& poses, size_t first, double translationScale)
+{
+    for (size_t i = first; i < poses.size(); ++i)
+        if ((poses[i].R - pose.R).norm() < kDuplicateTolerance &&
+            (poses[i].t / translationScale - pose.t).norm() < kDuplicateTolerance * (1.0 + pose.t.norm()))
+            return true;
+    return false;
 }
 
 } // namespace
@@ -43,67 +94,75 @@ int kernelDimensionFor(int numFeatures)
 int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices, bool twistedPairs)
 {
-    const int numFeatures = (pointIndices ? (int)pointIndices->size() : data.numPoints()) +
-                            (lineIndices ? (int)lineIndices->size() : data.numLines());
+    const int numPoints = pointIndices ? (int)pointIndices->size() : data.numPoints();
+    const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : data.numLines());
     const double translationScale = data.view2.t.norm();
     const ConstraintMatrix A = buildConstraintMatrix(data, translationScale, pointIndices, lineIndices);
-    if (!A.allFinite())
-        return 0;
 
     const int N = kernelDimensionFor(numFeatures);
+    // Every candidate is judged on the algebraic error of all rows, with t eliminated.
+    // A^T A from one triangle (symmetric rank update), mirrored.
+    Matrix12d normalMatrix = Matrix12d::Zero();
+    normalMatrix.selfadjointView<Eigen::Upper>().rankUpdate(A.transpose());
+    normalMatrix.triangularView<Eigen::StrictlyLower>() = normalMatrix.transpose();
+    // A non-finite entry of A makes its diagonal entry of A^T A non-finite: one check for both.
+    if (!normalMatrix.allFinite())
+        return 0;
+    ReducedNormalSystem system;
+    if (!reduceNormalMatrix(normalMatrix, system))
+        return 0;
+
     std::vector<Vector12d> solutions;
-    Matrix12d normalMatrix;
+    solutions.reserve(12);
     if (N == 1)
     {
-        // Over-determined: the eigenvectors of A^T A are accurate enough here (the rows are
-        // balanced and every candidate is polished on the algebraic error), at a fraction of the
-        // cost of an SVD. Besides N = 1, try N = 2: with noise and few redundant constraints the two
-        // smallest singular values can be close, and the orthonormality constraints then pick the
-        // rotation better than the last singular vector alone; selection decides.
-        normalMatrix = A.transpose().lazyProduct(A); // small: coefficient-wise beats blocked GEMM
-        Eigen::SelfAdjointEigenSolver<Matrix12d> eigen(normalMatrix);
-        if (eigen.info() != Eigen::Success)
+        // Over-determined: the smallest eigenvectors of S (9x9: t eliminated, so only the rotation
+        // is normalised) are accurate enough here (the rows are balanced and every candidate is
+        // polished on the algebraic error), at a fraction of the cost of an SVD. Besides N = 1,
+        // try N = 2: with noise and few redundant constraints the two smallest singular values can
+        // be close, and the orthonormality constraints then pick the rotation better than the
+        // last singular vector alone; selection decides.
+        Eigen::Matrix<double, 9, 2> smallest;
+        if (!smallestEigenvectors(system.S, smallest))
             return 0;
-        solveKernelCombinations(eigen.eigenvectors().leftCols(1), solutions);
-        solveKernelCombinations(eigen.eigenvectors().leftCols(2), solutions);
+        Eigen::Matrix<double, 12, 2> basis;
+        basis.topRows<9>() = smallest;
+        basis.bottomRows<3>() = system.T * basis.topRows<9>();
+        solveKernelCombinations(basis.leftCols<1>(), solutions);
+        solveKernelCombinations(basis, solutions);
     }
     else
     {
-        // Four or five features: the kernel's edge is where exact data must stay exact, and
-        // eigenvectors of A^T A would square its conditioning: SVD of A (rows beyond 12 folded
-        // first into a 12x12 triangular factor, which has the same right singular vectors).
-        Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12> reduced;
-        if (A.rows() > 12)
-        {
-            Eigen::HouseholderQR<ConstraintMatrix> qr(A);
-            reduced = qr.matrixQR().topRows<12>().triangularView<Eigen::Upper>();
-        }
-        else
-            reduced = A;
-        normalMatrix = reduced.transpose() * reduced;
-        Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 12, 0, 12, 12>> svd(reduced, Eigen::ComputeFullV);
-        // Singular values descend: the last N right singular vectors span the kernel.
-        solveKernelCombinations(svd.matrixV().rightCols(N), solutions);
+        // Four or five features: the kernel's edge is where exact data must stay exact.
+        KernelBasis kernel;
+        if (!smallSystemKernel(A, numPoints, N, kernel))
+            return 0;
+        solveKernelCombinations(kernel, solutions);
     }
 
+    const size_t first = poses.size();
     int added = 0;
     for (const Vector12d& v : solutions)
     {
         CameraPose pose;
-        if (!poseFromSolutionVector(v, normalMatrix, pose))
+        if (!poseFromSolutionVector(v, system, pose))
             continue;
-        polishPoseAlgebraic(normalMatrix, pose);
+        polishPoseAlgebraic(system, pose);
         CameraPose twisted;
         // The twisted pair (R rotated by pi about the baseline direction t) fits the rows almost
         // as well when the constraints are weak (small motion, few features, noise); only
-        // cheirality tells them apart, so both go to the selection.
-        const bool addTwisted = twistedPairs && twistedPair(pose, normalMatrix, twisted);
+        // cheirality tells them apart, so both go to the selection. Several kernel combinations
+        // often polish into the same minimum (N = 1 and N = 2 with noise, several roots for
+        // N = 4): such a duplicate still goes to the selection (the closest to the exact pose
+        // wins there), but its twisted pair would repeat one already polished.
+        const bool addTwisted = twistedPairs && !isDuplicate(pose, poses, first, translationScale) &&
+                                twistedPair(pose, system, twisted);
         pose.t *= translationScale;
         poses.push_back(pose);
         ++added;
         if (addTwisted)
         {
-            polishPoseAlgebraic(normalMatrix, twisted);
+            polishPoseAlgebraic(system, twisted);
             twisted.t *= translationScale;
             poses.push_back(twisted);
             ++added;

@@ -29,6 +29,20 @@ inline Mat toMat(const Eigen::Vector3d& t)
     return (Mat_<double>(3, 1) << t.x(), t.y(), t.z());
 }
 
+//! Writes R (3x3) and t (3x1) as CV_64F into the outputs directly (no temporary Mat).
+inline void writePose(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, OutputArray Rout, OutputArray tout)
+{
+    Rout.create(3, 3, CV_64F);
+    Mat Rm = Rout.getMat();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            Rm.at<double>(r, c) = R(r, c);
+    tout.create(3, 1, CV_64F);
+    Mat tm = tout.getMat();
+    for (int r = 0; r < 3; ++r)
+        tm.at<double>(r) = t(r);
+}
+
 } // namespace detail
 } // namespace tripose
 } // namespace cv

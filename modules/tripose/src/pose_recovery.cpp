@@ -15,6 +15,28 @@ namespace detail {
 
 Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M)
 {
+    if (M.determinant() > 0)
+    {
+        // Newton's iteration for the orthogonal polar factor, X <- (g X + X^-T / g) / 2 with
+        // Higham's norm scaling g while far from it: quadratic convergence to the same rotation as
+        // U V^T of the SVD, at a fraction of the cost of a 3x3 SVD. det > 0 keeps it in SO(3).
+        Eigen::Matrix3d X = M;
+        for (int iteration = 0; iteration < 30; ++iteration)
+        {
+            const Eigen::Matrix3d Xinv = X.inverse();
+            const double scale = std::sqrt(Xinv.norm() / X.norm());
+            const bool far = std::abs(scale - 1.0) > 1e-3;
+            const Eigen::Matrix3d next = far ? Eigen::Matrix3d(0.5 * (scale * X + Xinv.transpose() / scale))
+                                             : Eigen::Matrix3d(0.5 * (X + Xinv.transpose()));
+            const double change = (next - X).norm();
+            X = next;
+            if (!std::isfinite(change))
+                break;
+            // Quadratic convergence: after a change of 1e-9 the iterate is orthogonal to rounding.
+            if (change <= 1e-9)
+                return X;
+        }
+    }
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d U = svd.matrixU();
     const Eigen::Matrix3d V = svd.matrixV();
@@ -23,7 +45,20 @@ Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M)
     return U * V.transpose();
 }
 
-bool poseFromSolutionVector(const Vector12d& v, const Matrix12d& normalMatrix, CameraPose& pose)
+bool reduceNormalMatrix(const Matrix12d& normalMatrix, ReducedNormalSystem& system)
+{
+    Eigen::LDLT<Eigen::Matrix3d> ldlt(normalMatrix.block<3, 3>(9, 9));
+    const Eigen::Vector3d d = ldlt.vectorD();
+    if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(d.maxCoeff(), 1e-300)))
+        return false;
+    system.T = -ldlt.solve(normalMatrix.block<3, 9>(9, 0));
+    system.S = normalMatrix.topLeftCorner<9, 9>() + normalMatrix.block<9, 3>(0, 9).lazyProduct(system.T);
+    // Rounding leaves S slightly asymmetric; the eigen-solver reads one triangle, the polish both.
+    system.S = (0.5 * (system.S + system.S.transpose())).eval();
+    return system.S.allFinite() && system.T.allFinite();
+}
+
+bool poseFromSolutionVector(const Vector12d& v, const ReducedNormalSystem& system, CameraPose& pose)
 {
     // v stacks the columns of R: column-major storage is exactly R.
     const Eigen::Map<const Eigen::Matrix3d> Rraw(v.data());
@@ -33,25 +68,14 @@ bool poseFromSolutionVector(const Vector12d& v, const Matrix12d& normalMatrix, C
     if (!std::isfinite(det) || !(std::abs(det) > 1e-9 * std::pow(scaleNorm / 3.0, 1.5)))
         return false;
     pose.R = nearestRotation(Rraw / std::cbrt(det));
-
-    const Eigen::Matrix3d Att = normalMatrix.block<3, 3>(9, 9);
-    const Eigen::Matrix<double, 3, 9> Atr = normalMatrix.block<3, 9>(9, 0);
-    const Eigen::Map<const Eigen::Matrix<double, 9, 1>> r(pose.R.data());
-    Eigen::LDLT<Eigen::Matrix3d> ldlt(Att);
-    const Eigen::Vector3d d = ldlt.vectorD();
-    if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(d.maxCoeff(), 1e-300)))
-        return false;
-    pose.t = -ldlt.solve(Atr * r);
+    pose.t = system.T * Eigen::Map<const Vector9d>(pose.R.data());
     return pose.t.allFinite() && pose.R.allFinite();
 }
 
 namespace {
 
-double algebraicError(const Matrix12d& M, const CameraPose& pose, Vector12d& v)
-{
-    v << Eigen::Map<const Eigen::Matrix<double, 9, 1>>(pose.R.data()), pose.t;
-    return v.dot(M * v);
-}
+//! Below this step (rad) the polish keeps its Gauss-Newton matrix (see polishPoseAlgebraic()).
+constexpr double kChordStepAngle = 1e-2;
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& a)
 {
@@ -62,39 +86,58 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& a)
 
 } // namespace
 
-void polishPoseAlgebraic(const Matrix12d& normalMatrix, CameraPose& pose)
+void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
 {
-    Vector12d v;
-    double error = algebraicError(normalMatrix, pose, v);
+    const Matrix9d& S = system.S;
+    Vector9d r = Eigen::Map<const Vector9d>(pose.R.data());
+    Vector9d Sr = S.lazyProduct(r); // kept from the error evaluation for the next gradient
+    double error = r.dot(Sr);
+    Eigen::Matrix3d Hinv = Eigen::Matrix3d::Zero(); // set in the first iteration
+    double lastAngle = HUGE_VAL;
     for (int iteration = 0; iteration < 5 && error > 0; ++iteration)
     {
-        // d r_j / d w = -[r_j]x for the columns r_j of R; d t / d t = I.
-        Eigen::Matrix<double, 12, 6> D = Eigen::Matrix<double, 12, 6>::Zero();
+        // d r_j / d w = -[r_j]x for the columns r_j of R.
+        Eigen::Matrix<double, 9, 3> D;
         for (int j = 0; j < 3; ++j)
             D.block<3, 3>(3 * j, 0) = -skew(pose.R.col(j));
-        D.block<3, 3>(9, 3).setIdentity();
-        // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
-        const Eigen::Matrix<double, 6, 12> DtM = D.transpose().lazyProduct(normalMatrix);
-        const Eigen::Matrix<double, 6, 6> H = DtM.lazyProduct(D);
-        const Eigen::Matrix<double, 6, 1> step = H.ldlt().solve(-(DtM * v));
+        // The Gauss-Newton matrix D^T S D changes with R by about the last step: once the steps
+        // are small (near the minimum) the previous one serves (a chord step), which saves its
+        // 9x9x3 product; convergence stays superlinear as the steps shrink.
+        const bool fresh = lastAngle > kChordStepAngle;
+        if (fresh)
+        {
+            // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
+            const Eigen::Matrix3d H = D.transpose().lazyProduct(S.lazyProduct(D));
+            // 3x3 symmetric positive (semi-)definite: the closed-form inverse is the cheapest
+            // solve; a singular H gives a non-finite step, which ends the polish.
+            Hinv = H.inverse();
+        }
+        const Eigen::Vector3d step = -(Hinv * (D.transpose() * Sr));
         if (!step.allFinite())
-            return;
-        CameraPose next;
-        const double angle = step.head<3>().norm();
-        next.R = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, step.head<3>() / angle) * pose.R) : pose.R;
-        next.t = pose.t + step.tail<3>();
-        Vector12d vNext;
-        const double nextError = algebraicError(normalMatrix, next, vNext);
+            break;
+        const double angle = step.norm();
+        const Eigen::Matrix3d next = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, step / angle) * pose.R) : pose.R;
+        const Vector9d rNext = Eigen::Map<const Vector9d>(next.data());
+        const Vector9d SrNext = S.lazyProduct(rNext);
+        const double nextError = rNext.dot(SrNext);
         if (!(nextError < error))
-            return;
-        pose = next;
-        v = vNext;
+        {
+            if (fresh)
+                break;
+            lastAngle = HUGE_VAL; // a stale matrix may be the cause: retry with a fresh one
+            continue;
+        }
+        pose.R = next;
+        lastAngle = angle;
+        r = rNext;
+        Sr = SrNext;
         // Converged once a step gains nothing measurable.
         const bool converged = error - nextError <= 1e-12 * error;
         error = nextError;
         if (converged)
-            return;
+            break;
     }
+    pose.t = system.T * r;
 }
 
 } // namespace detail
