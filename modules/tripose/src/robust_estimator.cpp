@@ -10,6 +10,7 @@
 #include "linear_solver.hpp"
 #include "ml_refinement.hpp"
 #include "robust_estimator.hpp"
+#include "sample_generator.hpp"
 #include "three_view_residuals.hpp"
 
 namespace cv {
@@ -71,14 +72,13 @@ public:
     bool run(RobustEstimate& estimate)
     {
         const int numFeatures = data_.numFeatures();
-        RNG rng((uint64)(int64)params_.seed);
+        SampleGenerator samples(numFeatures, kSampleSize, params_.maxIterations, (uint64)(int64)params_.seed);
         std::vector<int> sample(kSampleSize), samplePoints, sampleLines;
         std::vector<CameraPose> candidates;
         long maxIterations = params_.maxIterations;
         int iteration = 0;
-        for (; iteration < maxIterations; ++iteration)
+        for (; iteration < maxIterations && samples.next(sample); ++iteration)
         {
-            drawSample(rng, numFeatures, sample);
             samplePoints.clear();
             sampleLines.clear();
             for (int f : sample)
@@ -91,6 +91,12 @@ public:
                 optimizeLocally();
             maxIterations = std::min<long>(maxIterations, requiredIterations(best_.inliers, numFeatures));
         }
+        // With few features every sample was tried, and the structure of views 1-2 alone may put
+        // all their residuals over the threshold (four features: the one sample has no redundancy
+        // to test). Then the linear solution over all features, ranked as the linear solver ranks
+        // it, goes on to the three-view inlier test below.
+        if (best_.inliers == 0 && samples.enumerates())
+            adoptLinearSolution();
         if (!std::isfinite(best_.cost) || best_.inliers == 0)
             return false;
 
@@ -114,16 +120,17 @@ public:
     }
 
 private:
-    void drawSample(RNG& rng, int numFeatures, std::vector<int>& sample) const
+    //! The linear solver's best pose over all features as the best model, with its support.
+    void adoptLinearSolution()
     {
-        for (int k = 0; k < kSampleSize; ++k)
-        {
-            int f;
-            do
-                f = rng.uniform(0, numFeatures);
-            while (std::find(sample.begin(), sample.begin() + k, f) != sample.begin() + k);
-            sample[k] = f;
-        }
+        std::vector<CameraPose> poses;
+        linearPoseCandidates(data_, poses);
+        const std::vector<ScoredPose> ranked = rankCandidates(data_, structure_, poses);
+        if (ranked.empty())
+            return;
+        bestPose_ = ranked.front().pose;
+        best_ = support(bestPose_);
+        best_.inliers = std::max(best_.inliers, 1); // what it lacks is tested over three views below
     }
 
     //! Makes the cheapest of @p poses the best model if it beats it; true if it did.

@@ -66,6 +66,25 @@ TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
 
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_Ransac, testing::Values(0.0, 0.1, 0.3, 0.5));
 
+// Few features: the distinct samples are enumerated (four features: one sample), so the estimator
+// sees each once and stops, instead of solving the same sample until maxIterations.
+TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
+{
+    const FeatureMix mixes[] = { { 4, 0 }, { 2, 2 }, { 0, 4 }, { 3, 2 }, { 3, 3 } };
+    for (const FeatureMix& mix : mixes)
+        for (int seed = 0; seed < 20; ++seed)
+        {
+            const tripose::SyntheticScene s = makeScene(mix, tripose::MOTION_LARGE, 0.0, seed);
+            tripose::RansacParams params;
+            params.seed = seed;
+            Mat R, t, pointMask, lineMask;
+            const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
+            ASSERT_EQ(inliers, mix.points + mix.lines) << mixName(mix) << " seed " << seed;
+            EXPECT_LT(rotationError(R, s.R), 1e-6) << mixName(mix) << " seed " << seed;
+            EXPECT_LT(relativeTranslationError(t, s.t), 1e-6) << mixName(mix) << " seed " << seed;
+        }
+}
+
 TEST(Tripose_RansacDeterminism, same_seed_same_result)
 {
     const tripose::SyntheticScene s = outlierScene(0.4, 77);
