@@ -146,6 +146,33 @@ Problem readProblemFromString(const std::string& text, const std::string& format
     return readFromStorage(fs);
 }
 
+std::string problemKeyNamedBy(const std::string& solverMessage)
+{
+    static const char* const names[][2] = {
+        { "cameraMatrix[0]", "K1" }, { "cameraMatrix[1]", "K2" }, { "cameraMatrix[2]", "K3" }, { "cameraMatrix", "K" },
+        { "distCoeffs[0]", "dist1" }, { "distCoeffs[1]", "dist2" }, { "distCoeffs[2]", "dist3" }, { "distCoeffs", "dist" },
+        { "points1", "points1" }, { "points2", "points2" }, { "points3", "points3" },
+        { "lines1", "lines1" }, { "lines2", "lines2" }, { "lines3", "lines3" },
+        { "R12", "R12" }, { "t12", "t12" },
+    };
+    // The subject comes first ("points3 has 2 points but points1 has 3"); at one position the
+    // longer name wins ("cameraMatrix[1]" over "cameraMatrix").
+    size_t bestAt = std::string::npos, bestLength = 0;
+    const char* key = nullptr;
+    for (const auto& name : names)
+    {
+        const size_t at = solverMessage.find(name[0]);
+        const size_t length = std::char_traits<char>::length(name[0]);
+        if (at != std::string::npos && (at < bestAt || (at == bestAt && length > bestLength)))
+        {
+            bestAt = at;
+            bestLength = length;
+            key = name[1];
+        }
+    }
+    return key ? std::string(" (key '") + key + "')" : std::string();
+}
+
 std::string temporaryNameFor(const std::string& path)
 {
     // Keep the extension: FileStorage picks YAML or JSON from it.
