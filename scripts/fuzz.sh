@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of test/fuzz with clang (ASan + UBSan, in build-fuzz/) and runs each
+# for a while: first over the checked-in regression inputs (test/fuzz/regressions/<target>/, each a
+# bug once found and fixed), then fuzzing from the seed corpus (test/fuzz/corpus/<target>/).
+#
+#   bash scripts/fuzz.sh            # 60 s per target (what the test command runs)
+#   bash scripts/fuzz.sh 3600       # an hour per target
+#
+# New inputs go to build-fuzz/corpus/<target>/ (the checked-in seeds are only read); a crash
+# leaves its input in build-fuzz/artifacts/ and fails the script.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+seconds=${1:-60}
+build="$root/build-fuzz"
+
+bash scripts/install_dependencies.sh
+
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DTRIPOSE_BUILD_FUZZERS=ON \
+  -DTRIPOSE_BUILD_TESTS=OFF -DTRIPOSE_BUILD_PERF_TESTS=OFF -DTRIPOSE_BUILD_SAMPLES=OFF \
+  -DTRIPOSE_BUILD_BENCHMARKS=OFF -DTRIPOSE_BUILD_EVALUATION=OFF >/dev/null
+nice cmake --build "$build" -j2 --target fuzz_estimate_pose fuzz_problem_reader
+
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# max_len: the largest problem the API decoder reads is about 5 KB; problem files of a few dozen
+# features stay under 16 KB. timeout: no single input may take longer than this (seconds).
+declare -A max_len=([fuzz_estimate_pose]=8192 [fuzz_problem_reader]=16384)
+for target in fuzz_estimate_pose fuzz_problem_reader; do
+  regressions="test/fuzz/regressions/$target"
+  if compgen -G "$regressions/*" >/dev/null; then
+    echo "[fuzz] $target: replaying $regressions"
+    "$build/test/fuzz/$target" "$regressions"/*
+  fi
+  work="$build/corpus/$target"
+  mkdir -p "$work" "$build/artifacts"
+  echo "[fuzz] $target: ${seconds} s from test/fuzz/corpus/$target"
+  nice "$build/test/fuzz/$target" "$work" "test/fuzz/corpus/$target" \
+    -max_total_time="$seconds" -max_len="${max_len[$target]}" -timeout=20 \
+    -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1
+done
+echo "[fuzz] no crash"
