@@ -16,6 +16,30 @@ std::runtime_error keyError(const std::string& key, const std::string& what)
     return std::runtime_error("key '" + key + "': " + what);
 }
 
+//! The number of elements a matrix node declares (rows x cols, or the product of its sizes); -1 when
+//! the header is not made of non-negative integers.
+double declaredElements(const cv::FileNode& node)
+{
+    const cv::FileNode sizes = node["sizes"];
+    if (!sizes.empty())
+    {
+        if (!sizes.isSeq())
+            return -1;
+        double n = 1;
+        for (const cv::FileNode& size : sizes)
+        {
+            if (!size.isInt() || (int)size < 0)
+                return -1;
+            n *= (int)size;
+        }
+        return n;
+    }
+    const cv::FileNode rows = node["rows"], cols = node["cols"];
+    if (!rows.isInt() || !cols.isInt() || (int)rows < 0 || (int)cols < 0)
+        return -1;
+    return double((int)rows) * (int)cols;
+}
+
 //! A matrix under @p key, or an empty one when the key is absent or empty.
 cv::Mat readMatrix(const cv::FileStorage& fs, const std::string& key)
 {
@@ -24,6 +48,17 @@ cv::Mat readMatrix(const cv::FileStorage& fs, const std::string& key)
         return cv::Mat();
     if (!node.isMap())
         throw keyError(key, "expected an OpenCV matrix (!!opencv-matrix with rows, cols, dt, data)");
+    // OpenCV allocates what the header declares before it compares that with the data (found by
+    // fuzz_problem_reader: a few corrupt bytes asked for 48 GB). Every element needs at least one
+    // value in data, so more declared elements than values is malformed.
+    const double declared = declaredElements(node);
+    if (declared < 0)
+        throw keyError(key, "malformed matrix header: rows and cols (or sizes) must be non-negative integers");
+    const cv::FileNode data = node["data"];
+    const double values = data.isSeq() ? (double)data.size() : (data.empty() ? 0.0 : 1.0);
+    if (declared > values)
+        throw keyError(key, cv::format("malformed matrix: the header declares %.0f elements but data holds %.0f values",
+                                       declared, values));
     cv::Mat m;
     try
     {

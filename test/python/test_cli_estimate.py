@@ -257,3 +257,14 @@ def test_unparsable_file_is_rejected(tmp_path):
     proc, out = estimate(tmp_path, problem)
     assert proc.returncode != 0
     assert not out.exists()
+
+
+def test_matrix_header_larger_than_its_data_is_rejected(tmp_path):
+    # Regression (fuzz_problem_reader): OpenCV allocates what a matrix header declares before it
+    # checks the data, so a corrupt header could ask for gigabytes; the reader rejects it first.
+    problem = tmp_path / "huge.yml"
+    problem.write_text("%YAML:1.0\n---\nK1: !!opencv-matrix\n   rows: 100000\n   cols: 100000\n"
+                       "   dt: d\n   data: [ 1. ]\n")
+    expect_rejected(tmp_path, problem, "key 'K1'")
+    proc, _ = estimate(tmp_path, problem)
+    assert "header declares 10000000000 elements" in proc.stderr, proc.stderr  # before any allocation
