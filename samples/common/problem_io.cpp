@@ -133,6 +133,9 @@ void readFeatures(const cv::FileStorage& fs, const std::string& prefix, int widt
 
 Problem readFromStorage(const cv::FileStorage& fs)
 {
+    // Looking up a key in anything but a map is an OpenCV assertion (found by fuzz_problem_reader).
+    if (!fs.root().isMap())
+        throw std::runtime_error("the problem must be a map of keys (K, R12, t12, points1, ...) at the top level");
     Problem p;
     p.K = readShared(fs, "K", true);
     for (size_t v = 0; v < p.K.size(); ++v)

@@ -268,3 +268,12 @@ def test_matrix_header_larger_than_its_data_is_rejected(tmp_path):
     expect_rejected(tmp_path, problem, "key 'K1'")
     proc, _ = estimate(tmp_path, problem)
     assert "header declares 10000000000 elements" in proc.stderr, proc.stderr  # before any allocation
+
+
+@pytest.mark.parametrize("text", ["%YAML:1.0\n---\n- 1\n- 2\n", "%YAML:1.0\n---\n"])
+def test_problem_that_is_not_a_map_is_rejected(tmp_path, text):
+    # Regression (fuzz_problem_reader): a key looked up in a top level that is not a map was an
+    # OpenCV assertion escaping the reader, not a message about the problem.
+    problem = tmp_path / "not_a_map.yml"
+    problem.write_text(text)
+    expect_rejected(tmp_path, problem, "map of keys")
