@@ -166,6 +166,15 @@ Problem readProblem(const std::string& path)
     {
         throw std::runtime_error("cannot parse " + path + ": " + e.msg);
     }
+    catch (const std::runtime_error&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        // OpenCV 4.6's parser lets some standard exceptions out (see readProblemFromString).
+        throw std::runtime_error("cannot parse " + path + ": " + e.what());
+    }
     return readFromStorage(fs);
 }
 
@@ -180,6 +189,16 @@ Problem readProblemFromString(const std::string& text, const std::string& format
     catch (const cv::Exception& e)
     {
         throw std::runtime_error("cannot parse the problem text: " + e.msg);
+    }
+    catch (const std::runtime_error&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        // OpenCV 4.6's YAML parser throws std::length_error on some corrupt input (a key repeated
+        // inside a matrix, found by fuzz_problem_reader): a parse error all the same.
+        throw std::runtime_error(std::string("cannot parse the problem text: ") + e.what());
     }
     return readFromStorage(fs);
 }

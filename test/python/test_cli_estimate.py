@@ -277,3 +277,12 @@ def test_problem_that_is_not_a_map_is_rejected(tmp_path, text):
     problem = tmp_path / "not_a_map.yml"
     problem.write_text(text)
     expect_rejected(tmp_path, problem, "map of keys")
+
+
+def test_parser_failure_inside_opencv_is_a_parse_error(tmp_path):
+    # Regression (fuzz_problem_reader): on this corrupt file (a key repeated inside a matrix)
+    # OpenCV 4.6's YAML parser throws std::length_error, which left the reader unexplained.
+    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
+    problem = tmp_path / "corrupt.yml"
+    problem.write_bytes((regression / "opencv_parser_length_error_on_repeated_key").read_bytes()[1:])
+    expect_rejected(tmp_path, problem, "cannot parse")
