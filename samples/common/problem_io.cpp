@@ -4,7 +4,10 @@
 
 #include "problem_io.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace tripose_samples {
@@ -152,10 +155,36 @@ Problem readFromStorage(const cv::FileStorage& fs)
     return p;
 }
 
+/** OpenCV 4.6's YAML parser never returns on some corrupt text (found by fuzz_problem_reader:
+"---K1: 0" followed by a "----" line). A problem file is one document whose only line starting with
+"---" is the document marker itself, so any other such line is rejected before parsing.
+*/
+void rejectParserTraps(const std::string& text)
+{
+    int line = 1;
+    for (size_t at = 0; at < text.size(); ++line)
+    {
+        if (text.compare(at, 3, "---") == 0 && at + 3 < text.size() && !std::isspace((unsigned char)text[at + 3]))
+            throw std::runtime_error(cv::format("cannot parse line %d: it starts with '---' but is not a document marker", line));
+        const size_t next = text.find('\n', at);
+        if (next == std::string::npos)
+            break;
+        at = next + 1;
+    }
+}
+
 } // namespace
 
 Problem readProblem(const std::string& path)
 {
+    const bool compressed = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+    std::ifstream file(path, std::ios::binary);
+    if (file && !compressed)
+    {
+        std::ostringstream text;
+        text << file.rdbuf();
+        rejectParserTraps(text.str());
+    }
     cv::FileStorage fs;
     try
     {
@@ -180,6 +209,7 @@ Problem readProblem(const std::string& path)
 
 Problem readProblemFromString(const std::string& text, const std::string& format)
 {
+    rejectParserTraps(text);
     cv::FileStorage fs;
     try
     {

@@ -286,3 +286,12 @@ def test_parser_failure_inside_opencv_is_a_parse_error(tmp_path):
     problem = tmp_path / "corrupt.yml"
     problem.write_bytes((regression / "opencv_parser_length_error_on_repeated_key").read_bytes()[1:])
     expect_rejected(tmp_path, problem, "cannot parse")
+
+
+@pytest.mark.parametrize("text", ["%YAML:1.0\n---K1: 0\n----\n", "%YAML:1.0\n---,K1: 0\n----matrix\n"])
+def test_text_that_hangs_the_yaml_parser_is_rejected(tmp_path, text):
+    # Regression (fuzz_problem_reader): OpenCV 4.6's YAML parser never returns on these; the reader
+    # rejects a line that starts with '---' but is not the document marker before parsing.
+    problem = tmp_path / "hang.yml"
+    problem.write_text(text)
+    expect_rejected(tmp_path, problem, "not a document marker")
