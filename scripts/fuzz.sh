@@ -7,7 +7,7 @@
 #   bash scripts/fuzz.sh 3600       # an hour per target
 #
 # New inputs go to build-fuzz/corpus/<target>/ (the checked-in seeds are only read); a crash
-# leaves its input in build-fuzz/artifacts/ and fails the script.
+# leaves its input in build-fuzz/artifacts/ and fails the script. The two targets fuzz side by side.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -27,17 +27,47 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # max_len: the largest problem the API decoder reads is about 5 KB; problem files of a few dozen
 # features stay under 16 KB. timeout: no single input may take longer than this (seconds).
 declare -A max_len=([fuzz_estimate_pose]=8192 [fuzz_problem_reader]=16384)
+# OpenCV 4.6's YAML parser never returns on some corrupt text (e.g. "%YAML:1.0\n  t:d\n(oc-\n"),
+# inside cv::FileStorage::open, beyond what the reader can guard. The reader runs in fork mode so
+# that such a hang is saved (build-fuzz/artifacts/fuzz_problem_reader-timeout-*) and reported but
+# does not stop the run; a crash, a sanitizer report or running out of memory still fails it. The
+# API target has no third-party parser in the loop: a timeout there fails the run.
+declare -A mode=([fuzz_estimate_pose]="-timeout=20"
+                 [fuzz_problem_reader]="-fork=1 -ignore_timeouts=1 -ignore_ooms=0 -ignore_crashes=0 -timeout=5")
 for target in fuzz_estimate_pose fuzz_problem_reader; do
   regressions="test/fuzz/regressions/$target"
   if compgen -G "$regressions/*" >/dev/null; then
     echo "[fuzz] $target: replaying $regressions"
-    "$build/test/fuzz/$target" "$regressions"/*
+    "$build/test/fuzz/$target" "$regressions"/* 2>"$build/$target.replay.log" ||
+      { cat "$build/$target.replay.log" >&2; exit 1; }
   fi
+done
+
+# The targets run side by side (one per core); each writes its own log.
+pids=()
+for target in fuzz_estimate_pose fuzz_problem_reader; do
   work="$build/corpus/$target"
   mkdir -p "$work" "$build/artifacts"
-  echo "[fuzz] $target: ${seconds} s from test/fuzz/corpus/$target"
+  echo "[fuzz] $target: ${seconds} s from test/fuzz/corpus/$target (log: $build/$target.log)"
   nice "$build/test/fuzz/$target" "$work" "test/fuzz/corpus/$target" \
-    -max_total_time="$seconds" -max_len="${max_len[$target]}" -timeout=20 \
-    -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1
+    -max_total_time="$seconds" -max_len="${max_len[$target]}" ${mode[$target]} \
+    -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 >"$build/$target.log" 2>&1 &
+  pids+=($!)
 done
+failed=0
+for i in 0 1; do
+  target=$([ "$i" -eq 0 ] && echo fuzz_estimate_pose || echo fuzz_problem_reader)
+  if wait "${pids[$i]}"; then
+    echo "[fuzz] $target: $(grep -E '^Done [0-9]+ runs' "$build/$target.log" || echo done)"
+  else
+    echo "[fuzz] $target FAILED; the end of its log:" >&2
+    tail -n 60 "$build/$target.log" >&2
+    failed=1
+  fi
+done
+[ "$failed" -eq 0 ] || exit 1
+if compgen -G "$build/artifacts/fuzz_problem_reader-timeout-*" >/dev/null; then
+  echo "[fuzz] inputs on which OpenCV's parser did not return (known, not a failure):"
+  ls "$build/artifacts/"fuzz_problem_reader-timeout-*
+fi
 echo "[fuzz] no crash"
