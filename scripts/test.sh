@@ -24,7 +24,7 @@ build/consumer/tripose_consumer
 .venv/bin/python codegen/generate.py --check
 .venv/bin/python -m pytest -q
 
-# Hardening: about 8 minutes on two idle cores (sanitizer build ~4 min + tests 1 min, fuzz build
-# ~2 min + the two targets side by side for 60 s); measured figures in the README.
+# Hardening: about 7.5 minutes on two idle cores (sanitizer build ~4 min + tests 1 min, fuzz build
+# ~1.5 min + the two targets side by side for 60 s); measured figures in the README.
 bash scripts/test_sanitizers.sh
 bash scripts/fuzz.sh 60
