@@ -155,6 +155,22 @@ Problem readFromStorage(const cv::FileStorage& fs)
     return p;
 }
 
+/** readFromStorage, with OpenCV's own assertions on malformed content turned into parse errors:
+FileStorage::operator[] searches every document of the file and asserts that each is a map (found
+by fuzz_problem_reader: a second, empty document after a first that is a map).
+*/
+Problem readChecked(const cv::FileStorage& fs, const std::string& what)
+{
+    try
+    {
+        return readFromStorage(fs);
+    }
+    catch (const cv::Exception& e)
+    {
+        throw std::runtime_error("cannot parse " + what + ": " + e.msg);
+    }
+}
+
 /** OpenCV 4.6's YAML parser never returns on some corrupt text (found by fuzz_problem_reader:
 "---K1: 0" followed by a "----" line). A problem file is one document whose only line starting with
 "---" is the document marker itself, so any other such line is rejected before parsing.
@@ -204,7 +220,7 @@ Problem readProblem(const std::string& path)
         // OpenCV 4.6's parser lets some standard exceptions out (see readProblemFromString).
         throw std::runtime_error("cannot parse " + path + ": " + e.what());
     }
-    return readFromStorage(fs);
+    return readChecked(fs, path);
 }
 
 Problem readProblemFromString(const std::string& text, const std::string& format)
@@ -230,7 +246,7 @@ Problem readProblemFromString(const std::string& text, const std::string& format
         // inside a matrix, found by fuzz_problem_reader): a parse error all the same.
         throw std::runtime_error(std::string("cannot parse the problem text: ") + e.what());
     }
-    return readFromStorage(fs);
+    return readChecked(fs, "the problem text");
 }
 
 std::string problemKeyNamedBy(const std::string& solverMessage)

@@ -295,3 +295,12 @@ def test_text_that_hangs_the_yaml_parser_is_rejected(tmp_path, text):
     problem = tmp_path / "hang.yml"
     problem.write_text(text)
     expect_rejected(tmp_path, problem, "not a document marker")
+
+
+def test_later_document_that_is_not_a_map_is_a_parse_error(tmp_path):
+    # Regression (fuzz_problem_reader): OpenCV looks a key up in every document of the file and
+    # asserts that each is a map; that assertion escaped the reader.
+    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
+    problem = tmp_path / "documents.yml"
+    problem.write_bytes((regression / "second_document_not_a_map").read_bytes()[1:])
+    expect_rejected(tmp_path, problem, "cannot parse")
