@@ -5,14 +5,15 @@
 // tripose_estimate: the pose of view 3 from a problem file.
 //
 //   tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]
-//                    [--threshold px] [--refine 0|1] [--seed n]
+//                    [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]
 //
 // The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
 // (or dist1..dist3), R12, t12, points1..points3 (Nx2) and lines1..lines3 (Mx4); either kind of
 // feature may be absent. The result holds num_solutions and, when a pose was found, R (3x3) and
 // t (3x1); with --method ransac also num_inliers, inliers_points and inliers_lines (one 0/1 per
 // feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
-// 2 when the solver rejects the input. No output file is left behind on failure.
+// 2 when the solver rejects the input (the message names the problem key). No output file is left
+// behind on failure.
 
 #include <cmath>
 #include <iostream>
@@ -30,7 +31,7 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
-    "                        [--threshold px] [--refine 0|1] [--seed n]\n"
+    "                        [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]\n"
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4)\n"
     "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
@@ -38,6 +39,8 @@ const char* kUsage =
     "  --method     linear (default): the unified linear solver on all features;\n"
     "               ransac: robust estimation with outlier rejection and refinement\n"
     "  --threshold  ransac inlier threshold in pixels (default 2)\n"
+    "  --confidence ransac confidence, in (0, 1) (default 0.999)\n"
+    "  --max-iterations  ransac upper bound on the number of samples (default 10000)\n"
     "  --refine     ransac: 1 (default) refines over the three views, 0 does not\n"
     "  --seed       ransac sampler seed (default 0)\n";
 
@@ -72,6 +75,16 @@ Options parseArguments(int argc, char** argv)
             o.ransac.threshold = parseNumber(arg, value);
             if (!(o.ransac.threshold > 0))
                 throw std::runtime_error("argument --threshold: expected a positive number of pixels, got '" + value + "'");
+        }
+        else if (arg == "--confidence")
+        {
+            o.ransac.confidence = parseNumber(arg, value);
+            if (!(o.ransac.confidence > 0 && o.ransac.confidence < 1))
+                throw std::runtime_error("argument --confidence: expected a probability in (0, 1), got '" + value + "'");
+        }
+        else if (arg == "--max-iterations")
+        {
+            o.ransac.maxIterations = parseInteger(arg, value, 1.0);
         }
         else if (arg == "--refine")
         {
@@ -133,7 +146,8 @@ int main(int argc, char** argv)
     }
     catch (const cv::Exception& e)
     {
-        std::cerr << "tripose_estimate: the solver rejected the input: " << e.err << "\n";
+        std::cerr << "tripose_estimate: the solver rejected the input"
+                  << tripose_samples::problemKeyNamedBy(e.err) << ": " << e.err << "\n";
         return 2;
     }
 

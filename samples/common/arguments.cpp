@@ -34,7 +34,7 @@ int parseInteger(const std::string& arg, const std::string& value, double lowest
 {
     const double x = parseNumber(arg, value);
     if (x != std::floor(x) || x < lowest || x > 2147483647.0)
-        throw argumentError(arg, lowest >= 0 ? "expected an integer >= 0, got '" + value + "'"
+        throw argumentError(arg, lowest >= 0 ? "expected an integer >= " + std::to_string((long long)lowest) + ", got '" + value + "'"
                                              : "expected an integer, got '" + value + "'");
     return (int)x;
 }

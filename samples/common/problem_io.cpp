@@ -4,7 +4,10 @@
 
 #include "problem_io.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace tripose_samples {
@@ -16,6 +19,30 @@ std::runtime_error keyError(const std::string& key, const std::string& what)
     return std::runtime_error("key '" + key + "': " + what);
 }
 
+//! The number of elements a matrix node declares (rows x cols, or the product of its sizes); -1 when
+//! the header is not made of non-negative integers.
+double declaredElements(const cv::FileNode& node)
+{
+    const cv::FileNode sizes = node["sizes"];
+    if (!sizes.empty())
+    {
+        if (!sizes.isSeq())
+            return -1;
+        double n = 1;
+        for (const cv::FileNode& size : sizes)
+        {
+            if (!size.isInt() || (int)size < 0)
+                return -1;
+            n *= (int)size;
+        }
+        return n;
+    }
+    const cv::FileNode rows = node["rows"], cols = node["cols"];
+    if (!rows.isInt() || !cols.isInt() || (int)rows < 0 || (int)cols < 0)
+        return -1;
+    return double((int)rows) * (int)cols;
+}
+
 //! A matrix under @p key, or an empty one when the key is absent or empty.
 cv::Mat readMatrix(const cv::FileStorage& fs, const std::string& key)
 {
@@ -24,6 +51,17 @@ cv::Mat readMatrix(const cv::FileStorage& fs, const std::string& key)
         return cv::Mat();
     if (!node.isMap())
         throw keyError(key, "expected an OpenCV matrix (!!opencv-matrix with rows, cols, dt, data)");
+    // OpenCV allocates what the header declares before it compares that with the data (found by
+    // fuzz_problem_reader: a few corrupt bytes asked for 48 GB). Every element needs at least one
+    // value in data, so more declared elements than values is malformed.
+    const double declared = declaredElements(node);
+    if (declared < 0)
+        throw keyError(key, "malformed matrix header: rows and cols (or sizes) must be non-negative integers");
+    const cv::FileNode data = node["data"];
+    const double values = data.isSeq() ? (double)data.size() : (data.empty() ? 0.0 : 1.0);
+    if (declared > values)
+        throw keyError(key, cv::format("malformed matrix: the header declares %.0f elements but data holds %.0f values",
+                                       declared, values));
     cv::Mat m;
     try
     {
@@ -98,6 +136,9 @@ void readFeatures(const cv::FileStorage& fs, const std::string& prefix, int widt
 
 Problem readFromStorage(const cv::FileStorage& fs)
 {
+    // Looking up a key in anything but a map is an OpenCV assertion (found by fuzz_problem_reader).
+    if (!fs.root().isMap())
+        throw std::runtime_error("the problem must be a map of keys (K, R12, t12, points1, ...) at the top level");
     Problem p;
     p.K = readShared(fs, "K", true);
     for (size_t v = 0; v < p.K.size(); ++v)
@@ -114,10 +155,52 @@ Problem readFromStorage(const cv::FileStorage& fs)
     return p;
 }
 
+/** readFromStorage, with OpenCV's own assertions on malformed content turned into parse errors:
+FileStorage::operator[] searches every document of the file and asserts that each is a map (found
+by fuzz_problem_reader: a second, empty document after a first that is a map).
+*/
+Problem readChecked(const cv::FileStorage& fs, const std::string& what)
+{
+    try
+    {
+        return readFromStorage(fs);
+    }
+    catch (const cv::Exception& e)
+    {
+        throw std::runtime_error("cannot parse " + what + ": " + e.msg);
+    }
+}
+
+/** OpenCV 4.6's YAML parser never returns on some corrupt text (found by fuzz_problem_reader:
+"---K1: 0" followed by a "----" line). A problem file is one document whose only line starting with
+"---" is the document marker itself, so any other such line is rejected before parsing.
+*/
+void rejectParserTraps(const std::string& text)
+{
+    int line = 1;
+    for (size_t at = 0; at < text.size(); ++line)
+    {
+        if (text.compare(at, 3, "---") == 0 && at + 3 < text.size() && !std::isspace((unsigned char)text[at + 3]))
+            throw std::runtime_error(cv::format("cannot parse line %d: it starts with '---' but is not a document marker", line));
+        const size_t next = text.find('\n', at);
+        if (next == std::string::npos)
+            break;
+        at = next + 1;
+    }
+}
+
 } // namespace
 
 Problem readProblem(const std::string& path)
 {
+    const bool compressed = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+    std::ifstream file(path, std::ios::binary);
+    if (file && !compressed)
+    {
+        std::ostringstream text;
+        text << file.rdbuf();
+        rejectParserTraps(text.str());
+    }
     cv::FileStorage fs;
     try
     {
@@ -128,11 +211,21 @@ Problem readProblem(const std::string& path)
     {
         throw std::runtime_error("cannot parse " + path + ": " + e.msg);
     }
-    return readFromStorage(fs);
+    catch (const std::runtime_error&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        // OpenCV 4.6's parser lets some standard exceptions out (see readProblemFromString).
+        throw std::runtime_error("cannot parse " + path + ": " + e.what());
+    }
+    return readChecked(fs, path);
 }
 
 Problem readProblemFromString(const std::string& text, const std::string& format)
 {
+    rejectParserTraps(text);
     cv::FileStorage fs;
     try
     {
@@ -143,7 +236,44 @@ Problem readProblemFromString(const std::string& text, const std::string& format
     {
         throw std::runtime_error("cannot parse the problem text: " + e.msg);
     }
-    return readFromStorage(fs);
+    catch (const std::runtime_error&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        // OpenCV 4.6's YAML parser throws std::length_error on some corrupt input (a key repeated
+        // inside a matrix, found by fuzz_problem_reader): a parse error all the same.
+        throw std::runtime_error(std::string("cannot parse the problem text: ") + e.what());
+    }
+    return readChecked(fs, "the problem text");
+}
+
+std::string problemKeyNamedBy(const std::string& solverMessage)
+{
+    static const char* const names[][2] = {
+        { "cameraMatrix[0]", "K1" }, { "cameraMatrix[1]", "K2" }, { "cameraMatrix[2]", "K3" }, { "cameraMatrix", "K" },
+        { "distCoeffs[0]", "dist1" }, { "distCoeffs[1]", "dist2" }, { "distCoeffs[2]", "dist3" }, { "distCoeffs", "dist" },
+        { "points1", "points1" }, { "points2", "points2" }, { "points3", "points3" },
+        { "lines1", "lines1" }, { "lines2", "lines2" }, { "lines3", "lines3" },
+        { "R12", "R12" }, { "t12", "t12" },
+    };
+    // The subject comes first ("points3 has 2 points but points1 has 3"); at one position the
+    // longer name wins ("cameraMatrix[1]" over "cameraMatrix").
+    size_t bestAt = std::string::npos, bestLength = 0;
+    const char* key = nullptr;
+    for (const auto& name : names)
+    {
+        const size_t at = solverMessage.find(name[0]);
+        const size_t length = std::char_traits<char>::length(name[0]);
+        if (at != std::string::npos && (at < bestAt || (at == bestAt && length > bestLength)))
+        {
+            bestAt = at;
+            bestLength = length;
+            key = name[1];
+        }
+    }
+    return key ? std::string(" (key '") + key + "')" : std::string();
 }
 
 std::string temporaryNameFor(const std::string& path)

@@ -34,6 +34,11 @@ Problem readProblem(const std::string& path);
 //! The same from text in memory (used by the fuzzer); @p format is ".yml" or ".json".
 Problem readProblemFromString(const std::string& text, const std::string& format);
 
+/** The problem key behind the argument a solver message names, as " (key 'K2')", or "" when it names
+none: the solver speaks of cameraMatrix[1] and distCoeffs, the file of K2 and dist.
+*/
+std::string problemKeyNamedBy(const std::string& solverMessage);
+
 //! Writes a FileStorage file atomically: to a temporary name first, renamed when complete.
 //! @p write fills the storage.
 template <typename Writer>

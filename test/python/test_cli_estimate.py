@@ -90,39 +90,165 @@ def break_problem(tmp_path, scene, change):
     return problem
 
 
-BROKEN = {
-    "K1": lambda v: v.pop("K1"),
-    "points2": lambda v: v.__setitem__("points2", v["points2"][:2]),
-    "lines3": lambda v: v.__setitem__("lines3", v["lines3"][:, :3]),
-    "t12": lambda v: v.pop("t12"),
-    "R12": lambda v: v.__setitem__("R12", 2.0 * v["R12"]),
-    "K": lambda v: v.__setitem__("K", v["K1"]),  # K together with K1..K3
+def setter(key, value):
+    """A change that puts `value(values)` (or `value`) under `key`."""
+    return lambda v: v.__setitem__(key, value(v) if callable(value) else value)
+
+
+def edited(key, row, col, x):
+    """A change that sets one element of the matrix under `key`."""
+    def change(v):
+        m = v[key].copy()
+        m[row, col] = x
+        v[key] = m
+    return change
+
+
+def all_of(*changes):
+    def change(v):
+        for c in changes:
+            c(v)
+    return change
+
+
+def shared_K(v):
+    """One K for the three views instead of K1..K3."""
+    v["K"] = v.pop("K1")
+    v.pop("K2")
+    v.pop("K3")
+
+
+def keep_features(points, lines):
+    def change(v):
+        for i in (1, 2, 3):
+            v[f"points{i}"] = v[f"points{i}"][:points]
+            v[f"lines{i}"] = v[f"lines{i}"][:lines]
+    return change
+
+
+def drop_features(v):
+    for i in (1, 2, 3):
+        v.pop(f"points{i}")
+        v.pop(f"lines{i}")
+
+
+def zero_length_segment(v):
+    m = v["lines2"].copy()
+    m[1, 2:] = m[1, :2]
+    v["lines2"] = m
+
+
+# The bad-input catalogue of modules/tripose/test/test_estimate_pose_bad_input.cpp, through the
+# problem file: each kind maps to the change of a valid 3-point, 3-line problem (with K1..K3) and to
+# what stderr must name (key 'X' for a problem key). The file reader rejects what the file can say
+# wrongly (shape, channels, NaN/Inf, missing keys); the solver rejects the rest, and the tool turns
+# the solver's argument (cameraMatrix[1], distCoeffs, ...) into the key (K2, dist, ...).
+# Kinds the tool cannot express:
+#   - wrong element types (integer points, R12, K): the reader converts every matrix to CV_64F;
+#   - homogeneous lines (Mx3), hence a line with a = b = 0 and homogeneous lines with distortion:
+#     the file carries Mx4 segments only (an Mx3 lines key is rejected as the wrong width);
+#   - a non-vector Rs output, refinement parameters and the initial pose of refinePoseLinePoint:
+#     the tool has no such outputs or entry point (--refine only switches RANSAC's final refinement).
+CATALOGUE = {
+    # shapes and channels
+    "points_with_wrong_width": (setter("points2", np.zeros((3, 3))), "key 'points2'"),
+    "points_with_three_channels": (setter("points3", np.zeros((3, 1, 3))), "key 'points3'"),
+    "lines_with_wrong_width": (setter("lines1", np.ones((3, 5))), "key 'lines1'"),
+    "lines_with_two_channels": (setter("lines2", np.ones((3, 2, 2))), "key 'lines2'"),
+    "segments_mixed_with_homogeneous_lines": (setter("lines3", lambda v: v["lines3"][:, :3].copy()), "key 'lines3'"),
+    # counts
+    "point_counts_differ": (setter("points3", lambda v: v["points3"][:2]), "key 'points3'"),
+    "points_missing_in_one_view": (lambda v: v.pop("points2"), "key 'points2'"),
+    "line_counts_differ": (setter("lines2", lambda v: v["lines2"][:1]), "key 'lines2'"),
+    "fewer_than_four_features": (keep_features(1, 2), "at least 4 features"),
+    "nothing_at_all": (drop_features, "at least 4 features"),
+    # values of the observations
+    "nan_in_points": (edited("points2", 1, 0, np.nan), "key 'points2'"),
+    "inf_in_lines": (edited("lines3", 0, 3, np.inf), "key 'lines3'"),
+    "zero_length_segment": (zero_length_segment, "key 'lines2'"),
+    # pose of view 2
+    "R12_not_a_rotation": (setter("R12", lambda v: 1.1 * v["R12"]), "key 'R12'"),
+    "R12_reflection": (setter("R12", lambda v: -v["R12"]), "key 'R12'"),
+    "R12_wrong_shape": (setter("R12", np.eye(2)), "key 'R12'"),
+    "nan_in_R12": (edited("R12", 0, 1, np.nan), "key 'R12'"),
+    "R12_missing": (lambda v: v.pop("R12"), "key 'R12'"),
+    "t12_zero": (setter("t12", np.zeros((3, 1))), "key 't12'"),
+    "t12_wrong_size": (setter("t12", np.ones((4, 1))), "key 't12'"),
+    "inf_in_t12": (edited("t12", 2, 0, -np.inf), "key 't12'"),
+    "t12_missing": (lambda v: v.pop("t12"), "key 't12'"),
+    # intrinsics
+    "camera_matrix_negative_focal": (all_of(shared_K, edited("K", 0, 0, -800.0)), "key 'K'"),
+    "camera_matrix_zero_focal": (edited("K1", 1, 1, 0.0), "key 'K1'"),
+    "camera_matrix_singular": (edited("K3", 2, 2, 0.0), "key 'K3'"),
+    "camera_matrix_not_upper_triangular": (edited("K2", 1, 0, 5.0), "key 'K2'"),
+    "camera_matrix_wrong_shape": (setter("K1", np.eye(3, 4)), "key 'K1'"),
+    "nan_in_camera_matrix": (edited("K2", 0, 2, np.nan), "key 'K2'"),
+    "camera_matrix_missing": (lambda v: [v.pop(k) for k in ("K1", "K2", "K3")], "key 'K'"),
+    "two_camera_matrices": (lambda v: v.pop("K3"), "key 'K3'"),
+    "one_of_three_camera_matrices_bad": (edited("K2", 0, 0, -1.0), "key 'K2'"),
+    "K_together_with_K1_K3": (setter("K", lambda v: v["K1"]), "key 'K'"),
+    # distortion
+    "distortion_with_wrong_count": (setter("dist", np.array([[0.1, 0, 0, 0, 0, 0]])), "key 'dist'"),
+    "distortion_as_matrix": (setter("dist", np.zeros((2, 4))), "key 'dist'"),
+    "nan_in_distortion": (setter("dist", np.array([[0.1, np.nan, 0, 0, 0]])), "key 'dist'"),
+    "two_distortion_vectors": (all_of(setter("dist1", np.full((1, 5), 0.01)), setter("dist2", np.full((1, 5), 0.01))),
+                               "key 'dist3'"),
+    "one_of_three_distortion_vectors_bad": (all_of(*[setter(f"dist{i}", np.full((1, 5), 0.01)) for i in (1, 3)],
+                                                   setter("dist2", np.full((1, 6), 0.01))), "key 'dist2'"),
 }
 
 
-@pytest.mark.parametrize("key", sorted(BROKEN))
-def test_malformed_key_is_named_and_nothing_is_written(tmp_path, key):
-    scene = make_scene(tmp_path, points=3, lines=3, seed=1)
-    problem = break_problem(tmp_path, scene, BROKEN[key])
-    proc, out = estimate(tmp_path, problem)
-    assert proc.returncode != 0
-    assert key in proc.stderr, proc.stderr
+def files_in(folder):
+    return sorted(p.name for p in folder.iterdir())
+
+
+def expect_rejected(tmp_path, problem, names, *extra):
+    """Non-zero exit, stderr names the key or argument, and nothing written: neither the result
+    nor a partial file."""
+    before = files_in(tmp_path)
+    proc, out = estimate(tmp_path, problem, *extra)
+    assert proc.returncode != 0, proc.stdout
+    assert names in proc.stderr, proc.stderr
     assert not out.exists()
-    assert not list(tmp_path.glob("result.partial*"))
+    assert files_in(tmp_path) == before
+
+
+@pytest.fixture(scope="module")
+def valid_scene(tmp_path_factory):
+    return make_scene(tmp_path_factory.mktemp("scene"), points=3, lines=3, seed=1)
+
+
+def test_catalogue_problem_is_valid(tmp_path, valid_scene):
+    # Every kind below breaks exactly one thing in this problem, which both methods accept.
+    problem = break_problem(tmp_path, valid_scene, lambda v: None)
+    for method in ("linear", "ransac"):
+        proc, out = estimate(tmp_path, problem, "--method", method, name=f"{method}.yml")
+        assert proc.returncode == 0, proc.stderr
+        assert out.exists()
+
+
+@pytest.mark.parametrize("kind", sorted(CATALOGUE))
+@pytest.mark.parametrize("method", ["linear", "ransac"])
+def test_bad_input_is_named_and_nothing_is_written(tmp_path, valid_scene, kind, method):
+    change, names = CATALOGUE[kind]
+    problem = break_problem(tmp_path, valid_scene, change)
+    expect_rejected(tmp_path, problem, names, "--method", method)
 
 
 @pytest.mark.parametrize("args,name", [
-    (["--method", "magic"], "--method"),
-    (["--threshold", "-1", "--method", "ransac"], "--threshold"),
-    (["--threshold", "abc", "--method", "ransac"], "--threshold"),
-    (["--refine", "2", "--method", "ransac"], "--refine"),
+    (["--method", "magic"], "argument --method"),
+    (["--threshold", "-1", "--method", "ransac"], "argument --threshold"),
+    (["--threshold", "0", "--method", "ransac"], "argument --threshold"),
+    (["--threshold", "nan", "--method", "ransac"], "argument --threshold"),
+    (["--threshold", "abc", "--method", "ransac"], "argument --threshold"),
+    (["--confidence", "0", "--method", "ransac"], "argument --confidence"),
+    (["--confidence", "1", "--method", "ransac"], "argument --confidence"),
+    (["--max-iterations", "0", "--method", "ransac"], "argument --max-iterations"),
+    (["--max-iterations", "2.5", "--method", "ransac"], "argument --max-iterations"),
+    (["--refine", "2", "--method", "ransac"], "argument --refine"),
 ])
-def test_bad_arguments_are_named(tmp_path, args, name):
-    scene = make_scene(tmp_path, points=3, lines=3, seed=1)
-    proc, out = estimate(tmp_path, scene, *args)
-    assert proc.returncode != 0
-    assert name in proc.stderr
-    assert not out.exists()
+def test_bad_arguments_are_named(tmp_path, valid_scene, args, name):
+    expect_rejected(tmp_path, valid_scene, name, *args)
 
 
 def test_unparsable_file_is_rejected(tmp_path):
@@ -131,3 +257,50 @@ def test_unparsable_file_is_rejected(tmp_path):
     proc, out = estimate(tmp_path, problem)
     assert proc.returncode != 0
     assert not out.exists()
+
+
+def test_matrix_header_larger_than_its_data_is_rejected(tmp_path):
+    # Regression (fuzz_problem_reader): OpenCV allocates what a matrix header declares before it
+    # checks the data, so a corrupt header could ask for gigabytes; the reader rejects it first.
+    problem = tmp_path / "huge.yml"
+    problem.write_text("%YAML:1.0\n---\nK1: !!opencv-matrix\n   rows: 100000\n   cols: 100000\n"
+                       "   dt: d\n   data: [ 1. ]\n")
+    expect_rejected(tmp_path, problem, "key 'K1'")
+    proc, _ = estimate(tmp_path, problem)
+    assert "header declares 10000000000 elements" in proc.stderr, proc.stderr  # before any allocation
+
+
+@pytest.mark.parametrize("text", ["%YAML:1.0\n---\n- 1\n- 2\n", "%YAML:1.0\n---\n"])
+def test_problem_that_is_not_a_map_is_rejected(tmp_path, text):
+    # Regression (fuzz_problem_reader): a key looked up in a top level that is not a map was an
+    # OpenCV assertion escaping the reader, not a message about the problem.
+    problem = tmp_path / "not_a_map.yml"
+    problem.write_text(text)
+    expect_rejected(tmp_path, problem, "map of keys")
+
+
+def test_parser_failure_inside_opencv_is_a_parse_error(tmp_path):
+    # Regression (fuzz_problem_reader): on this corrupt file (a key repeated inside a matrix)
+    # OpenCV 4.6's YAML parser throws std::length_error, which left the reader unexplained.
+    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
+    problem = tmp_path / "corrupt.yml"
+    problem.write_bytes((regression / "opencv_parser_length_error_on_repeated_key").read_bytes()[1:])
+    expect_rejected(tmp_path, problem, "cannot parse")
+
+
+@pytest.mark.parametrize("text", ["%YAML:1.0\n---K1: 0\n----\n", "%YAML:1.0\n---,K1: 0\n----matrix\n"])
+def test_text_that_hangs_the_yaml_parser_is_rejected(tmp_path, text):
+    # Regression (fuzz_problem_reader): OpenCV 4.6's YAML parser never returns on these; the reader
+    # rejects a line that starts with '---' but is not the document marker before parsing.
+    problem = tmp_path / "hang.yml"
+    problem.write_text(text)
+    expect_rejected(tmp_path, problem, "not a document marker")
+
+
+def test_later_document_that_is_not_a_map_is_a_parse_error(tmp_path):
+    # Regression (fuzz_problem_reader): OpenCV looks a key up in every document of the file and
+    # asserts that each is a map; that assertion escaped the reader.
+    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
+    problem = tmp_path / "documents.yml"
+    problem.write_bytes((regression / "second_document_not_a_map").read_bytes()[1:])
+    expect_rejected(tmp_path, problem, "cannot parse")

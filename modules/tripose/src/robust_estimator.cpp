@@ -282,8 +282,12 @@ private:
             return 1;
         if (allInliers <= 0.0)
             return params_.maxIterations;
-        const double n = std::log(1.0 - params_.confidence) / std::log(1.0 - allInliers);
-        return (long)std::min<double>(std::ceil(n), params_.maxIterations);
+        // log1p: for a tiny all-inlier probability 1 - p rounds to 1 and log(1 - p) to 0, which
+        // made n -inf and its conversion to an integer undefined.
+        const double n = std::log1p(-params_.confidence) / std::log1p(-allInliers);
+        if (!(n < params_.maxIterations))
+            return params_.maxIterations;
+        return (long)std::ceil(n);
     }
 
     const TripletData& data_;

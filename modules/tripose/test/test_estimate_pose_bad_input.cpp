@@ -2,103 +2,270 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
+// The bad-input catalogue: every kind of malformed argument, each breaking one thing in a valid
+// problem, must raise a cv::Exception whose message names the argument. Kinds of the shared inputs
+// are checked through all three entry points (linear solver, robust estimator, refinement); the
+// same catalogue runs through the command-line tool (test/python/test_cli_estimate.py) and through
+// cv2.tripose (misc/python/test/test_tripose.py).
+
+#include <cctype>
+
 #include "test_pose_common.hpp"
 
 namespace opencv_test {
 namespace {
 
+enum Api { LINEAR, RANSAC, REFINE };
+
+const char* apiName(Api api)
+{
+    return api == LINEAR ? "estimatePoseLinePoint" : api == RANSAC ? "estimatePoseLinePointRansac" : "refinePoseLinePoint";
+}
+
 //! The arguments of one call, starting from a valid problem; each test breaks one thing.
 struct Call
 {
     Mat p1, p2, p3, l1, l2, l3, K, dist, R12, t12;
-    std::vector<Mat> Ks;
+    std::vector<Mat> Ks, dists;
     int method = tripose::POSE_LINEAR;
+    bool candidatesAsMat = false;      // pass Rs as a Mat instead of a vector of Mat
+    tripose::RansacParams ransac;
+    tripose::RefineParams refine;
+    Mat R0, t0;                        // initial pose of the refinement
 
     explicit Call(const tripose::SyntheticScene& s)
         : p1(s.points1.clone()), p2(s.points2.clone()), p3(s.points3.clone()),
           l1(s.lines1.clone()), l2(s.lines2.clone()), l3(s.lines3.clone()),
-          K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone())
+          K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()),
+          R0(s.R.clone()), t0(s.t.clone())
     {}
 
-    int run() const
+    //! Solutions (linear), inliers (robust) or 1 for a finite refinement.
+    int run(Api api) const
     {
+        // Either a vector of intrinsics (Ks) or one matrix; the same for distortion.
+        const _InputArray cameraMatrix = Ks.empty() ? _InputArray(K) : _InputArray(Ks);
+        const _InputArray distCoeffs = dists.empty() ? _InputArray(dist) : _InputArray(dists);
         Mat R, t;
-        if (!Ks.empty())
-            return tripose::estimatePoseLinePoint(p1, p2, p3, l1, l2, l3, Ks, dist, R12, t12, R, t, method);
-        return tripose::estimatePoseLinePoint(p1, p2, p3, l1, l2, l3, K, dist, R12, t12, R, t, method);
+        switch (api)
+        {
+        case LINEAR:
+        {
+            std::vector<Mat> Rs;
+            Mat RsMat;
+            const _OutputArray candidates = candidatesAsMat ? _OutputArray(RsMat) : _OutputArray(Rs);
+            return tripose::estimatePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12, R, t,
+                                                  method, candidates);
+        }
+        case RANSAC:
+            return tripose::estimatePoseLinePointRansac(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12,
+                                                        R, t, ransac);
+        case REFINE:
+        default:
+            R = R0.clone();
+            t = t0.clone();
+            return std::isfinite(tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12,
+                                                              t12, R, t, refine)) ? 1 : 0;
+        }
     }
 };
 
-//! Runs the call and checks that it throws a cv::Exception whose message contains @p argument.
-void expectRejected(const Call& call, const std::string& argument)
+bool isIdentifierChar(char c)
+{
+    return std::isalnum((unsigned char)c) || c == '_';
+}
+
+//! True when @p message names @p argument as a whole word ("R" is not found in "R12" or "Rodrigues").
+bool namesArgument(const std::string& message, const std::string& argument)
+{
+    for (size_t at = message.find(argument); at != std::string::npos; at = message.find(argument, at + 1))
+    {
+        const size_t end = at + argument.size();
+        const bool startsWord = at == 0 || !(isIdentifierChar(message[at - 1]) || message[at - 1] == '.');
+        const bool endsWord = end == message.size() || !isIdentifierChar(message[end]);
+        if (startsWord && endsWord)
+            return true;
+    }
+    return false;
+}
+
+//! Runs the call through @p api and checks that it throws a cv::Exception whose message names @p argument.
+void expectRejectedBy(Api api, const Call& call, const std::string& argument)
 {
     try
     {
-        call.run();
-        ADD_FAILURE() << "no exception; expected one naming '" << argument << "'";
+        call.run(api);
+        ADD_FAILURE() << apiName(api) << ": no exception; expected one naming '" << argument << "'";
     }
     catch (const cv::Exception& e)
     {
-        EXPECT_NE(e.err.find(argument), std::string::npos)
-            << "message does not name '" << argument << "': " << e.err;
+        EXPECT_TRUE(namesArgument(e.err, argument))
+            << apiName(api) << ": message does not name '" << argument << "': " << e.err;
     }
 }
+
+//! A kind of the shared inputs: rejected by all three entry points alike.
+void expectRejected(const Call& call, const std::string& argument)
+{
+    expectRejectedBy(LINEAR, call, argument);
+    expectRejectedBy(RANSAC, call, argument);
+    expectRejectedBy(REFINE, call, argument);
+}
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
 
 class Tripose_BadInput : public testing::Test
 {
 protected:
     Tripose_BadInput() : call(makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 1)) {}
+    void keepFeatures(int points, int lines)
+    {
+        call.p1 = call.p1.rowRange(0, points).clone(); call.p2 = call.p2.rowRange(0, points).clone();
+        call.p3 = call.p3.rowRange(0, points).clone();
+        call.l1 = call.l1.rowRange(0, lines).clone(); call.l2 = call.l2.rowRange(0, lines).clone();
+        call.l3 = call.l3.rowRange(0, lines).clone();
+    }
     Call call;
 };
 
-TEST_F(Tripose_BadInput, valid_call_succeeds) { EXPECT_GT(call.run(), 0); }
+// The unbroken problem passes every entry point: each rejection below is caused by its one change.
+TEST_F(Tripose_BadInput, valid_call_succeeds)
+{
+    EXPECT_GT(call.run(LINEAR), 0);
+    EXPECT_GT(call.run(RANSAC), 0);
+    EXPECT_EQ(call.run(REFINE), 1);
+}
 
+// Shapes and types of the observations.
 TEST_F(Tripose_BadInput, points_with_wrong_width) { call.p2 = Mat::zeros(3, 3, CV_64F); expectRejected(call, "points2"); }
 TEST_F(Tripose_BadInput, points_with_integer_type) { call.p1.convertTo(call.p1, CV_32S); expectRejected(call, "points1"); }
-TEST_F(Tripose_BadInput, point_counts_differ) { call.p3 = call.p3.rowRange(0, 2).clone(); expectRejected(call, "points3"); }
-TEST_F(Tripose_BadInput, line_counts_differ) { call.l2 = call.l2.rowRange(0, 1).clone(); expectRejected(call, "lines2"); }
+TEST_F(Tripose_BadInput, points_with_three_channels) { call.p3 = Mat::zeros(3, 1, CV_64FC3); expectRejected(call, "points3"); }
 TEST_F(Tripose_BadInput, lines_with_wrong_width) { call.l1 = Mat::zeros(3, 5, CV_64F); expectRejected(call, "lines1"); }
+TEST_F(Tripose_BadInput, lines_with_two_channels) { call.l2 = Mat::zeros(3, 2, CV_64FC2); expectRejected(call, "lines2"); }
 TEST_F(Tripose_BadInput, segments_mixed_with_homogeneous_lines)
 {
     call.l3 = Mat::ones(3, 3, CV_64F);
     expectRejected(call, "lines3");
 }
+
+// Counts across views and in total.
+TEST_F(Tripose_BadInput, point_counts_differ) { call.p3 = call.p3.rowRange(0, 2).clone(); expectRejected(call, "points3"); }
+TEST_F(Tripose_BadInput, points_missing_in_one_view) { call.p2 = Mat(); expectRejected(call, "points2"); }
+TEST_F(Tripose_BadInput, line_counts_differ) { call.l2 = call.l2.rowRange(0, 1).clone(); expectRejected(call, "lines2"); }
 TEST_F(Tripose_BadInput, fewer_than_four_features)
 {
-    call.p1 = call.p1.rowRange(0, 1).clone(); call.p2 = call.p2.rowRange(0, 1).clone(); call.p3 = call.p3.rowRange(0, 1).clone();
-    call.l1 = call.l1.rowRange(0, 2).clone(); call.l2 = call.l2.rowRange(0, 2).clone(); call.l3 = call.l3.rowRange(0, 2).clone();
-    expectRejected(call, "at least 4 features");
+    keepFeatures(1, 2);
+    expectRejectedBy(LINEAR, call, "at least 4 features");
+    expectRejectedBy(RANSAC, call, "at least 4 features");
+}
+TEST_F(Tripose_BadInput, fewer_than_three_features_to_refine)
+{
+    keepFeatures(1, 1);
+    expectRejectedBy(REFINE, call, "at least 3 features");
 }
 TEST_F(Tripose_BadInput, nothing_at_all)
 {
     call.p1 = call.p2 = call.p3 = Mat();
     call.l1 = call.l2 = call.l3 = Mat();
-    expectRejected(call, "at least 4 features");
+    expectRejectedBy(LINEAR, call, "at least 4 features");
+    expectRejectedBy(RANSAC, call, "at least 4 features");
+    expectRejectedBy(REFINE, call, "at least 3 features");
 }
-TEST_F(Tripose_BadInput, nan_in_points) { call.p2.at<double>(1, 0) = std::numeric_limits<double>::quiet_NaN(); expectRejected(call, "points2"); }
-TEST_F(Tripose_BadInput, inf_in_lines) { call.l3.at<double>(0, 3) = std::numeric_limits<double>::infinity(); expectRejected(call, "lines3"); }
+
+// Values of the observations.
+TEST_F(Tripose_BadInput, nan_in_points) { call.p2.at<double>(1, 0) = kNaN; expectRejected(call, "points2"); }
+TEST_F(Tripose_BadInput, inf_in_lines) { call.l3.at<double>(0, 3) = kInf; expectRejected(call, "lines3"); }
 TEST_F(Tripose_BadInput, zero_length_segment)
 {
     call.l2.at<double>(1, 2) = call.l2.at<double>(1, 0);
     call.l2.at<double>(1, 3) = call.l2.at<double>(1, 1);
     expectRejected(call, "lines2");
 }
+TEST_F(Tripose_BadInput, homogeneous_line_with_zero_normal)
+{
+    call.l1 = call.l2 = call.l3 = (Mat_<double>(3, 3) << 1, 0, -300, 0, 1, -200, 1, 1, -500);
+    call.l1 = call.l1.clone();
+    call.l1.at<double>(2, 0) = call.l1.at<double>(2, 1) = 0;
+    expectRejected(call, "lines1");
+}
+
+// The known pose of view 2.
 TEST_F(Tripose_BadInput, R12_not_a_rotation) { call.R12 = call.R12 * 1.1; expectRejected(call, "R12"); }
 TEST_F(Tripose_BadInput, R12_reflection) { call.R12 = -call.R12; expectRejected(call, "R12"); }
 TEST_F(Tripose_BadInput, R12_wrong_shape) { call.R12 = Mat::eye(2, 2, CV_64F); expectRejected(call, "R12"); }
+TEST_F(Tripose_BadInput, R12_integer_type) { call.R12 = Mat::eye(3, 3, CV_32S); expectRejected(call, "R12"); }
+TEST_F(Tripose_BadInput, nan_in_R12) { call.R12.at<double>(0, 1) = kNaN; expectRejected(call, "R12"); }
 TEST_F(Tripose_BadInput, t12_zero) { call.t12 = Mat::zeros(3, 1, CV_64F); expectRejected(call, "t12"); }
 TEST_F(Tripose_BadInput, t12_wrong_size) { call.t12 = Mat::ones(4, 1, CV_64F); expectRejected(call, "t12"); }
+TEST_F(Tripose_BadInput, inf_in_t12) { call.t12.at<double>(2) = -kInf; expectRejected(call, "t12"); }
+
+// Intrinsics.
 TEST_F(Tripose_BadInput, camera_matrix_negative_focal) { call.K.at<double>(0, 0) = -800; expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, camera_matrix_zero_focal) { call.K.at<double>(1, 1) = 0; expectRejected(call, "cameraMatrix"); }
 TEST_F(Tripose_BadInput, camera_matrix_singular) { call.K.at<double>(2, 2) = 0; expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, camera_matrix_not_upper_triangular) { call.K.at<double>(1, 0) = 5; expectRejected(call, "cameraMatrix"); }
 TEST_F(Tripose_BadInput, camera_matrix_wrong_shape) { call.K = Mat::eye(3, 4, CV_64F); expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, camera_matrix_integer_type) { call.K.convertTo(call.K, CV_32S); expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, nan_in_camera_matrix) { call.K.at<double>(0, 2) = kNaN; expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, camera_matrix_missing) { call.K = Mat(); expectRejected(call, "cameraMatrix"); }
 TEST_F(Tripose_BadInput, two_camera_matrices) { call.Ks = { call.K, call.K }; expectRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_BadInput, one_of_three_camera_matrices_bad)
+{
+    Mat bad = call.K.clone();
+    bad.at<double>(0, 0) = -1;
+    call.Ks = { call.K, bad, call.K };
+    expectRejected(call, "cameraMatrix[1]");
+}
+
+// Distortion.
 TEST_F(Tripose_BadInput, distortion_with_wrong_count) { call.dist = Mat::zeros(1, 6, CV_64F); call.dist.at<double>(0) = 0.1; expectRejected(call, "distCoeffs"); }
+TEST_F(Tripose_BadInput, distortion_as_matrix) { call.dist = Mat::zeros(2, 4, CV_64F); expectRejected(call, "distCoeffs"); }
+TEST_F(Tripose_BadInput, nan_in_distortion) { call.dist = (Mat_<double>(1, 5) << 0.1, kNaN, 0, 0, 0); expectRejected(call, "distCoeffs"); }
+TEST_F(Tripose_BadInput, two_distortion_vectors)
+{
+    const Mat d = Mat::zeros(1, 5, CV_64F);
+    call.dists = { d, d };
+    expectRejected(call, "distCoeffs");
+}
 TEST_F(Tripose_BadInput, homogeneous_lines_with_distortion)
 {
     call.l1 = call.l2 = call.l3 = (Mat_<double>(3, 3) << 1, 0, -300, 0, 1, -200, 1, 1, -500);
     call.dist = (Mat_<double>(1, 4) << 0.1, 0, 0, 0);
     expectRejected(call, "lines1");
 }
-TEST_F(Tripose_BadInput, unknown_method) { call.method = 42; expectRejected(call, "method"); }
+
+// Flags and outputs of the linear solver.
+TEST_F(Tripose_BadInput, unknown_method) { call.method = 42; expectRejectedBy(LINEAR, call, "method"); }
+TEST_F(Tripose_BadInput, candidates_output_not_a_vector) { call.candidatesAsMat = true; expectRejectedBy(LINEAR, call, "Rs"); }
+
+// Parameters of the robust estimator.
+TEST_F(Tripose_BadInput, ransac_threshold_zero) { call.ransac.threshold = 0; expectRejectedBy(RANSAC, call, "params.threshold"); }
+TEST_F(Tripose_BadInput, ransac_threshold_not_finite) { call.ransac.threshold = kInf; expectRejectedBy(RANSAC, call, "params.threshold"); }
+TEST_F(Tripose_BadInput, ransac_confidence_zero) { call.ransac.confidence = 0; expectRejectedBy(RANSAC, call, "params.confidence"); }
+TEST_F(Tripose_BadInput, ransac_confidence_one) { call.ransac.confidence = 1; expectRejectedBy(RANSAC, call, "params.confidence"); }
+TEST_F(Tripose_BadInput, ransac_max_iterations_zero) { call.ransac.maxIterations = 0; expectRejectedBy(RANSAC, call, "params.maxIterations"); }
+
+// Parameters and initial pose of the refinement.
+TEST_F(Tripose_BadInput, refine_max_iterations_negative) { call.refine.maxIterations = -1; expectRejectedBy(REFINE, call, "params.maxIterations"); }
+TEST_F(Tripose_BadInput, refine_unknown_loss) { call.refine.loss = 7; expectRejectedBy(REFINE, call, "params.loss"); }
+TEST_F(Tripose_BadInput, refine_loss_scale_zero) { call.refine.lossScale = 0; expectRejectedBy(REFINE, call, "params.lossScale"); }
+TEST_F(Tripose_BadInput, refine_negative_tolerance) { call.refine.tolerance = -1e-3; expectRejectedBy(REFINE, call, "params.tolerance"); }
+TEST_F(Tripose_BadInput, refine_initial_R_not_a_rotation) { call.R0 = 2.0 * call.R0; expectRejectedBy(REFINE, call, "R"); }
+TEST_F(Tripose_BadInput, refine_initial_R_nan) { call.R0.at<double>(2, 2) = kNaN; expectRejectedBy(REFINE, call, "R"); }
+TEST_F(Tripose_BadInput, refine_initial_t_wrong_size) { call.t0 = Mat::ones(2, 1, CV_64F); expectRejectedBy(REFINE, call, "t"); }
+TEST_F(Tripose_BadInput, refine_initial_t_inf) { call.t0.at<double>(0) = kInf; expectRejectedBy(REFINE, call, "t"); }
+
+// The matcher itself must be able to fail: a message naming only a longer word does not count.
+TEST(Tripose_BadInputMessage, argument_is_named_as_a_whole_word)
+{
+    EXPECT_TRUE(namesArgument("R is not a rotation", "R"));
+    EXPECT_TRUE(namesArgument("params.threshold must be positive", "params.threshold"));
+    EXPECT_TRUE(namesArgument("cameraMatrix[1] must be 3x3", "cameraMatrix[1]"));
+    EXPECT_FALSE(namesArgument("R12 is not a rotation", "R"));
+    EXPECT_FALSE(namesArgument("Rodrigues vector", "R"));
+    EXPECT_FALSE(namesArgument("at least 4 features", "t"));
+    EXPECT_FALSE(namesArgument("params.maxIterations must be positive", "maxIterations"));
+}
 
 }} // namespace

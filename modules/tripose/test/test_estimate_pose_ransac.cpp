@@ -132,4 +132,26 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
     expectNamed(p, "params.maxIterations");
 }
 
+// Regression: with an all-inlier probability below 1e-16 (here about 4e-5 ^ 4), 1 - p rounded to 1,
+// the adaptive iteration bound became -inf and its conversion to an integer was undefined (caught
+// by the sanitizer build, scripts/test_sanitizers.sh; a release build stopped sampling at once).
+TEST(Tripose_RansacRegression, iteration_bound_with_a_tiny_inlier_ratio)
+{
+    tripose::SyntheticSceneParams sp;
+    sp.numPoints = 100000;
+    sp.numLines = 0;
+    sp.outlierRatio = 0.99995;   // 5 true matches
+    sp.seed = 3;
+    const tripose::SyntheticScene s = tripose::generateSyntheticScene(sp);
+    tripose::RansacParams params;
+    params.threshold = 1.0;      // a few wrong matches fall within it by chance
+    params.maxIterations = 20;
+    params.refine = false;
+    Mat R, t, pointMask, lineMask;
+    const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
+    EXPECT_GE(inliers, 0);
+    EXPECT_LT(inliers, 100) << "1 px gathers a few random matches, not hundreds";
+    EXPECT_EQ(inliers, cv::countNonZero(pointMask));
+}
+
 }} // namespace

@@ -7,6 +7,8 @@ Run inside an OpenCV build (scripts/test_intree.sh does it):
 
 from __future__ import print_function
 
+import re
+
 import numpy as np
 import cv2 as cv
 
@@ -180,24 +182,149 @@ class tripose_test(NewOpenCVTests):
         self.check_pose(R, t, scene, 1e-4, 1e-3, 'float32 input')
 
     def test_bad_input(self):
-        scene = make_scene(6, 6, seed=2)
+        # The bad-input catalogue of test_estimate_pose_bad_input.cpp through cv2.tripose: each kind
+        # breaks one thing in a valid problem and must raise cv.error naming the argument. Kinds of
+        # the shared inputs go through all three functions. Not expressible from Python: an Rs
+        # output that is not a vector (outputs are returned, always as lists).
+        scene = make_scene(3, 3, seed=1)
+        K = np.asarray(scene.cameraMatrices[0])
+        valid = dict(points1=scene.points1, points2=scene.points2, points3=scene.points3,
+                     lines1=scene.lines1, lines2=scene.lines2, lines3=scene.lines3,
+                     cameraMatrix=[K], distCoeffs=None, R12=scene.R12, t12=scene.t12)
 
-        def expect_error(mentions, **changes):
-            args = dict(points1=scene.points1, points2=scene.points2, points3=scene.points3,
-                        lines1=scene.lines1, lines2=scene.lines2, lines3=scene.lines3,
-                        cameraMatrix=scene.cameraMatrices, distCoeffs=None,
-                        R12=scene.R12, t12=scene.t12)
+        def call(api, changes, params=None, method=None, R=None, t=None):
+            args = dict(valid)
             args.update(changes)
-            with self.assertRaises(cv.error) as ctx:
-                cv.tripose.estimatePoseLinePoint(**args)
-            self.assertIn(mentions, str(ctx.exception))
+            if api == 'linear':
+                extra = {} if method is None else dict(method=method)
+                return cv.tripose.estimatePoseLinePoint(**dict(args, **extra))[0]
+            if api == 'ransac':
+                return cv.tripose.estimatePoseLinePointRansac(
+                    **dict(args, params=params or cv.tripose.RansacParams()))[0]
+            R0 = np.array(scene.R) if R is None else R
+            t0 = np.array(scene.t) if t is None else t
+            return cv.tripose.refinePoseLinePoint(
+                **dict(args, R=R0, t=t0, params=params or cv.tripose.RefineParams()))[0]
 
-        expect_error('points2', points2=scene.points2[:5])          # count differs from view 1
-        expect_error('lines3', lines3=scene.lines3[:, :2].copy())    # neither 4 nor 3 columns
-        expect_error('t12', t12=np.zeros((3, 1)))                    # the scale would be undefined
-        expect_error('R12', R12=2.0 * scene.R12)                     # not a rotation
-        expect_error('cameraMatrix', cameraMatrix=[np.eye(2)])       # not 3x3
-        expect_error('distCoeffs', distCoeffs=[np.zeros(3)])         # not 4, 5, 8, 12 or 14 values
+        def names(message, argument):
+            # A whole word: 'R' is not named by 'R12' or 'Rodrigues'.
+            return re.search(r'(?<![\w.])' + re.escape(argument) + r'(?!\w)', message) is not None
+
+        def expect_error(kind, argument, apis=('linear', 'ransac', 'refine'), **kw):
+            for api in apis:
+                with self.assertRaises(cv.error, msg='%s through %s' % (kind, api)) as ctx:
+                    call(api, **kw)
+                message = getattr(ctx.exception, 'err', str(ctx.exception))
+                self.assertTrue(names(message, argument),
+                                '%s through %s: message does not name %s: %s' % (kind, api, argument, message))
+
+        # The unbroken problem passes every function: each rejection is caused by its one change.
+        self.assertGreater(call('linear', {}), 0)
+        self.assertGreater(call('ransac', {}), 0)
+        self.assertTrue(np.isfinite(call('refine', {})))
+
+        nan, inf = np.nan, np.inf
+
+        def with_value(a, index, x):
+            a = np.array(a, dtype=np.float64)
+            a[index] = x
+            return a
+
+        first = lambda n: dict(points1=scene.points1[:n[0]], points2=scene.points2[:n[0]], points3=scene.points3[:n[0]],
+                               lines1=scene.lines1[:n[1]], lines2=scene.lines2[:n[1]], lines3=scene.lines3[:n[1]])
+        segment = np.array(scene.lines2, dtype=np.float64)
+        segment[1, 2:] = segment[1, :2]
+        homogeneous = np.array([[1, 0, -300], [0, 1, -200], [1, 1, -500]], dtype=np.float64)
+        bad_K = with_value(K, (0, 0), -1.0)
+        d5 = np.zeros(5)
+
+        # shapes and types of the observations
+        expect_error('points_with_wrong_width', 'points2', changes=dict(points2=np.zeros((3, 3))))
+        expect_error('points_with_integer_type', 'points1', changes=dict(points1=scene.points1.astype(np.int32)))
+        expect_error('points_with_three_channels', 'points3', changes=dict(points3=np.zeros((3, 1, 3))))
+        expect_error('lines_with_wrong_width', 'lines1', changes=dict(lines1=np.zeros((3, 5))))
+        expect_error('lines_with_two_channels', 'lines2', changes=dict(lines2=np.zeros((3, 2, 2))))
+        expect_error('segments_mixed_with_homogeneous_lines', 'lines3', changes=dict(lines3=np.ones((3, 3))))
+        # counts
+        expect_error('point_counts_differ', 'points3', changes=dict(points3=scene.points3[:2]))
+        expect_error('points_missing_in_one_view', 'points2', changes=dict(points2=None))
+        expect_error('line_counts_differ', 'lines2', changes=dict(lines2=scene.lines2[:1]))
+        expect_error('fewer_than_four_features', 'at least 4 features', ('linear', 'ransac'), changes=first((1, 2)))
+        expect_error('fewer_than_three_features_to_refine', 'at least 3 features', ('refine',), changes=first((1, 1)))
+        nothing = dict(points1=None, points2=None, points3=None, lines1=None, lines2=None, lines3=None)
+        expect_error('nothing_at_all', 'at least 4 features', ('linear', 'ransac'), changes=nothing)
+        expect_error('nothing_at_all', 'at least 3 features', ('refine',), changes=nothing)
+        # values of the observations
+        expect_error('nan_in_points', 'points2', changes=dict(points2=with_value(scene.points2, (1, 0), nan)))
+        expect_error('inf_in_lines', 'lines3', changes=dict(lines3=with_value(scene.lines3, (0, 3), inf)))
+        expect_error('zero_length_segment', 'lines2', changes=dict(lines2=segment))
+        expect_error('homogeneous_line_with_zero_normal', 'lines1',
+                     changes=dict(lines1=with_value(homogeneous, (2, slice(0, 2)), 0.0), lines2=homogeneous,
+                                  lines3=homogeneous))
+        # pose of view 2
+        expect_error('R12_not_a_rotation', 'R12', changes=dict(R12=1.1 * scene.R12))
+        expect_error('R12_reflection', 'R12', changes=dict(R12=-scene.R12))
+        expect_error('R12_wrong_shape', 'R12', changes=dict(R12=np.eye(2)))
+        expect_error('R12_integer_type', 'R12', changes=dict(R12=np.eye(3, dtype=np.int32)))
+        expect_error('nan_in_R12', 'R12', changes=dict(R12=with_value(scene.R12, (0, 1), nan)))
+        expect_error('t12_zero', 't12', changes=dict(t12=np.zeros((3, 1))))
+        expect_error('t12_wrong_size', 't12', changes=dict(t12=np.ones((4, 1))))
+        expect_error('inf_in_t12', 't12', changes=dict(t12=with_value(scene.t12, 2, -inf)))
+        # intrinsics
+        expect_error('camera_matrix_negative_focal', 'cameraMatrix', changes=dict(cameraMatrix=[with_value(K, (0, 0), -800)]))
+        expect_error('camera_matrix_zero_focal', 'cameraMatrix', changes=dict(cameraMatrix=[with_value(K, (1, 1), 0)]))
+        expect_error('camera_matrix_singular', 'cameraMatrix', changes=dict(cameraMatrix=[with_value(K, (2, 2), 0)]))
+        expect_error('camera_matrix_not_upper_triangular', 'cameraMatrix',
+                     changes=dict(cameraMatrix=[with_value(K, (1, 0), 5)]))
+        expect_error('camera_matrix_wrong_shape', 'cameraMatrix', changes=dict(cameraMatrix=[np.eye(3, 4)]))
+        expect_error('camera_matrix_integer_type', 'cameraMatrix', changes=dict(cameraMatrix=[K.astype(np.int32)]))
+        expect_error('nan_in_camera_matrix', 'cameraMatrix', changes=dict(cameraMatrix=[with_value(K, (0, 2), nan)]))
+        expect_error('camera_matrix_missing', 'cameraMatrix', changes=dict(cameraMatrix=[]))
+        expect_error('two_camera_matrices', 'cameraMatrix', changes=dict(cameraMatrix=[K, K]))
+        expect_error('one_of_three_camera_matrices_bad', 'cameraMatrix[1]', changes=dict(cameraMatrix=[K, bad_K, K]))
+        # distortion
+        expect_error('distortion_with_wrong_count', 'distCoeffs', changes=dict(distCoeffs=[with_value(np.zeros(6), 0, 0.1)]))
+        expect_error('distortion_as_matrix', 'distCoeffs', changes=dict(distCoeffs=[np.zeros((2, 4))]))
+        expect_error('nan_in_distortion', 'distCoeffs', changes=dict(distCoeffs=[with_value(d5, 1, nan)]))
+        expect_error('two_distortion_vectors', 'distCoeffs', changes=dict(distCoeffs=[d5, d5]))
+        expect_error('homogeneous_lines_with_distortion', 'lines1',
+                     changes=dict(lines1=homogeneous, lines2=homogeneous, lines3=homogeneous,
+                                  distCoeffs=[np.array([0.1, 0, 0, 0])]))
+        # flags of the linear solver
+        expect_error('unknown_method', 'method', ('linear',), changes={}, method=42)
+
+        # parameters of the robust estimator
+        def ransac(**fields):
+            p = cv.tripose.RansacParams()
+            for name, value in fields.items():
+                setattr(p, name, value)
+            return p
+        expect_error('ransac_threshold_zero', 'params.threshold', ('ransac',), changes={}, params=ransac(threshold=0.0))
+        expect_error('ransac_threshold_not_finite', 'params.threshold', ('ransac',), changes={},
+                     params=ransac(threshold=inf))
+        expect_error('ransac_confidence_zero', 'params.confidence', ('ransac',), changes={},
+                     params=ransac(confidence=0.0))
+        expect_error('ransac_confidence_one', 'params.confidence', ('ransac',), changes={},
+                     params=ransac(confidence=1.0))
+        expect_error('ransac_max_iterations_zero', 'params.maxIterations', ('ransac',), changes={},
+                     params=ransac(maxIterations=0))
+
+        # parameters and initial pose of the refinement
+        def refine(**fields):
+            p = cv.tripose.RefineParams()
+            for name, value in fields.items():
+                setattr(p, name, value)
+            return p
+        expect_error('refine_max_iterations_negative', 'params.maxIterations', ('refine',), changes={},
+                     params=refine(maxIterations=-1))
+        expect_error('refine_unknown_loss', 'params.loss', ('refine',), changes={}, params=refine(loss=7))
+        expect_error('refine_loss_scale_zero', 'params.lossScale', ('refine',), changes={}, params=refine(lossScale=0.0))
+        expect_error('refine_negative_tolerance', 'params.tolerance', ('refine',), changes={},
+                     params=refine(tolerance=-1e-3))
+        expect_error('refine_initial_R_not_a_rotation', 'R', ('refine',), changes={}, R=2.0 * np.array(scene.R))
+        expect_error('refine_initial_R_nan', 'R', ('refine',), changes={}, R=with_value(scene.R, (2, 2), nan))
+        expect_error('refine_initial_t_wrong_size', 't', ('refine',), changes={}, t=np.ones((2, 1)))
+        expect_error('refine_initial_t_inf', 't', ('refine',), changes={}, t=with_value(scene.t, 0, inf))
 
     def test_robust(self):
         if not hasattr(cv.tripose, 'estimatePoseLinePointRansac'):

@@ -1,0 +1,58 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// libFuzzer target over the problem reader of the command-line tools (samples/common/problem_io):
+// the first byte picks the format (even: YAML, odd: JSON), the rest is the FileStorage text. The
+// reader's contract is a Problem or a std::runtime_error naming the key; any other exception, a
+// crash or a sanitizer report is a bug. What it returns is checked against the shapes it promises.
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "problem_io.hpp"
+
+namespace {
+
+[[noreturn]] void fail(const char* what)
+{
+    std::fprintf(stderr, "tripose fuzz: %s\n", what);
+    std::abort();
+}
+
+void checkShapes(const tripose_samples::Problem& p)
+{
+    if (!(p.K.size() == 1 || p.K.size() == 3) || !(p.dist.empty() || p.dist.size() == 1 || p.dist.size() == 3))
+        fail("readProblemFromString: wrong number of K or dist");
+    for (const cv::Mat& K : p.K)
+        if (K.rows != 3 || K.cols != 3 || K.type() != CV_64F)
+            fail("readProblemFromString: K is not 3x3 CV_64F");
+    if (p.R12.total() != 9 && p.R12.total() != 3)
+        fail("readProblemFromString: R12 has neither 9 nor 3 elements");
+    if (p.t12.total() != 3)
+        fail("readProblemFromString: t12 does not have 3 elements");
+    for (int v = 0; v < 3; ++v)
+        if (p.points[v].cols != 2 || p.lines[v].cols != 4 || p.points[v].rows != p.points[0].rows ||
+            p.lines[v].rows != p.lines[0].rows)
+            fail("readProblemFromString: features of inconsistent shape");
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    if (size == 0)
+        return 0;
+    const std::string format = (data[0] & 1) ? ".json" : ".yml";
+    const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
+    try
+    {
+        checkShapes(tripose_samples::readProblemFromString(text, format));
+    }
+    catch (const std::runtime_error&)
+    {
+    }
+    return 0;
+}
