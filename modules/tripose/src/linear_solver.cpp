@@ -73,6 +73,26 @@ bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBa
     return kernel.allFinite();
 }
 
+/** Rotates the kernel basis within its span so that its vectors ascend in fit: the last one is the
+best single solution vector (the smallest Ritz value of A^T A). With noise the kernel combinations
+depend on the basis (N = 4 fixes the last vector's coefficient to one; N = 2, 3 linearise), and the
+arbitrary order of the QR cost the robust estimator much of its accuracy on real five- to
+ten-feature sets (VGG, three points + two lines: upper-quartile rotation error 3.7-5.3 deg, 1.0-1.3
+deg with this order). A rotation within the span keeps exact data exact.
+*/
+bool orderKernelBasis(const Matrix12d& normalMatrix, KernelBasis& kernel)
+{
+    typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> SmallMatrix;
+    const SmallMatrix ritz = kernel.transpose() * normalMatrix * kernel;
+    const Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen(ritz);
+    if (eigen.info() != Eigen::Success)
+        return false;
+    // Eigenvalues ascend; reversed, the best-fitting vector comes last.
+    const KernelBasis ordered = kernel * eigen.eigenvectors().rowwise().reverse();
+    kernel = ordered;
+    return kernel.allFinite();
+}
+
 //! True when @p pose (t in units of |t12|) equals, to polishing accuracy, one of poses[first..].
 bool isDuplicate(const CameraPose& pose, const std::vector<CameraPose>& poses, size_t first, double translationScale)
 {
@@ -135,7 +155,7 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     {
         // Four or five features: the kernel's edge is where exact data must stay exact.
         KernelBasis kernel;
-        if (!smallSystemKernel(A, numPoints, N, kernel))
+        if (!smallSystemKernel(A, numPoints, N, kernel) || !orderKernelBasis(normalMatrix, kernel))
             return 0;
         solveKernelCombinations(kernel, solutions);
     }
