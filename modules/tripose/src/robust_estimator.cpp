@@ -26,9 +26,16 @@ constexpr int kLocalOptimizationRounds = 3;
 // against twice the user's threshold. The final inliers use residuals over all three views
 // (threeViewResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
-// Twisted pairs double the hypotheses to score for little gain here: local optimisation and
-// refinement on the inliers repair the hypotheses that are merely close.
-constexpr bool kTwistedPairsInSamples = false;
+//! Candidates of a minimal sample. Twisted pairs double the hypotheses to score for little gain
+//! here: local optimisation and refinement on the inliers repair the hypotheses that are merely
+//! close. Without them, the kernel basis ordered by fit gives the better hypotheses.
+CandidateOptions sampleCandidateOptions()
+{
+    CandidateOptions options;
+    options.twistedPairs = false;
+    options.orderedKernel = true;
+    return options;
+}
 
 //! A model's support: MSAC cost and the inliers it implies.
 struct Support
@@ -75,6 +82,7 @@ public:
         SampleGenerator samples(numFeatures, kSampleSize, params_.maxIterations, (uint64)(int64)params_.seed);
         std::vector<int> sample(kSampleSize), samplePoints, sampleLines;
         std::vector<CameraPose> candidates;
+        const CandidateOptions sampleOptions = sampleCandidateOptions();
         long maxIterations = params_.maxIterations;
         int iteration = 0;
         for (; iteration < maxIterations && samples.next(sample); ++iteration)
@@ -84,7 +92,7 @@ public:
             for (int f : sample)
                 (f < data_.numPoints() ? samplePoints : sampleLines).push_back(f < data_.numPoints() ? f : f - data_.numPoints());
             candidates.clear();
-            linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines, kTwistedPairsInSamples);
+            linearPoseCandidates(data_, candidates, &samplePoints, &sampleLines, sampleOptions);
             if (!keepBest(candidates))
                 continue;
             if (params_.localOptimization)
