@@ -103,9 +103,10 @@ public:
         // all their residuals over the threshold (four features: the one sample has no redundancy
         // to test). Then the linear solution over all features, ranked as the linear solver ranks
         // it, goes on to the three-view inlier test below.
-        if (best_.inliers == 0 && samples.enumerates())
-            adoptLinearSolution();
-        if (!std::isfinite(best_.cost) || best_.inliers == 0)
+        bool haveModel = std::isfinite(best_.cost) && best_.inliers > 0;
+        if (!haveModel && samples.enumerates())
+            haveModel = adoptLinearSolution();
+        if (!haveModel)
             return false;
 
         estimate.iterations = iteration;
@@ -128,17 +129,17 @@ public:
     }
 
 private:
-    //! The linear solver's best pose over all features as the best model, with its support.
-    void adoptLinearSolution()
+    //! The linear solver's best pose over all features as the best model; false if it has none.
+    bool adoptLinearSolution()
     {
         std::vector<CameraPose> poses;
         linearPoseCandidates(data_, poses);
         const std::vector<ScoredPose> ranked = rankCandidates(data_, structure_, poses);
         if (ranked.empty())
-            return;
+            return false;
         bestPose_ = ranked.front().pose;
         best_ = support(bestPose_);
-        best_.inliers = std::max(best_.inliers, 1); // what it lacks is tested over three views below
+        return true;
     }
 
     //! Makes the cheapest of @p poses the best model if it beats it; true if it did.
