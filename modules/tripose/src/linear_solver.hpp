@@ -27,9 +27,10 @@ struct CandidateOptions
 
     //! Add each candidate's twisted pair (rotated by pi about the baseline).
     bool twistedPairs;
-    /** Four or five features: rotate the kernel basis so that its last vector fits best. Measured
-    (doc/accuracy.md): better hypotheses for the robust estimator, whose samples go without
-    twisted pairs, but more gross failures for the linear solver's minimal case with them.
+    /** Four or five features: rotate the kernel basis so that its last vector fits best. Measured:
+    better hypotheses for the robust estimator on small feature sets, whose samples go without
+    twisted pairs, but more gross failures for the linear solver's minimal case with them (2P+2L,
+    0.5 px: mean rotation error 13.8 deg instead of 9.5).
     */
     bool orderedKernel;
 };
