@@ -279,12 +279,17 @@ def test_problem_that_is_not_a_map_is_rejected(tmp_path, text):
     expect_rejected(tmp_path, problem, "map of keys")
 
 
+def reader_regression(name):
+    """The problem text of a fuzz_problem_reader regression input (its first byte picks the format)."""
+    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
+    return (regression / name).read_bytes()[1:]
+
+
 def test_parser_failure_inside_opencv_is_a_parse_error(tmp_path):
     # Regression (fuzz_problem_reader): on this corrupt file (a key repeated inside a matrix)
     # OpenCV 4.6's YAML parser throws std::length_error, which left the reader unexplained.
-    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
     problem = tmp_path / "corrupt.yml"
-    problem.write_bytes((regression / "opencv_parser_length_error_on_repeated_key").read_bytes()[1:])
+    problem.write_bytes(reader_regression("opencv_parser_length_error_on_repeated_key"))
     expect_rejected(tmp_path, problem, "cannot parse")
 
 
@@ -300,7 +305,6 @@ def test_text_that_hangs_the_yaml_parser_is_rejected(tmp_path, text):
 def test_later_document_that_is_not_a_map_is_a_parse_error(tmp_path):
     # Regression (fuzz_problem_reader): OpenCV looks a key up in every document of the file and
     # asserts that each is a map; that assertion escaped the reader.
-    regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
     problem = tmp_path / "documents.yml"
-    problem.write_bytes((regression / "second_document_not_a_map").read_bytes()[1:])
+    problem.write_bytes(reader_regression("second_document_not_a_map"))
     expect_rejected(tmp_path, problem, "cannot parse")
