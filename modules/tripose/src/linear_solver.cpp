@@ -75,10 +75,10 @@ bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBa
 
 /** Rotates the kernel basis within its span so that its vectors ascend in fit: the last one is the
 best single solution vector (the smallest Ritz value of A^T A). With noise the kernel combinations
-depend on the basis (N = 4 fixes the last vector's coefficient to one; N = 2, 3 linearise), and the
-arbitrary order of the QR cost the robust estimator much of its accuracy on real five- to
-ten-feature sets (VGG, three points + two lines: upper-quartile rotation error 3.7-5.3 deg, 1.0-1.3
-deg with this order). A rotation within the span keeps exact data exact.
+depend on the basis (N = 4 fixes the last vector's coefficient to one; N = 2, 3 linearise). For the
+robust estimator's samples the QR's arbitrary order cost much accuracy on real five- to ten-feature
+sets (VGG, three points + two lines: upper-quartile rotation error 3.7-5.3 deg, 1.0-1.3 deg with
+this order). A rotation within the span keeps exact data exact.
 */
 bool orderKernelBasis(const Matrix12d& normalMatrix, KernelBasis& kernel)
 {
@@ -112,7 +112,8 @@ int kernelDimensionFor(int numFeatures)
 }
 
 int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
-                         const std::vector<int>* pointIndices, const std::vector<int>* lineIndices, bool twistedPairs)
+                         const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
+                         const CandidateOptions& options)
 {
     const int numPoints = pointIndices ? (int)pointIndices->size() : data.numPoints();
     const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : data.numLines());
@@ -155,7 +156,8 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     {
         // Four or five features: the kernel's edge is where exact data must stay exact.
         KernelBasis kernel;
-        if (!smallSystemKernel(A, numPoints, N, kernel) || !orderKernelBasis(normalMatrix, kernel))
+        if (!smallSystemKernel(A, numPoints, N, kernel) ||
+            (options.orderedKernel && !orderKernelBasis(normalMatrix, kernel)))
             return 0;
         solveKernelCombinations(kernel, solutions);
     }
@@ -175,7 +177,7 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
         // often polish into the same minimum (N = 1 and N = 2 with noise, several roots for
         // N = 4): such a duplicate still goes to the selection (the closest to the exact pose
         // wins there), but its twisted pair would repeat one already polished.
-        const bool addTwisted = twistedPairs && !isDuplicate(pose, poses, first, translationScale) &&
+        const bool addTwisted = options.twistedPairs && !isDuplicate(pose, poses, first, translationScale) &&
                                 twistedPair(pose, system, twisted);
         pose.t *= translationScale;
         poses.push_back(pose);
