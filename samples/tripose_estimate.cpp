@@ -18,6 +18,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <opencv2/tripose.hpp>
 
@@ -53,17 +54,12 @@ struct Options
 Options parseArguments(int argc, char** argv)
 {
     Options o;
-    for (int i = 1; i < argc; ++i)
+    const std::vector<std::string> known = { "--input",      "--output",         "--method", "--threshold",
+                                             "--confidence", "--max-iterations", "--refine", "--seed" };
+    for (const auto& option : tripose_samples::optionPairs(argc, argv, kUsage, known))
     {
-        const std::string arg = argv[i];
-        if (arg == "--help" || arg == "-h")
-        {
-            std::cout << kUsage;
-            std::exit(0);
-        }
-        if (i + 1 >= argc)
-            throw std::runtime_error("argument " + arg + " needs a value");
-        const std::string value = argv[++i];
+        const std::string& arg = option.first;
+        const std::string& value = option.second;
         if (arg == "--input")
             o.input = value;
         else if (arg == "--output")
@@ -92,12 +88,8 @@ Options parseArguments(int argc, char** argv)
                 throw std::runtime_error("argument --refine: expected 0 or 1, got '" + value + "'");
             o.ransac.refine = value == "1";
         }
-        else if (arg == "--seed")
-        {
+        else // --seed
             o.ransac.seed = parseInteger(arg, value, -2147483647.0);
-        }
-        else
-            throw std::runtime_error("unknown argument " + arg);
     }
     if (o.input.empty())
         throw std::runtime_error("argument --input is required");

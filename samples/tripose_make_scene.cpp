@@ -18,6 +18,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <opencv2/tripose.hpp>
 
@@ -25,6 +26,7 @@
 #include "problem_io.hpp"
 
 using tripose_samples::argumentError;
+using tripose_samples::optionPairs;
 using tripose_samples::parseInteger;
 using tripose_samples::parseNumber;
 
@@ -58,20 +60,12 @@ bool hasExtension(const std::string& path, const std::string& extension)
 Options parseArguments(int argc, char** argv)
 {
     Options o;
-    for (int i = 1; i < argc; ++i)
+    const std::vector<std::string> known = { "--output", "--points",   "--lines", "--motion",
+                                             "--noise",  "--outliers", "--seed" };
+    for (const auto& option : optionPairs(argc, argv, kUsage, known))
     {
-        const std::string arg = argv[i];
-        if (arg == "--help" || arg == "-h")
-        {
-            std::cout << kUsage;
-            std::exit(0);
-        }
-        if (arg != "--output" && arg != "--points" && arg != "--lines" && arg != "--motion" && arg != "--noise" &&
-            arg != "--outliers" && arg != "--seed")
-            throw std::runtime_error("unknown argument " + arg + " (see --help)");
-        if (i + 1 >= argc)
-            throw argumentError(arg, "needs a value");
-        const std::string value = argv[++i];
+        const std::string& arg = option.first;
+        const std::string& value = option.second;
         if (arg == "--output")
             o.output = value;
         else if (arg == "--points")

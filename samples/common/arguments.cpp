@@ -4,13 +4,37 @@
 
 #include "arguments.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iostream>
 
 namespace tripose_samples {
 
 std::runtime_error argumentError(const std::string& arg, const std::string& what)
 {
     return std::runtime_error("argument " + arg + ": " + what);
+}
+
+std::vector<std::pair<std::string, std::string>> optionPairs(int argc, char** argv, const std::string& usage,
+                                                             const std::vector<std::string>& known)
+{
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+        {
+            std::cout << usage;
+            std::exit(0);
+        }
+        if (std::find(known.begin(), known.end(), arg) == known.end())
+            throw argumentError(arg, "unknown (see --help)");
+        if (i + 1 >= argc)
+            throw argumentError(arg, "needs a value");
+        pairs.emplace_back(arg, argv[++i]);
+    }
+    return pairs;
 }
 
 double parseNumber(const std::string& arg, const std::string& value)

@@ -8,8 +8,16 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tripose_samples {
+
+/** The command line as (option, value) pairs, in order. --help or -h prints @p usage and exits; an
+option not in @p known, or one without a value, is an argumentError naming it.
+*/
+std::vector<std::pair<std::string, std::string>> optionPairs(int argc, char** argv, const std::string& usage,
+                                                             const std::vector<std::string>& known);
 
 //! "argument <arg>: <what>".
 std::runtime_error argumentError(const std::string& arg, const std::string& what);
