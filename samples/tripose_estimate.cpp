@@ -10,7 +10,7 @@
 // The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
 // (or dist1..dist3), R12, t12, points1..points3 (Nx2) and lines1..lines3 (Mx4); either kind of
 // feature may be absent. The result holds num_solutions and, when a pose was found, R (3x3) and
-// t (3x1); with --method ransac also num_inliers, inliers_points and inliers_lines (one 0/1 per
+// t (3x1); with --method ransac also num_inliers, point_inliers and line_inliers (one 0/1 per
 // feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
 // 2 when the solver rejects the input (the message names the problem key). No output file is left
 // behind on failure.
@@ -36,7 +36,7 @@ const char* kUsage =
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4)\n"
     "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
-    "               (ransac: also num_inliers, inliers_points, inliers_lines)\n"
+    "               (ransac: also num_inliers, point_inliers, line_inliers)\n"
     "  --method     linear (default): the unified linear solver on all features;\n"
     "               ransac: robust estimation with outlier rejection and refinement\n"
     "  --threshold  ransac inlier threshold in pixels (default 2)\n"
@@ -156,7 +156,7 @@ int main(int argc, char** argv)
                 cv::Mat l = lineInliers.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(lineInliers.reshape(1, (int)lineInliers.total()));
                 p.convertTo(p, CV_32S);
                 l.convertTo(l, CV_32S);
-                fs << "num_inliers" << inliers << "inliers_points" << p << "inliers_lines" << l;
+                fs << "num_inliers" << inliers << "point_inliers" << p << "line_inliers" << l;
             }
         });
     }

@@ -74,11 +74,11 @@ def test_ransac_writes_inlier_masks(tmp_path):
     proc, out = estimate(tmp_path, scene, "--method", "ransac", "--threshold", "3", "--refine", "1")
     assert proc.returncode == 0, proc.stderr
     truth = read_matrices(scene, ["R_gt", "point_inliers", "line_inliers"])
-    result = read_matrices(out, ["R", "inliers_points", "inliers_lines"])
+    result = read_matrices(out, ["R", "point_inliers", "line_inliers"])
     assert rotation_error(result["R"], truth["R_gt"]) < np.deg2rad(1.0)
-    assert result["inliers_points"].size == 60 and result["inliers_lines"].size == 30
-    agree = np.mean(np.concatenate([result["inliers_points"].ravel() == truth["point_inliers"].ravel(),
-                                    result["inliers_lines"].ravel() == truth["line_inliers"].ravel()]))
+    assert result["point_inliers"].size == 60 and result["line_inliers"].size == 30
+    agree = np.mean(np.concatenate([result["point_inliers"].ravel() == truth["point_inliers"].ravel(),
+                                    result["line_inliers"].ravel() == truth["line_inliers"].ravel()]))
     assert agree >= 0.95
 
 

@@ -6,8 +6,8 @@
 
 #include "../src/opencv_compat.hpp"
 
-#include "../src/ml_refinement.hpp"
-#include "../src/triplet_input.hpp"
+#include "../src/refine/ml_refinement.hpp"
+#include "../src/input/problem_input.hpp"
 
 namespace opencv_test {
 namespace {
@@ -63,7 +63,7 @@ PERF_TEST_P(Tripose_RefinePoseEngine, refinePoseAndStructure, testing::ValuesIn(
     const tripose::SyntheticScene s = makeScene(GetParam());
     Mat R0, t0;
     startingPose(s, R0, t0);
-    const tripose::detail::TripletData data = tripose::detail::readTripletInput(
+    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose start;
     for (int r = 0; r < 3; ++r)

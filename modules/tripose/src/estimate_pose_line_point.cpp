@@ -4,10 +4,10 @@
 
 #include "precomp.hpp"
 
-#include "candidate_scoring.hpp"
-#include "linear_solver.hpp"
-#include "pose_conversion.hpp"
-#include "triplet_input.hpp"
+#include "input/pose_conversion.hpp"
+#include "input/problem_input.hpp"
+#include "linear/linear_solver.hpp"
+#include "scoring/pose_scorer.hpp"
 
 namespace cv {
 namespace tripose {
@@ -22,12 +22,12 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
     if (method != POSE_LINEAR)
         CV_Error_(Error::StsBadArg, ("method must be POSE_LINEAR (%d), got %d", (int)POSE_LINEAR, method));
 
-    const detail::TripletData data = detail::readTripletInput(points1, points2, points3, lines1, lines2, lines3,
-                                                              cameraMatrix, distCoeffs, R12, t12);
+    const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                             cameraMatrix, distCoeffs, R12, t12);
     std::vector<detail::CameraPose> poses;
-    detail::linearPoseCandidates(data, poses);
-    const detail::TwoViewStructure structure = detail::triangulateTwoViewStructure(data);
-    const std::vector<detail::ScoredPose> ranked = detail::rankCandidates(data, structure, poses);
+    detail::linearPoseCandidates(views, poses);
+    const detail::PoseScorer scorer(views);
+    const std::vector<detail::ScoredPose> ranked = detail::rankCandidates(scorer, poses);
 
     const int n = (int)ranked.size();
     if (n == 0)

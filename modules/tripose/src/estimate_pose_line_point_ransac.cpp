@@ -4,9 +4,11 @@
 
 #include "precomp.hpp"
 
-#include "pose_conversion.hpp"
-#include "robust_estimator.hpp"
-#include "triplet_input.hpp"
+#include "input/pose_conversion.hpp"
+#include "input/problem_input.hpp"
+#include "linear/linear_pose_solver.hpp"
+#include "refine/structure_refiner.hpp"
+#include "robust/robust_estimator.hpp"
 
 namespace cv {
 namespace tripose {
@@ -25,6 +27,8 @@ void validate(const RansacParams& p)
         CV_Error_(Error::StsBadArg, ("params.confidence must be in (0, 1), got %g", p.confidence));
     if (p.maxIterations <= 0)
         CV_Error_(Error::StsBadArg, ("params.maxIterations must be positive, got %d", p.maxIterations));
+    if (p.refine)
+        detail::checkRefineParams(p.refineParams, "params.refineParams");
 }
 
 void writeMask(const std::vector<unsigned char>& mask, OutputArray out)
@@ -39,24 +43,27 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 InputArray lines1, InputArray lines2, InputArray lines3,
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t,
-                                const RansacParams& params, OutputArray inliersPoints, OutputArray inliersLines)
+                                const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
 {
     CV_INSTRUMENT_REGION();
     validate(params);
-    const detail::TripletData data = detail::readTripletInput(points1, points2, points3, lines1, lines2, lines3,
-                                                              cameraMatrix, distCoeffs, R12, t12);
+    const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                             cameraMatrix, distCoeffs, R12, t12);
+    const detail::LinearPoseSolver solver(views);
+    const detail::PoseScorer scorer(views);
+    const detail::StructureRefiner refiner(views, params.refineParams);
     detail::RobustEstimate estimate;
-    if (!detail::estimatePoseRobust(data, params, estimate))
+    if (!detail::estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {
         R.release();
         t.release();
-        writeMask(std::vector<unsigned char>(data.numPoints(), 0), inliersPoints);
-        writeMask(std::vector<unsigned char>(data.numLines(), 0), inliersLines);
+        writeMask(std::vector<unsigned char>(views.numPoints, 0), pointInliers);
+        writeMask(std::vector<unsigned char>(views.numLines, 0), lineInliers);
         return 0;
     }
     detail::writePose(estimate.pose.R, estimate.pose.t, R, t);
-    writeMask(estimate.pointInliers, inliersPoints);
-    writeMask(estimate.lineInliers, inliersLines);
+    writeMask(estimate.pointInliers, pointInliers);
+    writeMask(estimate.lineInliers, lineInliers);
     return estimate.numInliers;
 }
 

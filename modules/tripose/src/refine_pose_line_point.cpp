@@ -7,8 +7,8 @@
 #include <Eigen/Dense>
 #include "opencv_compat.hpp"
 
-#include "ml_refinement.hpp"
-#include "triplet_input.hpp"
+#include "input/problem_input.hpp"
+#include "refine/ml_refinement.hpp"
 
 namespace cv {
 namespace tripose {
@@ -34,19 +34,6 @@ Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
     form.cols = m.cols;
     // Validated like R12; returned as an exact rotation, which the multiplicative update needs.
     return detail::readRotation(arr, "R");
-}
-
-Eigen::Vector3d readInitialTranslation(InputArray arr)
-{
-    const Mat m = arr.getMat();
-    if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) || m.total() * m.channels() != 3)
-        CV_Error(Error::StsBadArg, "t must be the initial translation of view 3: 3 elements, CV_32F or CV_64F");
-    Mat t;
-    m.convertTo(t, CV_64F);
-    if (!checkRange(t))
-        CV_Error(Error::StsBadArg, "t contains NaN or Inf values");
-    t = t.reshape(1, 3);
-    return Eigen::Vector3d(t.at<double>(0), t.at<double>(1), t.at<double>(2));
 }
 
 void writeRotation(const Eigen::Matrix3d& E, const RotationForm& form, OutputArray out)
@@ -75,12 +62,12 @@ double refinePoseLinePoint(InputArray points1, InputArray points2, InputArray po
 {
     CV_INSTRUMENT_REGION();
 
-    const detail::TripletData data = detail::readTripletInput(points1, points2, points3, lines1, lines2, lines3,
-                                                              cameraMatrix, distCoeffs, R12, t12, 3);
+    const detail::ViewSet data = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                            cameraMatrix, distCoeffs, R12, t12, 3);
     RotationForm form;
     detail::CameraPose pose;
     pose.R = readInitialRotation(R, form);
-    pose.t = readInitialTranslation(t);
+    pose.t = detail::readTranslation(t, "t", false);
     detail::checkRefineParams(params);
 
     detail::RefinedStructure structure;
@@ -91,17 +78,17 @@ double refinePoseLinePoint(InputArray points1, InputArray points2, InputArray po
     Mat(Matx31d(pose.t.x(), pose.t.y(), pose.t.z())).copyTo(t);
     if (points3d.needed())
     {
-        points3d.create(data.numPoints(), 3, CV_64F);
+        points3d.create(data.numPoints, 3, CV_64F);
         Mat out = points3d.getMat();
-        for (int i = 0; i < data.numPoints(); ++i)
+        for (int i = 0; i < data.numPoints; ++i)
             for (int c = 0; c < 3; ++c)
                 out.at<double>(i, c) = structure.points[i](c);
     }
     if (lines3d.needed())
     {
-        lines3d.create(data.numLines(), 6, CV_64F);
+        lines3d.create(data.numLines, 6, CV_64F);
         Mat out = lines3d.getMat();
-        for (int i = 0; i < data.numLines(); ++i)
+        for (int i = 0; i < data.numLines; ++i)
             for (int c = 0; c < 3; ++c)
             {
                 out.at<double>(i, c) = structure.lineEnds[2 * i](c);

@@ -4,7 +4,7 @@
 
 #include "test_precomp.hpp"
 
-#include "../src/polynomial_roots.hpp"
+#include "../src/linear/polynomial_roots.hpp"
 
 namespace opencv_test {
 namespace {

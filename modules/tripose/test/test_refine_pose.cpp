@@ -7,9 +7,9 @@
 #include <Eigen/Dense>
 #include "../src/opencv_compat.hpp"
 
-#include "../src/line_parameterization.hpp"
-#include "../src/ml_refinement.hpp"
-#include "../src/triplet_input.hpp"
+#include "../src/geometry/line_parameterization.hpp"
+#include "../src/refine/ml_refinement.hpp"
+#include "../src/input/problem_input.hpp"
 
 namespace opencv_test {
 namespace {
@@ -162,7 +162,7 @@ TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
 TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 {
     const SyntheticScene s = makeScene(4, 4, tripose::MOTION_LARGE, 1.0, 8);
-    const tripose::detail::TripletData data = tripose::detail::readTripletInput(
+    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose pose;
     pose.t(1) = std::numeric_limits<double>::quiet_NaN();
@@ -437,7 +437,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
     const double rms = tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, s.cameraMatrices, noArray(), s.R12,
                                                     s.t12, R, t);
 
-    const tripose::detail::TripletData data = tripose::detail::readTripletInput(
+    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose pose;
     for (int r = 0; r < 3; ++r)

@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "../src/sample_generator.hpp"
+#include "../src/robust/sample_generator.hpp"
 
 namespace opencv_test {
 namespace {

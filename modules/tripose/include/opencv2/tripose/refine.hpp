@@ -6,12 +6,7 @@
 #define OPENCV_TRIPOSE_REFINE_HPP
 
 #include "opencv2/core.hpp"
-
-// OpenCV 4.8+ marks array arguments that Python passes whole (one 3x3 K, not three rows);
-// older OpenCV (Debian's 4.6) lacks the marker.
-#ifndef CV_ND
-#define CV_ND
-#endif
+#include "opencv2/tripose/compat.hpp"
 
 namespace cv {
 namespace tripose {

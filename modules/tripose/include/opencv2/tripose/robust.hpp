@@ -6,12 +6,8 @@
 #define OPENCV_TRIPOSE_ROBUST_HPP
 
 #include "opencv2/core.hpp"
-
-// OpenCV 4.8+ marks array arguments that Python passes whole (one 3x3 K, not three rows);
-// older OpenCV (Debian's 4.6) lacks the marker.
-#ifndef CV_ND
-#define CV_ND
-#endif
+#include "opencv2/tripose/compat.hpp"
+#include "opencv2/tripose/refine.hpp"
 
 namespace cv {
 namespace tripose {
@@ -24,31 +20,47 @@ namespace tripose {
 struct CV_EXPORTS_W_SIMPLE RansacParams
 {
     CV_WRAP RansacParams();
-    CV_PROP_RW double threshold;       //!< Inlier threshold (px) on the view-3 residual of a feature (default 2).
+    /** Inlier threshold in pixels (default 2). A feature is an inlier of the returned pose when its
+    RMS reprojection error over the three views, the feature re-triangulated from all three with
+    that pose, is below it (a point: its two coordinates in each view; a line: the distances of its
+    two observed end points to the projected 3D line in each view). While sampling, hypotheses are
+    scored on view 3 alone against structure triangulated from views 1-2, which carries the
+    triangulation error of those views: there the threshold is doubled.
+    */
+    CV_PROP_RW double threshold;
     CV_PROP_RW double confidence;      //!< Probability, in (0, 1), of drawing at least one all-inlier sample (default 0.999).
     CV_PROP_RW int maxIterations;      //!< Upper bound on the number of samples (default 10000).
     CV_PROP_RW bool localOptimization; //!< Re-estimate from the inliers of every new best model (default true).
-    CV_PROP_RW bool refine;            //!< Finish with refinePoseLinePoint() over the inliers (default true).
+    CV_PROP_RW bool refine;            //!< Finish with refinePoseLinePoint() over the inliers, with refineParams (default true).
+    CV_PROP_RW RefineParams refineParams; //!< Parameters of the final refinement (default RefineParams()).
     CV_PROP_RW int seed;               //!< Seed of the sampler: the same seed gives the same result (default 0).
 };
 
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 
-RANSAC over mixed samples of four features (any mix of points and lines: the smallest sample
-the linear solver of estimatePoseLinePoint() handles), with:
-- residuals in pixels in view 3, the structure taken from views 1 and 2 (a point: distance of its
-  reprojection; a line: the larger distance of the two observed end points to the reprojected
-  3D line), scored by truncated least squares (MSAC);
+RANSAC over samples of four features (any mix of points and lines: the smallest set the linear
+solver of estimatePoseLinePoint() handles), with:
+- hypotheses scored by truncated least squares (MSAC) on their residuals in view 3, in pixels,
+  against the structure triangulated from views 1 and 2: for a point the distance of its
+  reprojection, for a line the RMS of the distances of its two observed end points to the
+  reprojected 3D line, truncated at 2 x RansacParams::threshold (see there);
 - local optimisation: the linear solver re-run on the inliers of each new best model;
 - adaptive stopping from the inlier ratio at the requested confidence;
-- final maximum-likelihood refinement over the three views on the inliers (RansacParams::refine),
-  after which the inlier masks are recomputed.
+- with few features (at most 1024 distinct samples, and no more than maxIterations), every distinct
+  sample drawn once instead, in an order set by the seed; when none has support, the linear solution
+  over all features goes on to the inlier test;
+- final maximum-likelihood refinement (refinePoseLinePoint() with RansacParams::refineParams) on the
+  inliers, the inliers then re-classified and the refinement repeated once if they changed.
 
 Arguments as in estimatePoseLinePoint().
-@param inliersPoints Optional output: Nx1 CV_8U mask, 1 for inlier point triplets.
-@param inliersLines Optional output: Mx1 CV_8U mask, 1 for inlier line triplets.
+@param params See RansacParams.
+@param pointInliers Optional output: Nx1 CV_8U mask, 1 for inlier point triplets (RansacParams::threshold).
+@param lineInliers Optional output: Mx1 CV_8U mask, 1 for inlier line triplets.
 @return The number of inliers (points + lines) of the returned pose; 0 when no pose was found
-(then R and t are empty).
+(then R and t are empty and the masks all zero).
+
+@throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), and
+naming the field when a field of @p params (or of params.refineParams, when refine is set) is out of range.
 */
 CV_EXPORTS_W int estimatePoseLinePointRansac(
     InputArray points1, InputArray points2, InputArray points3,
@@ -57,7 +69,7 @@ CV_EXPORTS_W int estimatePoseLinePointRansac(
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
-    OutputArray inliersPoints = noArray(), OutputArray inliersLines = noArray());
+    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray());
 
 //! @}
 

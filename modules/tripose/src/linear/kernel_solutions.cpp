@@ -2,12 +2,12 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 
-#include "generated/beta_constraints.hpp"
-#include "generated/beta_n4.hpp"
+#include "../generated/beta_constraints.hpp"
+#include "../generated/beta_n4.hpp"
 #include "kernel_solutions.hpp"
 #include "polynomial_roots.hpp"
 

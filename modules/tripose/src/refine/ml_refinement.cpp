@@ -2,11 +2,11 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 
-#include "line_parameterization.hpp"
+#include "../geometry/line_parameterization.hpp"
 #include "ml_refinement.hpp"
 
 namespace cv {
@@ -17,13 +17,6 @@ namespace {
 
 typedef Eigen::Matrix<double, 6, 1> Vector6d;
 typedef Eigen::Matrix<double, 6, 6> Matrix6d;
-
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& v)
-{
-    Eigen::Matrix3d S;
-    S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return S;
-}
 
 //! One view: pose and intrinsics in the forms the residuals need.
 struct Camera
@@ -44,15 +37,14 @@ struct Camera
         lineMoment.rightCols<3>().noalias() = skew(t) * R;
     }
 
-    void setIntrinsics(const Eigen::Matrix3d& K)
+    void setIntrinsics(const Intrinsics& K)
     {
-        fx = K(0, 0);
-        shear = K(0, 1);
-        cx = K(0, 2);
-        fy = K(1, 1);
-        cy = K(1, 2);
-        // fx keeps the entries near 1 for typical cameras; the scale cancels in distances.
-        lineK = K.inverse().transpose() * fx;
+        fx = K.fx;
+        shear = K.shear;
+        cx = K.cx;
+        fy = K.fy;
+        cy = K.cy;
+        lineK = K.lineK;
     }
 };
 
@@ -135,7 +127,7 @@ Eigen::Matrix<double, D, 1> dampingDiagonal(const Eigen::Matrix<double, D, D>& H
 class Refiner
 {
 public:
-    Refiner(const TripletData& data, const RefineParams& params, const std::vector<int>* pointIndices,
+    Refiner(const ViewSet& data, const RefineParams& params, const std::vector<int>* pointIndices,
             const std::vector<int>* lineIndices)
         : data_(data)
     {
@@ -143,14 +135,14 @@ public:
         loss_.c2 = params.lossScale * params.lossScale;
         maxIterations_ = params.maxIterations;
         tolerance_ = params.tolerance;
-        select(pointIndices, data.numPoints(), points_);
-        select(lineIndices, data.numLines(), lines_);
+        select(pointIndices, data.numPoints, points_);
+        select(lineIndices, data.numLines, lines_);
         for (int v = 0; v < 3; ++v)
-            cameras_[v].setIntrinsics(data.pixels[v].K);
+            cameras_[v].setIntrinsics(data.views[v].camera);
         cameras_[0].setPose(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
-        cameras_[1].setPose(data.view2.R, data.view2.t);
+        cameras_[1].setPose(data.pose12().R, data.pose12().t);
         // Depths below this (relative to the baseline of views 1-2) count as "at the camera centre".
-        minDepth_ = 1e-6 * data.view2.t.norm();
+        minDepth_ = 1e-6 * data.pose12().t.norm();
     }
 
     RefinementSummary run(CameraPose& pose, RefinedStructure* structure)
@@ -235,7 +227,7 @@ private:
     struct SelectedFeature
     {
         // No default member initializers: brace initialisation must stay valid C++11 (an aggregate).
-        int index;        //!< Index in the TripletData.
+        int index;        //!< Index in the ViewSet.
         bool used;        //!< Enters the cost (well determined, in front of the cameras).
         bool initialized; //!< Has a finite structure estimate (for the output).
     };
@@ -267,12 +259,12 @@ private:
 
     const Eigen::Vector2d& calibratedPoint(int view, int i) const
     {
-        return view == 0 ? data_.points1[i] : view == 1 ? data_.points2[i] : data_.points3[i];
+        return data_.views[view].calibratedPoints[i];
     }
 
     const Eigen::Vector3d& calibratedLine(int view, int i) const
     {
-        return view == 0 ? data_.lines1[i] : view == 1 ? data_.lines2[i] : data_.lines3[i];
+        return data_.views[view].calibratedLines[i];
     }
 
     /** Linear triangulation of point @p i over the three views, rows weighted to approximate pixel
@@ -408,7 +400,7 @@ private:
                 if (!(Xc.z() > minDepth_))
                     return false;
                 const double x = Xc.x() / Xc.z(), y = Xc.y() / Xc.z();
-                const Eigen::Vector2d& obs = data_.pixels[v].points[i];
+                const Eigen::Vector2d& obs = data_.views[v].points[i];
                 const double r0 = c.fx * x + c.shear * y + c.cx - obs.x();
                 const double r1 = c.fy * y + c.cy - obs.y();
                 const double s = r0 * r0 + r1 * r1;
@@ -427,8 +419,8 @@ private:
                 if (!projectLine(cameras_[v], L, l))
                     return false;
                 const double n = l.head<2>().norm();
-                const double r0 = l.dot(data_.pixels[v].lineEnds[2 * i].homogeneous()) / n;
-                const double r1 = l.dot(data_.pixels[v].lineEnds[2 * i + 1].homogeneous()) / n;
+                const double r0 = l.dot(data_.views[v].lineEnds[2 * i].homogeneous()) / n;
+                const double r1 = l.dot(data_.views[v].lineEnds[2 * i + 1].homogeneous()) / n;
                 const double s = r0 * r0 + r1 * r1;
                 cost.add(s, loss_.rho(s, weight));
             }
@@ -464,7 +456,7 @@ private:
             const Eigen::Vector3d Xc = v == 0 ? X : Eigen::Vector3d(c.R * X + c.t);
             const double iz = 1.0 / Xc.z();
             const double x = Xc.x() * iz, y = Xc.y() * iz;
-            const Eigen::Vector2d& obs = data_.pixels[v].points[feature.index];
+            const Eigen::Vector2d& obs = data_.views[v].points[feature.index];
             const Eigen::Vector2d r(c.fx * x + c.shear * y + c.cx - obs.x(), c.fy * y + c.cy - obs.y());
             loss_.rho(r.squaredNorm(), weight);
             const Eigen::Vector2d wr = weight * r;
@@ -521,7 +513,7 @@ private:
             Eigen::Matrix<double, 2, 3> G; // d(residuals) / d(moment in the camera frame)
             for (int end = 0; end < 2; ++end)
             {
-                const Eigen::Vector3d p = data_.pixels[v].lineEnds[2 * i + end].homogeneous();
+                const Eigen::Vector3d p = data_.views[v].lineEnds[2 * i + end].homogeneous();
                 r(end) = l.dot(p) * invN;
                 // d(l.p / |l_12|) / dl = (p - r n_hat) / |l_12|
                 G.row(end).noalias() = (invN * (p - r(end) * normal)).transpose() * c.lineK;
@@ -650,14 +642,14 @@ private:
             for (int end = 0; end < 2; ++end)
             {
                 const Eigen::Vector3d X =
-                    closestPointToRay(L, data_.calibratedLineEnd(0, lines_[k].index, end).homogeneous());
+                    closestPointToRay(L, data_.views[0].calibratedLineEnd(lines_[k].index, end).homogeneous());
                 if (X.allFinite())
                     out->lineEnds[2 * k + end] = X;
             }
         }
     }
 
-    const TripletData& data_;
+    const ViewSet& data_;
     Loss loss_;
     int maxIterations_;
     double tolerance_;
@@ -673,21 +665,21 @@ private:
 
 } // namespace
 
-void checkRefineParams(const RefineParams& params)
+void checkRefineParams(const RefineParams& params, const char* name)
 {
     if (!(params.maxIterations > 0))
-        CV_Error_(Error::StsBadArg, ("params.maxIterations must be positive (got %d)", params.maxIterations));
+        CV_Error_(Error::StsBadArg, ("%s.maxIterations must be positive (got %d)", name, params.maxIterations));
     if (params.loss != LOSS_SQUARED && params.loss != LOSS_HUBER && params.loss != LOSS_CAUCHY)
-        CV_Error_(Error::StsBadArg, ("params.loss must be LOSS_SQUARED (0), LOSS_HUBER (1) or LOSS_CAUCHY (2) (got %d)",
-                                     params.loss));
+        CV_Error_(Error::StsBadArg, ("%s.loss must be LOSS_SQUARED (0), LOSS_HUBER (1) or LOSS_CAUCHY (2) (got %d)",
+                                     name, params.loss));
     if (!(params.lossScale > 0) || !std::isfinite(params.lossScale))
-        CV_Error_(Error::StsBadArg, ("params.lossScale must be a positive, finite number of pixels (got %g)",
-                                     params.lossScale));
+        CV_Error_(Error::StsBadArg, ("%s.lossScale must be a positive, finite number of pixels (got %g)",
+                                     name, params.lossScale));
     if (!(params.tolerance >= 0) || !std::isfinite(params.tolerance))
-        CV_Error_(Error::StsBadArg, ("params.tolerance must be finite and >= 0 (got %g)", params.tolerance));
+        CV_Error_(Error::StsBadArg, ("%s.tolerance must be finite and >= 0 (got %g)", name, params.tolerance));
 }
 
-RefinementSummary refinePoseAndStructure(const TripletData& data, CameraPose& pose, const RefineParams& params,
+RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, const RefineParams& params,
                                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
                                          RefinedStructure* structure)
 {

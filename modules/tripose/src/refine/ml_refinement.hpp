@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "opencv2/tripose/refine.hpp"
-#include "triplet_data.hpp"
+#include "../geometry/view_set.hpp"
 
 namespace cv {
 namespace tripose {
@@ -42,13 +42,13 @@ Levenberg-Marquardt on the normal equations with each feature's structure block 
 in the number of features. @p params must be valid (see checkRefineParams()). Null index lists
 select every point / line. The pose is never replaced by non-finite values.
 */
-RefinementSummary refinePoseAndStructure(const TripletData& data, CameraPose& pose, const RefineParams& params,
+RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, const RefineParams& params,
                                          const std::vector<int>* pointIndices = nullptr,
                                          const std::vector<int>* lineIndices = nullptr,
                                          RefinedStructure* structure = nullptr);
 
-//! Throws cv::Exception (StsBadArg) naming the first out-of-range field of @p params.
-void checkRefineParams(const RefineParams& params);
+//! Throws cv::Exception (StsBadArg) naming the first out-of-range field of @p params, called @p name.
+void checkRefineParams(const RefineParams& params, const char* name = "params");
 
 } // namespace detail
 } // namespace tripose

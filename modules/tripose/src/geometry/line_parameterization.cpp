@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 
@@ -75,24 +75,40 @@ OrthonormalLine OrthonormalLine::plus(const Eigen::Vector4d& delta) const
 
 bool lineFromPlanes(const Eigen::Vector4d* planes, int count, PluckerLine& line, double minRatio)
 {
-    CV_Assert(count == 2 || count == 3);
-    // The line lies in the span of the two dominant right singular vectors of the stacked planes
-    // M (count x 4). They come from the small Gram matrix M M^T = U S^2 U^T as v_k = M^T u_k, so a
-    // closed-form 3x3 eigen-decomposition does instead of a 4x4 iterative one.
-    Eigen::Matrix3d gram = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < count; ++a)
-        for (int b = 0; b <= a; ++b)
-            gram(a, b) = gram(b, a) = planes[a].dot(planes[b]);
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-    eig.computeDirect(gram);
-    const Eigen::Vector3d& lambda = eig.eigenvalues(); // ascending: squared singular values
-    if (!(lambda(2) > 0) || !(std::max(lambda(1), 0.0) >= minRatio * minRatio * lambda(2)))
-        return false;
+    CV_Assert(count >= 2);
+    // The line lies in the span of the two dominant right singular vectors p, q of the stacked
+    // planes M (count x 4). Up to three planes they come from the small Gram matrix M M^T = U S^2 U^T
+    // as M^T u_k, a closed-form 3x3 eigen-decomposition; more planes use M^T M (4x4) directly.
     Eigen::Vector4d p = Eigen::Vector4d::Zero(), q = Eigen::Vector4d::Zero();
-    for (int k = 0; k < count; ++k)
+    if (count <= 3)
     {
-        p += eig.eigenvectors()(k, 2) * planes[k];
-        q += eig.eigenvectors()(k, 1) * planes[k];
+        Eigen::Matrix3d gram = Eigen::Matrix3d::Zero();
+        for (int a = 0; a < count; ++a)
+            for (int b = 0; b <= a; ++b)
+                gram(a, b) = gram(b, a) = planes[a].dot(planes[b]);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+        eig.computeDirect(gram);
+        const Eigen::Vector3d& lambda = eig.eigenvalues(); // ascending: squared singular values
+        if (!(lambda(2) > 0) || !(std::max(lambda(1), 0.0) >= minRatio * minRatio * lambda(2)))
+            return false;
+        for (int k = 0; k < count; ++k)
+        {
+            p += eig.eigenvectors()(k, 2) * planes[k];
+            q += eig.eigenvectors()(k, 1) * planes[k];
+        }
+    }
+    else
+    {
+        Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+        for (int k = 0; k < count; ++k)
+            normal.noalias() += planes[k] * planes[k].transpose();
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(normal);
+        const Eigen::Vector4d& lambda = eig.eigenvalues();
+        if (eig.info() != Eigen::Success || !(lambda(3) > 0) ||
+            !(std::max(lambda(2), 0.0) >= minRatio * minRatio * lambda(3)))
+            return false;
+        p = eig.eigenvectors().col(3);
+        q = eig.eigenvectors().col(2);
     }
     // Intersection of the planes (n_p, e_p) and (n_q, e_q): direction n_p x n_q and moment
     // e_p n_q - e_q n_p (for X on both, X x (n_p x n_q) = n_p (X.n_q) - n_q (X.n_p)).
@@ -101,14 +117,15 @@ bool lineFromPlanes(const Eigen::Vector4d* planes, int count, PluckerLine& line,
     return line.d.norm() > 1e-12 * p.head<3>().norm() * q.head<3>().norm() && line.m.allFinite();
 }
 
-Eigen::Vector3d closestPointToRay(const PluckerLine& line, const Eigen::Vector3d& ray)
+Eigen::Vector3d closestPointToRay(const PluckerLine& line, const Eigen::Vector3d& ray, const Eigen::Vector3d& origin)
 {
     const double dd = line.d.squaredNorm();
     const Eigen::Vector3d foot = line.d.cross(line.m) / dd;
     const Eigen::Vector3d u = line.d / std::sqrt(dd);
     const Eigen::Vector3d r = ray.normalized();
-    // Minimise |foot + s u - lambda r| over s and lambda.
-    const double b = u.dot(r), du = u.dot(foot), dr = r.dot(foot);
+    // Minimise |foot + s u - (origin + lambda r)| over s and lambda.
+    const Eigen::Vector3d f = foot - origin;
+    const double b = u.dot(r), du = u.dot(f), dr = r.dot(f);
     const double denominator = 1.0 - b * b;
     if (!(denominator > 1e-12))
         return foot;

@@ -7,7 +7,7 @@
 
 #include "kernel_solutions.hpp"
 #include "linear_system.hpp"
-#include "triplet_data.hpp"
+#include "../geometry/camera.hpp"
 
 namespace cv {
 namespace tripose {

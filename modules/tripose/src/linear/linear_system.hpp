@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-#include "triplet_data.hpp"
+#include "../geometry/view_set.hpp"
 
 namespace cv {
 namespace tripose {
@@ -32,7 +32,7 @@ linear_system.cpp).
 units of |t12| and the columns of A are balanced whatever the user's units; multiply the solved t by
 it. The feature subsets @p pointIndices / @p lineIndices select features (empty pointers: all).
 */
-ConstraintMatrix buildConstraintMatrix(const TripletData& data, double translationScale,
+ConstraintMatrix buildConstraintMatrix(const ViewSet& set, double translationScale,
                                        const std::vector<int>* pointIndices = nullptr,
                                        const std::vector<int>* lineIndices = nullptr);
 
@@ -41,7 +41,7 @@ orthonormal basis of the null space of [pi1 pi2]^T, pi1 = [l1; 0], pi2 = [R12^T 
 generated closed form). Returns false when the two planes are parallel (the line lies in an epipolar
 plane of views 1-2 and has no 3D position).
 */
-bool lineNullSpace(const Eigen::Vector3d& l1, const Eigen::Vector3d& l2, const CameraPose& view2,
+bool lineNullSpace(const Eigen::Vector3d& l1, const Eigen::Vector3d& l2, const CameraPose& pose12,
                    Eigen::Vector4d& qa, Eigen::Vector4d& qb);
 
 } // namespace detail

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -111,14 +111,14 @@ int kernelDimensionFor(int numFeatures)
     return numFeatures >= 6 ? 1 : 12 - 2 * numFeatures;
 }
 
-int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
+int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
                          const CandidateOptions& options)
 {
-    const int numPoints = pointIndices ? (int)pointIndices->size() : data.numPoints();
-    const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : data.numLines());
-    const double translationScale = data.view2.t.norm();
-    const ConstraintMatrix A = buildConstraintMatrix(data, translationScale, pointIndices, lineIndices);
+    const int numPoints = pointIndices ? (int)pointIndices->size() : set.numPoints;
+    const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : set.numLines);
+    const double translationScale = set.pose12().t.norm();
+    const ConstraintMatrix A = buildConstraintMatrix(set, translationScale, pointIndices, lineIndices);
 
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
@@ -193,18 +193,18 @@ int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses
     return added;
 }
 
-std::vector<ScoredPose> rankCandidates(const TripletData& data, const TwoViewStructure& structure,
-                                       const std::vector<CameraPose>& poses)
+std::vector<ScoredPose> rankCandidates(const PoseScorer& scorer, const std::vector<CameraPose>& poses)
 {
     std::vector<ScoredPose> ranked;
     for (const CameraPose& pose : poses)
     {
-        const ReprojectionScore score = scorePose(data, structure, pose);
-        if (2 * score.behind > score.considered || !std::isfinite(score.rms))
+        const PoseScore score = scorer.score(pose);
+        const double rms = score.rms();
+        if (2 * score.behind > score.considered || !std::isfinite(rms))
             continue;
         ScoredPose scored; // not brace-initialised: OpenCV 4.x builds modules as C++11
         scored.pose = pose;
-        scored.rms = score.rms;
+        scored.rms = rms;
         ranked.push_back(scored);
     }
     std::stable_sort(ranked.begin(), ranked.end(),

@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -76,13 +76,6 @@ namespace {
 
 //! Below this step (rad) the polish keeps its Gauss-Newton matrix (see polishPoseAlgebraic()).
 constexpr double kChordStepAngle = 1e-2;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a)
-{
-    Eigen::Matrix3d S;
-    S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-    return S;
-}
 
 } // namespace
 

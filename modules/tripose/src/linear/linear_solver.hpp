@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "candidate_scoring.hpp"
-#include "triplet_data.hpp"
+#include "../geometry/view_set.hpp"
+#include "../scoring/pose_scorer.hpp"
 
 namespace cv {
 namespace tripose {
@@ -42,7 +42,7 @@ plus its twisted pair as @p options say. Over-determined systems (N = 1) also co
 candidate. Uses the selected features only (null pointers: all of them). Appends to @p poses and
 returns how many were appended.
 */
-int linearPoseCandidates(const TripletData& data, std::vector<CameraPose>& poses,
+int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
                          const std::vector<int>* pointIndices = nullptr,
                          const std::vector<int>* lineIndices = nullptr,
                          const CandidateOptions& options = CandidateOptions());
@@ -53,11 +53,11 @@ struct ScoredPose
     double rms = 0; //!< RMS reprojection error in view 3 (px).
 };
 
-/** The paper's selection (Sec. III-G): drops candidates that put most of the structure behind
-view 3 and sorts the rest by reprojection error in view 3, best first.
+/** The paper's selection (Sec. III-G): drops candidates that put most of the structure (from the
+known views) behind view 3 and sorts the rest by their reprojection error in view 3
+(PoseScorer::score(), untruncated), best first.
 */
-std::vector<ScoredPose> rankCandidates(const TripletData& data, const TwoViewStructure& structure,
-                                       const std::vector<CameraPose>& poses);
+std::vector<ScoredPose> rankCandidates(const PoseScorer& scorer, const std::vector<CameraPose>& poses);
 
 } // namespace detail
 } // namespace tripose

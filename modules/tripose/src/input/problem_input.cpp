@@ -2,13 +2,13 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
-#include "opencv_compat.hpp"
+#include "../opencv_compat.hpp"
 
-#include "pose_recovery.hpp"
-#include "triplet_input.hpp"
+#include "../linear/pose_recovery.hpp"
+#include "problem_input.hpp"
 
 namespace cv {
 namespace tripose {
@@ -186,17 +186,21 @@ Mat readDistortion(const Mat& m, bool shared, int view)
     return allZero ? Mat() : Mat(1, n, CV_64F, values).clone();
 }
 
-Eigen::Vector3d readTranslation(InputArray arr, const char* name)
+} // namespace
+
+Eigen::Vector3d readTranslation(InputArray arr, const char* name, bool nonZero)
 {
     const Mat m = arr.getMat();
     if (m.empty() || !(m.depth() == CV_32F || m.depth() == CV_64F) || m.total() * m.channels() != 3 || m.dims > 2)
         CV_Error_(Error::StsBadArg, ("%s must be a 3-element translation vector, CV_32F or CV_64F", name));
     Eigen::Vector3d e;
     copyFiniteOrThrow(m, e.data(), name);
-    if (!(e.norm() > 0))
+    if (nonZero && !(e.norm() > 0))
         CV_Error_(Error::StsBadArg, ("%s must be non-zero: the baseline of views 1-2 fixes the metric scale", name));
     return e;
 }
+
+namespace {
 
 //! Undistorts pixel points in place (no-op without distortion).
 void undistortPixels(std::vector<Eigen::Vector2d>& pixels, const Eigen::Matrix3d& K, const Mat& dist)
@@ -216,13 +220,6 @@ void undistortPixels(std::vector<Eigen::Vector2d>& pixels, const Eigen::Matrix3d
     std::copy(out.ptr<double>(), out.ptr<double>() + 2 * pixels.size(), pixels[0].data());
 }
 
-Eigen::Vector2d calibrate(const Eigen::Matrix3d& K, const Eigen::Vector2d& pixel)
-{
-    // K is upper triangular: invert the affine map in closed form.
-    const double y = (pixel.y() - K(1, 2)) / K(1, 1);
-    return Eigen::Vector2d((pixel.x() - K(0, 2) - K(0, 1) * y) / K(0, 0), y);
-}
-
 Eigen::Vector3d normalizedLine(const Eigen::Vector3d& l)
 {
     return l / l.head<2>().norm();
@@ -230,7 +227,7 @@ Eigen::Vector3d normalizedLine(const Eigen::Vector3d& l)
 
 //! Calibrated lines of one view; @p pixelEnds holds the segments' end points (width 4, undistorted
 //! here) or receives two points on each homogeneous line (width 3).
-void convertLines(const std::vector<double>& homogeneous, int width, int count, const Eigen::Matrix3d& K,
+void convertLines(const std::vector<double>& homogeneous, int width, int count, const Intrinsics& camera, const Eigen::Matrix3d& K,
                   const Mat& dist, const char* name, std::vector<Eigen::Vector3d>& calibrated,
                   std::vector<Eigen::Vector2d>& pixelEnds)
 {
@@ -245,7 +242,7 @@ void convertLines(const std::vector<double>& homogeneous, int width, int count, 
             const Eigen::Vector2d& b = pixelEnds[2 * i + 1];
             if (!((a - b).norm() > 1e-6))
                 CV_Error_(Error::StsBadArg, ("%s: segment %d has zero length", name, i));
-            calibrated[i] = normalizedLine(calibrate(K, a).homogeneous().cross(calibrate(K, b).homogeneous()));
+            calibrated[i] = normalizedLine(camera.calibrate(a).homogeneous().cross(camera.calibrate(b).homogeneous()));
         }
         return;
     }
@@ -292,13 +289,14 @@ Eigen::Matrix3d readRotation(InputArray arr, const char* name)
     return nearestRotation(E);
 }
 
-TripletData readTripletInput(InputArray points1, InputArray points2, InputArray points3,
-                             InputArray lines1, InputArray lines2, InputArray lines3,
-                             InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
-                             InputArray R12, InputArray t12, int minFeatures)
+ViewSet readThreeViewInput(InputArray points1, InputArray points2, InputArray points3,
+                           InputArray lines1, InputArray lines2, InputArray lines3,
+                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                           InputArray R12, InputArray t12, int minFeatures)
 {
-    TripletData data;
-    ViewObservations* pixels = data.pixels;
+    ViewSet set;
+    set.views.resize(3);
+    View* pixels = set.views.data();
     readPoints(points1, "points1", pixels[0].points);
     readPoints(points2, "points2", pixels[1].points);
     readPoints(points3, "points3", pixels[2].points);
@@ -330,11 +328,12 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
         CV_Error(Error::StsBadArg, "cameraMatrix must be one 3x3 matrix or a vector of three");
     const PerViewArrays Ds = readPerView(distCoeffs, "distCoeffs");
 
-    data.view2.R = readRotation(R12, "R12");
-    data.view2.t = readTranslation(t12, "t12");
+    set.numPoints = numPoints;
+    set.numLines = lineCount[0];
+    set.views[ViewSet::kView2].pose.R = readRotation(R12, "R12");
+    set.views[ViewSet::kView2].pose.t = readTranslation(t12, "t12", true);
+    set.views[ViewSet::kView3].estimated = true; // mounted at the identity: it is the estimated camera
 
-    std::vector<Eigen::Vector3d>* calibratedLines[3] = { &data.lines1, &data.lines2, &data.lines3 };
-    std::vector<Eigen::Vector2d>* calibratedPoints[3] = { &data.points1, &data.points2, &data.points3 };
     static const char* lineNames[3] = { "lines1", "lines2", "lines3" };
     for (int v = 0; v < 3; ++v)
     {
@@ -344,15 +343,16 @@ TripletData readTripletInput(InputArray points1, InputArray points2, InputArray 
             CV_Error_(Error::StsBadArg, ("%s are homogeneous lines (Mx3), which cannot be undistorted: "
                                          "pass segments (Mx4) or empty %s", lineNames[v],
                                          viewArgumentName("distCoeffs", Ds.shared(), v).c_str()));
-        ViewObservations& view = pixels[v];
-        view.K = K;
+        View& view = pixels[v];
+        view.camera = Intrinsics(K);
         undistortPixels(view.points, K, dist);
-        calibratedPoints[v]->resize(numPoints);
+        view.calibratedPoints.resize(numPoints);
         for (int i = 0; i < numPoints; ++i)
-            (*calibratedPoints[v])[i] = calibrate(K, view.points[i]);
-        convertLines(L[v], lineWidth[v], lineCount[v], K, dist, lineNames[v], *calibratedLines[v], view.lineEnds);
+            view.calibratedPoints[i] = view.camera.calibrate(view.points[i]);
+        convertLines(L[v], lineWidth[v], lineCount[v], view.camera, K, dist, lineNames[v], view.calibratedLines,
+                     view.lineEnds);
     }
-    return data;
+    return set;
 }
 
 } // namespace detail

@@ -2,18 +2,19 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#ifndef OPENCV_TRIPOSE_TRIPLET_INPUT_HPP
-#define OPENCV_TRIPOSE_TRIPLET_INPUT_HPP
+#ifndef OPENCV_TRIPOSE_INPUT_PROBLEM_INPUT_HPP
+#define OPENCV_TRIPOSE_INPUT_PROBLEM_INPUT_HPP
 
 #include "opencv2/core.hpp"
-#include "triplet_data.hpp"
+#include "../geometry/view_set.hpp"
 
 namespace cv {
 namespace tripose {
 namespace detail {
 
-/** Validates the arguments shared by the public estimators and converts them into calibrated,
-undistorted observations. Every violation raises cv::Exception (StsBadArg or StsBadSize) whose
+/** Validates the arguments shared by the three-view functions and converts them into the views of
+the three-view problem (ViewSet: view 1 at [I|0], view 2 at [R12|t12], view 3 estimated; every
+feature seen in all three), undistorted and calibrated. Every violation raises cv::Exception (StsBadArg or StsBadSize) whose
 message names the argument and states what was expected. Requires at least @p minFeatures
 features (points + lines).
 
@@ -21,7 +22,7 @@ Homogeneous lines (Mx3) carry no extent; where end points are needed (scoring, c
 points on the line, kHomogeneousLineHalfLength px either side of the point closest to the principal
 point, stand in for them.
 */
-TripletData readTripletInput(InputArray points1, InputArray points2, InputArray points3,
+ViewSet readThreeViewInput(InputArray points1, InputArray points2, InputArray points3,
                              InputArray lines1, InputArray lines2, InputArray lines3,
                              InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                              InputArray R12, InputArray t12, int minFeatures = 4);
@@ -34,8 +35,13 @@ returned as the nearest exact rotation.
 */
 Eigen::Matrix3d readRotation(InputArray arr, const char* name);
 
+/** A translation of 3 elements (CV_32F/CV_64F, any shape), finite; cv::Exception naming @p name
+otherwise, and when @p nonZero is set and it is zero.
+*/
+Eigen::Vector3d readTranslation(InputArray arr, const char* name, bool nonZero);
+
 } // namespace detail
 } // namespace tripose
 } // namespace cv
 
-#endif // OPENCV_TRIPOSE_TRIPLET_INPUT_HPP
+#endif // OPENCV_TRIPOSE_INPUT_PROBLEM_INPUT_HPP

@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "opencv2/tripose/robust.hpp"
-#include "triplet_data.hpp"
+#include "../scoring/pose_scorer.hpp"
+#include "pose_solver.hpp"
 
 namespace cv {
 namespace tripose {
@@ -22,10 +23,13 @@ struct RobustEstimate
     int iterations = 0; //!< Samples drawn.
 };
 
-/** LO-MSAC over four-feature samples solved by the linear method; see estimatePoseLinePointRansac().
-Returns false when no sample gave a pose.
+/** LO-MSAC over the samples of @p solver, hypotheses scored by @p scorer against 2 x threshold,
+adaptive stopping, then @p refiner (null: none) on the inliers; the returned masks compare each
+feature's PoseScorer::refitResiduals() with the threshold. See estimatePoseLinePointRansac() for
+the user-facing description. Returns false when no sample gave a pose with inliers.
 */
-bool estimatePoseRobust(const TripletData& data, const RansacParams& params, RobustEstimate& estimate);
+bool estimatePoseRobust(const PoseSolver& solver, const PoseScorer& scorer, const PoseRefiner* refiner,
+                        const RansacParams& params, RobustEstimate& estimate);
 
 } // namespace detail
 } // namespace tripose

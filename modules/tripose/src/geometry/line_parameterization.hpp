@@ -55,17 +55,19 @@ struct OrthonormalLine
 };
 
 /** Line closest (in the least-squares sense over the homogeneous planes) to the intersection of
-@p count (2 or 3) planes pi_k (pi^T X = 0 for homogeneous X): the null space of the rank-2
+@p count (at least 2) planes pi_k (pi^T X = 0 for homogeneous X): the null space of the rank-2
 approximation of the stacked planes. Each plane should be scaled so that its residual is comparable
 to an image distance. Returns false when the planes do not pin a line down: the second largest
 singular value below @p minRatio times the largest (planes coincide), or the line is at infinity.
 */
 bool lineFromPlanes(const Eigen::Vector4d* planes, int count, PluckerLine& line, double minRatio = 1e-6);
 
-/** Point of @p line closest to the ray lambda * @p ray through the origin (the centre of view 1);
-the foot of the perpendicular from the origin when the ray is parallel to the line.
+/** Point of @p line closest to the ray @p origin + lambda * @p ray (by default through the world
+origin, the centre of view 1); the foot of the perpendicular from the world origin to the line when
+the ray is parallel to it.
 */
-Eigen::Vector3d closestPointToRay(const PluckerLine& line, const Eigen::Vector3d& ray);
+Eigen::Vector3d closestPointToRay(const PluckerLine& line, const Eigen::Vector3d& ray,
+                                  const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
 
 } // namespace detail
 } // namespace tripose

@@ -2,12 +2,13 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "precomp.hpp"
+#include "../precomp.hpp"
 
 #include <Eigen/Dense>
 
-#include "generated/line_rows.hpp"
-#include "generated/point_rows.hpp"
+#include "../generated/line_rows.hpp"
+#include "../generated/point_rows.hpp"
+#include "../geometry/triangulation.hpp"
 #include "linear_system.hpp"
 
 namespace cv {
@@ -15,6 +16,10 @@ namespace tripose {
 namespace detail {
 
 namespace {
+
+// Sine of the angle between a view-1 end ray and the plane of view 2 below which the lifted end
+// point is too uncertain to weight a row by.
+constexpr double kGrazingSine = 1e-6;
 
 //! Hartley normalisation of one view: x̂ = s (x - c), centroid at the origin, mean distance √2.
 Eigen::Vector3d normalizingSimilarity(const std::vector<Eigen::Vector2d>& points, const std::vector<int>* indices)
@@ -51,23 +56,21 @@ here). Against the floor of the noise of l3 itself, the row's standard deviation
 proportional to sqrt(1 + (sin alpha / sin beta)^2): @p weights receives its inverse per row.
 Returns false when a ray is nearly parallel to the plane or meets it behind view 1.
 */
-bool lineEndPoints(const TripletData& data, int line, const CameraPose& view2, Eigen::Vector4d& qa, Eigen::Vector4d& qb,
+bool lineEndPoints(const ViewSet& set, int line, const CameraPose& pose12, Eigen::Vector4d& qa, Eigen::Vector4d& qb,
                    double weights[2])
 {
-    const Eigen::Vector3d normal2 = view2.R.transpose() * data.lines2[line];
-    const double offset2 = view2.t.dot(data.lines2[line]);
-    const Eigen::Vector3d centre2 = -view2.R.transpose() * view2.t;
+    const Eigen::Vector4d plane2 = backProjectLine(pose12, 1.0, set.views[ViewSet::kView2].calibratedLines[line]);
+    const Eigen::Vector3d centre2 = pose12.centre();
     Eigen::Vector4d* q[2] = { &qa, &qb };
     for (int end = 0; end < 2; ++end)
     {
-        const Eigen::Vector3d ray = data.calibratedLineEnd(0, line, end).homogeneous();
-        const double denominator = normal2.dot(ray);
-        const double lambda = -offset2 / denominator;
-        const double sinBeta = std::abs(denominator) / (normal2.norm() * ray.norm());
-        if (!(sinBeta > 1e-6) || !(lambda > 0) || !std::isfinite(lambda))
+        const Eigen::Vector3d ray = set.views[ViewSet::kView1].calibratedLineEnd(line, end).homogeneous();
+        Eigen::Vector3d X;
+        double lambda;
+        if (!intersectRayPlane(Eigen::Vector3d::Zero(), ray, plane2, kGrazingSine, X, lambda))
             return false;
+        const double sinBeta = std::abs(plane2.head<3>().dot(ray)) / (plane2.head<3>().norm() * ray.norm());
         *q[end] << ray, 1.0 / lambda;
-        const Eigen::Vector3d X = lambda * ray;
         const double sinAlpha = ray.normalized().cross((X - centre2).normalized()).norm();
         weights[end] = sinBeta / std::sqrt(sinBeta * sinBeta + sinAlpha * sinAlpha);
     }
@@ -76,43 +79,49 @@ bool lineEndPoints(const TripletData& data, int line, const CameraPose& view2, E
 
 } // namespace
 
-bool lineNullSpace(const Eigen::Vector3d& l1, const Eigen::Vector3d& l2, const CameraPose& view2,
+bool lineNullSpace(const Eigen::Vector3d& l1, const Eigen::Vector3d& l2, const CameraPose& pose12,
                    Eigen::Vector4d& qa, Eigen::Vector4d& qb)
 {
     // The planes of views 1 and 2 meet in a line only if their normals are not parallel.
-    const Eigen::Vector3d n2 = view2.R.transpose() * l2;
+    const Eigen::Vector3d n2 = pose12.R.transpose() * l2;
     if (!(l1.cross(n2).norm() > 1e-10 * l1.norm() * n2.norm()))
         return false;
-    const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R0 = view2.R;
-    generated::lineNullSpace(l1.data(), l2.data(), R0.data(), view2.t.data(), qa.data(), qb.data());
+    const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R12 = pose12.R;
+    generated::lineNullSpace(l1.data(), l2.data(), R12.data(), pose12.t.data(), qa.data(), qb.data());
     return qa.allFinite() && qb.allFinite();
 }
 
-ConstraintMatrix buildConstraintMatrix(const TripletData& data, double translationScale,
+ConstraintMatrix buildConstraintMatrix(const ViewSet& set, double translationScale,
                                        const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
 {
-    const int numPoints = pointIndices ? (int)pointIndices->size() : data.numPoints();
-    const int numLines = lineIndices ? (int)lineIndices->size() : data.numLines();
-    CameraPose view2 = data.view2;
-    view2.t /= translationScale;
+    const int numPoints = pointIndices ? (int)pointIndices->size() : set.numPoints;
+    const int numLines = lineIndices ? (int)lineIndices->size() : set.numLines;
+    CameraPose pose12 = set.pose12();
+    pose12.t /= translationScale;
+    const std::vector<Eigen::Vector2d>& points1 = set.views[ViewSet::kView1].calibratedPoints;
+    const std::vector<Eigen::Vector2d>& points2 = set.views[ViewSet::kView2].calibratedPoints;
+    const std::vector<Eigen::Vector2d>& points3 = set.views[ViewSet::kView3].calibratedPoints;
+    const std::vector<Eigen::Vector3d>& lines1 = set.views[ViewSet::kView1].calibratedLines;
+    const std::vector<Eigen::Vector3d>& lines2 = set.views[ViewSet::kView2].calibratedLines;
+    const std::vector<Eigen::Vector3d>& lines3 = set.views[ViewSet::kView3].calibratedLines;
 
     ConstraintMatrix A(4 * numPoints + 2 * numLines, 12);
     const bool overdetermined = numPoints + numLines >= 6;
     int row = 0;
     if (numPoints > 0)
     {
-        const Eigen::Vector3d n1 = normalizingSimilarity(data.points1, pointIndices);
-        const Eigen::Vector3d n2 = normalizingSimilarity(data.points2, pointIndices);
-        const Eigen::Vector3d n3 = normalizingSimilarity(data.points3, pointIndices);
-        const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R0 = view2.R;
+        const Eigen::Vector3d n1 = normalizingSimilarity(points1, pointIndices);
+        const Eigen::Vector3d n2 = normalizingSimilarity(points2, pointIndices);
+        const Eigen::Vector3d n3 = normalizingSimilarity(points3, pointIndices);
+        const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R12 = pose12.R;
         for (int k = 0; k < numPoints; ++k)
         {
             const int i = pointIndices ? (*pointIndices)[k] : k;
-            const Eigen::Vector2d x1 = applySimilarity(n1, data.points1[i]);
-            const Eigen::Vector2d x2 = applySimilarity(n2, data.points2[i]);
-            const Eigen::Vector2d x3 = applySimilarity(n3, data.points3[i]);
+            const Eigen::Vector2d x1 = applySimilarity(n1, points1[i]);
+            const Eigen::Vector2d x2 = applySimilarity(n2, points2[i]);
+            const Eigen::Vector2d x3 = applySimilarity(n3, points3[i]);
             generated::pointRows(x1.data(), x2.data(), x3.data(), n1.data(), n2.data(), n3.data(),
-                                 R0.data(), view2.t.data(), A.row(row).data());
+                                 R12.data(), pose12.t.data(), A.row(row).data());
             // Balance: a point's rows (rank 2) get the weight of a line's two unit rows, so that
             // neither kind dominates the conditioning of A^T A whatever the normalising scales.
             const double blockNorm = A.middleRows(row, 4).norm();
@@ -128,8 +137,8 @@ ConstraintMatrix buildConstraintMatrix(const TripletData& data, double translati
         // the kernel does not depend on the pair of points, and the orthonormal pair conditions it best.
         Eigen::Vector4d qa, qb;
         double weights[2] = { 1.0, 1.0 };
-        const bool weighted = overdetermined && lineEndPoints(data, i, view2, qa, qb, weights);
-        if (!weighted && !lineNullSpace(data.lines1[i], data.lines2[i], view2, qa, qb))
+        const bool weighted = overdetermined && lineEndPoints(set, i, pose12, qa, qb, weights);
+        if (!weighted && !lineNullSpace(lines1[i], lines2[i], pose12, qa, qb))
         {
             // A line in an epipolar plane of views 1-2 has no 3D position: it contributes nothing.
             A.middleRows(row, 2).setZero();
@@ -138,8 +147,8 @@ ConstraintMatrix buildConstraintMatrix(const TripletData& data, double translati
         {
             // Weighted rows read as image distances: l3 with unit normal. Otherwise unit rows
             // (q and l3 unit vectors) condition the small systems best.
-            const Eigen::Vector3d l3 = weighted ? Eigen::Vector3d(data.lines3[i] / data.lines3[i].head<2>().norm())
-                                                : Eigen::Vector3d(data.lines3[i].normalized());
+            const Eigen::Vector3d l3 = weighted ? Eigen::Vector3d(lines3[i] / lines3[i].head<2>().norm())
+                                                : Eigen::Vector3d(lines3[i].normalized());
             generated::lineRows(qa.data(), qb.data(), l3.data(), A.row(row).data());
             if (weighted)
             {

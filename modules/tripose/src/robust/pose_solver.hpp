@@ -1,0 +1,50 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_ROBUST_POSE_SOLVER_HPP
+#define OPENCV_TRIPOSE_ROBUST_POSE_SOLVER_HPP
+
+#include <vector>
+
+#include "../geometry/camera.hpp"
+#include "../scoring/feature_subset.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+/** The seam between a pose problem and the robust estimator (as calib3d's USAC separates them): the
+estimator loop draws samples, asks the solver for models, judges them with the PoseScorer and hands
+the best to the refiner; a new problem (another arrangement of views) supplies these two.
+*/
+class PoseSolver
+{
+public:
+    virtual ~PoseSolver() {}
+    //! Features in a minimal sample.
+    virtual int sampleSize() const = 0;
+    //! Fewest features estimateNonMinimal() accepts (it is over-determined from there).
+    virtual int nonMinimalSize() const = 0;
+    /** Appends the candidate poses of a minimal sample to @p models; returns how many. @p exhaustive:
+    every distinct sample is drawn once (few features), so nothing else will repair a poor
+    hypothesis and a solver may spend more per sample.
+    */
+    virtual int estimateMinimal(const FeatureSubset& sample, bool exhaustive, std::vector<CameraPose>& models) const = 0;
+    //! Appends candidate poses from a larger set of features (local optimisation, fallback).
+    virtual int estimateNonMinimal(const FeatureSubset& features, std::vector<CameraPose>& models) const = 0;
+};
+
+class PoseRefiner
+{
+public:
+    virtual ~PoseRefiner() {}
+    //! Refines @p pose on @p inliers; false (pose unchanged) when it could not.
+    virtual bool refine(const FeatureSubset& inliers, CameraPose& pose) const = 0;
+};
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_ROBUST_POSE_SOLVER_HPP

@@ -1,0 +1,211 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "../precomp.hpp"
+
+#include "../linear/linear_solver.hpp"
+#include "robust_estimator.hpp"
+#include "sample_generator.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+namespace {
+
+constexpr int kLocalOptimizationRounds = 3;
+// Hypotheses are scored against structure triangulated from the known views alone, which carries
+// the triangulation error of those views on top of the image noise: their residuals are tested
+// against this multiple of the user's threshold. The final inliers use residuals with the feature
+// re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
+constexpr double kSamplingThresholdFactor = 2.0;
+
+class RobustEstimator
+{
+public:
+    RobustEstimator(const PoseSolver& solver, const PoseScorer& scorer, const PoseRefiner* refiner,
+                    const RansacParams& params)
+        : solver_(solver), scorer_(scorer), refiner_(refiner), params_(params),
+          samplingThreshold_(kSamplingThresholdFactor * params.threshold)
+    {
+        const ViewSet& set = scorer.views();
+        numPoints_ = set.numPoints;
+        numFeatures_ = set.numFeatures();
+    }
+
+    bool run(RobustEstimate& estimate)
+    {
+        const int sampleSize = solver_.sampleSize();
+        SampleGenerator samples(numFeatures_, sampleSize, params_.maxIterations, (uint64)(int64)params_.seed);
+        std::vector<int> indices(sampleSize);
+        FeatureSubset sample;
+        std::vector<CameraPose> candidates;
+        long maxIterations = params_.maxIterations;
+        int iteration = 0;
+        for (; iteration < maxIterations && samples.next(indices); ++iteration)
+        {
+            sample.assign(indices, numPoints_);
+            candidates.clear();
+            solver_.estimateMinimal(sample, samples.enumerates(), candidates);
+            if (!keepBest(candidates))
+                continue;
+            if (params_.localOptimization)
+                optimizeLocally();
+            maxIterations = std::min<long>(maxIterations, requiredIterations(best_.inliers, sampleSize));
+        }
+        // With few features every sample was tried, and the structure of the known views alone may
+        // put all their residuals over the threshold (a minimal set has no redundancy to test).
+        // Then the solver's estimate over all features, ranked by the scorer, goes on to the
+        // re-triangulated inlier test below.
+        bool haveModel = std::isfinite(best_.cost) && best_.inliers > 0;
+        if (!haveModel && samples.enumerates())
+            haveModel = adoptAllFeatureEstimate();
+        if (!haveModel)
+            return false;
+
+        estimate.iterations = iteration;
+        estimate.pose = bestPose_;
+        // Refinement on the inliers may change their classification; one more round settles it.
+        estimate.numInliers = inlierMasks(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+        for (int round = 0; round < 2 && refiner_; ++round)
+        {
+            refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+            std::vector<unsigned char> points, lines;
+            estimate.numInliers = inlierMasks(estimate.pose, points, lines);
+            const bool settled = points == estimate.pointInliers && lines == estimate.lineInliers;
+            estimate.pointInliers.swap(points);
+            estimate.lineInliers.swap(lines);
+            if (settled)
+                break;
+        }
+        return estimate.numInliers > 0;
+    }
+
+private:
+    bool adoptAllFeatureEstimate()
+    {
+        FeatureSubset all;
+        for (int i = 0; i < numPoints_; ++i)
+            all.points.push_back(i);
+        for (int i = 0; i < numFeatures_ - numPoints_; ++i)
+            all.lines.push_back(i);
+        std::vector<CameraPose> poses;
+        solver_.estimateNonMinimal(all, poses);
+        const std::vector<ScoredPose> ranked = rankCandidates(scorer_, poses);
+        if (ranked.empty())
+            return false;
+        bestPose_ = ranked.front().pose;
+        best_ = scorer_.score(bestPose_, samplingThreshold_, std::numeric_limits<double>::infinity(), &bestInliers_);
+        return true;
+    }
+
+    //! Makes the cheapest of @p poses the best model if it beats it; true if it did.
+    bool keepBest(const std::vector<CameraPose>& poses)
+    {
+        bool improved = false;
+        for (const CameraPose& pose : poses)
+        {
+            const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_);
+            if (s.cost < best_.cost)
+            {
+                best_ = s;
+                bestPose_ = pose;
+                bestInliers_.points.swap(inliers_.points);
+                bestInliers_.lines.swap(inliers_.lines);
+                improved = true;
+            }
+        }
+        return improved;
+    }
+
+    //! Re-solves from the inliers of the best model while that lowers the cost.
+    void optimizeLocally()
+    {
+        std::vector<CameraPose> poses;
+        for (int round = 0; round < kLocalOptimizationRounds; ++round)
+        {
+            if (bestInliers_.size() < solver_.nonMinimalSize())
+                return;
+            poses.clear();
+            const FeatureSubset inliers = bestInliers_;
+            solver_.estimateNonMinimal(inliers, poses);
+            if (!keepBest(poses))
+                return;
+        }
+    }
+
+    void refineOnInliers(CameraPose& pose, const std::vector<unsigned char>& pointMask,
+                         const std::vector<unsigned char>& lineMask) const
+    {
+        FeatureSubset inliers;
+        for (int i = 0; i < (int)pointMask.size(); ++i)
+            if (pointMask[i])
+                inliers.points.push_back(i);
+        for (int i = 0; i < (int)lineMask.size(); ++i)
+            if (lineMask[i])
+                inliers.lines.push_back(i);
+        CameraPose refined = pose;
+        if (refiner_->refine(inliers, refined) && refined.allFinite())
+            pose = refined;
+    }
+
+    int inlierMasks(const CameraPose& pose, std::vector<unsigned char>& pointMask, std::vector<unsigned char>& lineMask)
+    {
+        scorer_.refitResiduals(pose, pointResiduals_, lineResiduals_);
+        int count = 0;
+        pointMask.resize(pointResiduals_.size());
+        for (size_t i = 0; i < pointResiduals_.size(); ++i)
+            count += pointMask[i] = pointResiduals_[i] < params_.threshold;
+        lineMask.resize(lineResiduals_.size());
+        for (size_t i = 0; i < lineResiduals_.size(); ++i)
+            count += lineMask[i] = lineResiduals_[i] < params_.threshold;
+        return count;
+    }
+
+    //! Samples needed to draw one all-inlier sample with the requested confidence.
+    long requiredIterations(int inliers, int sampleSize) const
+    {
+        const double w = double(inliers) / numFeatures_;
+        const double allInliers = std::pow(w, sampleSize);
+        if (allInliers >= 1.0)
+            return 1;
+        if (allInliers <= 0.0)
+            return params_.maxIterations;
+        // log1p: for a tiny all-inlier probability, 1 - p rounds to 1 and log(1 - p) to 0.
+        const double n = std::log1p(-params_.confidence) / std::log1p(-allInliers);
+        if (!(n < params_.maxIterations))
+            return params_.maxIterations;
+        return (long)std::ceil(n);
+    }
+
+    const PoseSolver& solver_;
+    const PoseScorer& scorer_;
+    const PoseRefiner* refiner_;
+    const RansacParams& params_;
+    const double samplingThreshold_;
+    int numPoints_ = 0, numFeatures_ = 0;
+    std::vector<double> pointResiduals_, lineResiduals_;
+    PoseScore best_ = worstScore();
+    CameraPose bestPose_;
+    FeatureSubset bestInliers_, inliers_;
+
+    static PoseScore worstScore()
+    {
+        PoseScore s;
+        s.cost = std::numeric_limits<double>::infinity();
+        return s;
+    }
+};
+
+} // namespace
+
+bool estimatePoseRobust(const PoseSolver& solver, const PoseScorer& scorer, const PoseRefiner* refiner,
+                        const RansacParams& params, RobustEstimate& estimate)
+{
+    return RobustEstimator(solver, scorer, refiner, params).run(estimate);
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
