@@ -9,8 +9,9 @@
 namespace opencv_test {
 namespace {
 
-// Degenerate configurations: the solver must return zero solutions or finite poses (proper
-// rotations), never NaN, and never throw for geometry (only for malformed arguments).
+// Degenerate configurations: the solver never throws for geometry (only for malformed arguments)
+// and never returns NaN. Where the features do not fix the pose it returns no candidate; where they
+// fix it only up to a symmetry, every candidate explains the observations exactly.
 
 struct Views
 {
@@ -60,21 +61,35 @@ Problem observe(const Views& v, const std::vector<Vec3d>& points, const std::vec
     return pr;
 }
 
-void expectNoNaN(const Views& v, const Problem& pr, const std::string& what)
+//! What the linear solver returns for a problem; every candidate checked finite and a proper rotation.
+struct Solution
 {
-    std::vector<Mat> Rs, ts;
-    Mat R, t;
     int n = -1;
-    ASSERT_NO_THROW(n = tripose::estimatePoseLinePoint(pr.p[0], pr.p[1], pr.p[2], pr.l[0], pr.l[1], pr.l[2], v.K,
-                                                       noArray(), v.R12, v.t12, R, t, tripose::POSE_LINEAR, Rs, ts))
+    std::vector<Mat> Rs, ts;
+    Mat errors;
+};
+
+Solution solve(const Views& v, const Problem& pr, const std::string& what)
+{
+    Solution s;
+    Mat R, t;
+    EXPECT_NO_THROW(s.n = tripose::estimatePoseLinePoint(pr.p[0], pr.p[1], pr.p[2], pr.l[0], pr.l[1], pr.l[2], v.K,
+                                                         noArray(), v.R12, v.t12, R, t, tripose::POSE_LINEAR, s.Rs,
+                                                         s.ts, s.errors))
         << what;
-    EXPECT_GE(n, 0) << what;
-    EXPECT_EQ(n == 0, R.empty()) << what;
-    for (int i = 0; i < n; ++i)
+    EXPECT_EQ(s.n == 0, R.empty()) << what;
+    for (int i = 0; i < s.n; ++i)
     {
-        EXPECT_TRUE(cv::checkRange(Rs[i]) && cv::checkRange(ts[i])) << what << ": candidate " << i << " not finite";
-        EXPECT_NEAR(cv::determinant(Rs[i]), 1.0, 1e-9) << what;
+        EXPECT_TRUE(cv::checkRange(s.Rs[i]) && cv::checkRange(s.ts[i])) << what << ": candidate " << i << " not finite";
+        EXPECT_NEAR(cv::determinant(s.Rs[i]), 1.0, 1e-9) << what;
     }
+    return s;
+}
+
+//! Features that do not fix the pose: no candidate at all.
+void expectNoSolution(const Views& v, const Problem& pr, const std::string& what)
+{
+    EXPECT_EQ(solve(v, pr, what).n, 0) << what;
 }
 
 std::vector<Vec3d> pointsOnLine(int n)
@@ -88,8 +103,12 @@ std::vector<Vec3d> pointsOnLine(int n)
 TEST(Tripose_DegenerateGeometry, collinear_points)
 {
     const Views v = makeViews();
-    expectNoNaN(v, observe(v, pointsOnLine(6), {}), "six collinear points");
-    expectNoNaN(v, observe(v, pointsOnLine(4), {}), "four collinear points");
+    // Six collinear points fix the pose up to a rotation about their line: any candidate returned
+    // must reproject them exactly. Four leave the linear system rank deficient.
+    const Solution six = solve(v, observe(v, pointsOnLine(6), {}), "six collinear points");
+    for (int i = 0; i < six.n; ++i)
+        EXPECT_LT(six.errors.at<double>(i), 1e-5) << "six collinear points, candidate " << i;
+    expectNoSolution(v, observe(v, pointsOnLine(4), {}), "four collinear points");
 }
 
 TEST(Tripose_DegenerateGeometry, parallel_lines)
@@ -101,9 +120,9 @@ TEST(Tripose_DegenerateGeometry, parallel_lines)
         ends.emplace_back(-2.0 + 0.7 * i, -1.0, 9.0 + 0.3 * i);
         ends.emplace_back(-2.0 + 0.7 * i, 1.5, 9.0 + 0.3 * i);
     }
-    expectNoNaN(v, observe(v, {}, ends), "six parallel lines");
+    expectNoSolution(v, observe(v, {}, ends), "six parallel lines");
     ends.resize(8);
-    expectNoNaN(v, observe(v, {}, ends), "four parallel lines");
+    expectNoSolution(v, observe(v, {}, ends), "four parallel lines");
 }
 
 TEST(Tripose_DegenerateGeometry, lines_through_one_point)
@@ -117,10 +136,13 @@ TEST(Tripose_DegenerateGeometry, lines_through_one_point)
         ends.push_back(centre);
         ends.push_back(centre + Vec3d(std::cos(a), std::sin(a), 0.3 * std::cos(2 * a)));
     }
-    expectNoNaN(v, observe(v, {}, ends), "six concurrent lines");
+    expectNoSolution(v, observe(v, {}, ends), "six concurrent lines");
 }
 
-TEST(Tripose_DegenerateGeometry, features_coplanar_with_camera_centre_one)
+// Planar structure through the centre of view 1 (every feature seen edge-on there) still fixes the
+// pose, but the linear solver does not recover it yet: the planar case of the narrow-baseline and
+// planar-scene work. Enabled once that lands.
+TEST(Tripose_DegenerateGeometry, DISABLED_features_coplanar_with_camera_centre_one_give_the_pose)
 {
     // The plane y = 0.1 z passes through the centre of view 1: every feature is seen edge-on.
     const Views v = makeViews();
@@ -132,7 +154,10 @@ TEST(Tripose_DegenerateGeometry, features_coplanar_with_camera_centre_one)
         ends.emplace_back(x, 0.1 * z, z);
         ends.emplace_back(x + 1.0, 0.1 * (z + 0.5), z + 0.5);
     }
-    expectNoNaN(v, observe(v, points, ends), "coplanar with the centre of view 1");
+    const Solution s = solve(v, observe(v, points, ends), "coplanar with the centre of view 1");
+    ASSERT_GT(s.n, 0);
+    EXPECT_LT(cv::norm(s.Rs[0] - v.R3), 1e-6);
+    EXPECT_LT(cv::norm(s.ts[0] - v.t3), 1e-6);
 }
 
 TEST(Tripose_DegenerateGeometry, features_behind_the_cameras)
@@ -141,7 +166,7 @@ TEST(Tripose_DegenerateGeometry, features_behind_the_cameras)
     std::vector<Vec3d> points;
     for (int i = 0; i < 6; ++i)
         points.emplace_back(-1.0 + 0.4 * i, 0.5 - 0.2 * i, -10.0 - i);
-    expectNoNaN(v, observe(v, points, {}), "points behind all cameras");
+    expectNoSolution(v, observe(v, points, {}), "points behind all cameras");
 }
 
 TEST(Tripose_DegenerateGeometry, identical_observations_in_all_views)
@@ -152,7 +177,11 @@ TEST(Tripose_DegenerateGeometry, identical_observations_in_all_views)
     Problem pr = observe(v, X, {});
     pr.p[1] = pr.p[0].clone();
     pr.p[2] = pr.p[0].clone();
-    expectNoNaN(v, pr, "identical observations");
+    // No pose of view 3 explains this with the known, translated view 2: a candidate may be returned
+    // as the best fit, but its reported error must say that it does not fit.
+    const Solution s = solve(v, pr, "identical observations");
+    for (int i = 0; i < s.n; ++i)
+        EXPECT_GT(s.errors.at<double>(i), 1.0) << "candidate " << i;
 }
 
 }} // namespace

@@ -276,7 +276,7 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
     }
 }
 
-//! The goal: the linear estimate refined reaches the accuracy of the ML estimate started
+//! The linear estimate refined reaches the accuracy of the ML estimate started
 //! from the ground truth (the best a local refinement can do), within 5 % in median, on the paper's
 //! protocol. A scene without a linear pose counts as a total failure, not as a dropped scene.
 TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_truth)

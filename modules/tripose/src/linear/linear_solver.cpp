@@ -26,6 +26,11 @@ typedef Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> KernelBasis;
 // error: the polish stops at rounding, about 1e-9 from the minimum.
 constexpr double kDuplicateTolerance = 1e-7;
 
+// Relative size of a QR pivot below which a four- or five-feature system counts as rank deficient.
+// Rounding leaves exact dependencies near 1e-15; image noise on independent features stays far
+// above this.
+constexpr double kRankTolerance = 1e-9;
+
 //! R' = (2 d d^T - I) R with d the unit baseline direction (a rotation by pi about d), and its
 //! least-squares translation.
 bool twistedPair(const CameraPose& pose, const ReducedNormalSystem& system, CameraPose& twisted)
@@ -65,7 +70,13 @@ bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBa
     for (int r = 4 * numPoints; r < A.rows(); ++r)
         At.col(out++) = A.row(r).transpose();
     CV_DbgAssert(out == rows);
-    const Eigen::ColPivHouseholderQR<Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 12>> qr(At);
+    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 12>> qr(At.rows(), At.cols());
+    qr.setThreshold(kRankTolerance);
+    qr.compute(At);
+    // Rows that depend on each other (collinear points, features seen without parallax) leave a
+    // kernel wider than N: the features do not fix the pose, and any combination would be arbitrary.
+    if (qr.rank() < rows)
+        return false;
     // Q's trailing columns are orthogonal to every constraint row: the kernel.
     Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4> E = Eigen::Matrix<double, 12, Eigen::Dynamic, 0, 12, 4>::Zero(12, N);
     E.bottomRows(N).setIdentity();
