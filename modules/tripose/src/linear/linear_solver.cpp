@@ -86,10 +86,9 @@ bool smallSystemKernel(const ConstraintMatrix& A, int numPoints, int N, KernelBa
 
 /** Rotates the kernel basis within its span so that its vectors ascend in fit: the last one is the
 best single solution vector (the smallest Ritz value of A^T A). With noise the kernel combinations
-depend on the basis (N = 4 fixes the last vector's coefficient to one; N = 2, 3 linearise). For the
-robust estimator's samples the QR's arbitrary order cost much accuracy on real five- to ten-feature
-sets (VGG, three points + two lines: upper-quartile rotation error 3.7-5.3 deg, 1.0-1.3 deg with
-this order). A rotation within the span keeps exact data exact.
+depend on the basis (N = 4 fixes the last vector's coefficient to one; N = 2, 3 linearise), and the
+QR's order is arbitrary: putting the best-fitting direction where the combinations anchor makes
+noisy hypotheses closer to the truth. A rotation within the span keeps exact data exact.
 */
 bool orderKernelBasis(const Matrix12d& normalMatrix, KernelBasis& kernel)
 {

@@ -27,10 +27,9 @@ struct CandidateOptions
 
     //! Add each candidate's twisted pair (rotated by pi about the baseline).
     bool twistedPairs;
-    /** Four or five features: rotate the kernel basis so that its last vector fits best. Measured:
-    better hypotheses for the robust estimator on small feature sets, whose samples go without
-    twisted pairs, but more gross failures for the linear solver's minimal case with them (2P+2L,
-    0.5 px: mean rotation error 13.8 deg instead of 9.5).
+    /** Four or five features: rotate the kernel basis so that its last vector fits best. It helps
+    samples scored without twisted pairs; with twisted pairs the QR order fails less often (the
+    figures are in doc/accuracy.md).
     */
     bool orderedKernel;
 };
