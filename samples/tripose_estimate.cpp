@@ -37,17 +37,20 @@ const char* kUsage =
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4)\n"
     "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
     "               (ransac: also num_inliers, point_inliers, line_inliers)\n"
-    "  --method     linear (default): the unified linear solver on all features;\n"
-    "               ransac: robust estimation with outlier rejection and refinement\n"
+    "  --method     linear (default): the unified linear solver on all features (no outlier rejection);\n"
+    "               ransac: robust estimation with outlier rejection\n"
     "  --threshold  ransac inlier threshold in pixels (default 2)\n"
     "  --confidence ransac confidence, in (0, 1) (default 0.999)\n"
     "  --max-iterations  ransac upper bound on the number of samples (default 10000)\n"
-    "  --refine     ransac: 1 (default) refines over the three views, 0 does not\n"
+    "  --refine     1: finish with maximum-likelihood refinement over the three views (linear: every\n"
+    "               candidate refined, the best kept; ransac: on the inliers); 0: no refinement.\n"
+    "               Default: 0 with linear, 1 with ransac\n"
     "  --seed       ransac sampler seed (default 0)\n";
 
 struct Options
 {
     std::string input, output, method = "linear";
+    int refine = -1; //!< -1: the method's default
     cv::tripose::RansacParams ransac;
 };
 
@@ -86,7 +89,7 @@ Options parseArguments(int argc, char** argv)
         {
             if (value != "0" && value != "1")
                 throw std::runtime_error("argument --refine: expected 0 or 1, got '" + value + "'");
-            o.ransac.refine = value == "1";
+            o.refine = value == "1" ? 1 : 0;
         }
         else // --seed
             o.ransac.seed = parseInteger(arg, value, -2147483647.0);
@@ -97,6 +100,7 @@ Options parseArguments(int argc, char** argv)
         throw std::runtime_error("argument --output is required");
     if (o.method != "linear" && o.method != "ransac")
         throw std::runtime_error("argument --method: expected 'linear' or 'ransac', got '" + o.method + "'");
+    o.ransac.refine = o.refine != 0;
     return o;
 }
 
@@ -134,7 +138,8 @@ int main(int argc, char** argv)
             n = cv::tripose::estimatePoseLinePoint(problem.points[0], problem.points[1], problem.points[2],
                                                    problem.lines[0], problem.lines[1], problem.lines[2],
                                                    problem.K, problem.dist, problem.R12, problem.t12, R, t,
-                                                   cv::tripose::POSE_LINEAR);
+                                                   options.refine == 1 ? cv::tripose::POSE_LINEAR_REFINE
+                                                                       : cv::tripose::POSE_LINEAR);
     }
     catch (const cv::Exception& e)
     {

@@ -6,11 +6,35 @@
 
 #include "input/pose_conversion.hpp"
 #include "input/problem_input.hpp"
+#include "refine/ml_refinement.hpp"
 #include "linear/linear_solver.hpp"
 #include "scoring/pose_scorer.hpp"
 
 namespace cv {
 namespace tripose {
+
+namespace {
+
+//! Refines every candidate over the three views and ranks them by the refined RMS error; candidates
+//! whose refinement has no usable feature are dropped.
+void refineCandidates(const detail::ViewSet& views, std::vector<detail::ScoredPose>& candidates)
+{
+    const RefineParams params;
+    std::vector<detail::ScoredPose> refined;
+    for (detail::ScoredPose candidate : candidates)
+    {
+        const detail::RefinementSummary summary = detail::refinePoseAndStructure(views, candidate.pose, params);
+        if (!std::isfinite(summary.finalRms) || !candidate.pose.allFinite())
+            continue;
+        candidate.rms = summary.finalRms;
+        refined.push_back(candidate);
+    }
+    std::stable_sort(refined.begin(), refined.end(),
+                     [](const detail::ScoredPose& a, const detail::ScoredPose& b) { return a.rms < b.rms; });
+    candidates.swap(refined);
+}
+
+} // namespace
 
 int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray points3,
                           InputArray lines1, InputArray lines2, InputArray lines3,
@@ -19,15 +43,18 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
                           OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray reprojectionErrors)
 {
     CV_INSTRUMENT_REGION();
-    if (method != POSE_LINEAR)
-        CV_Error_(Error::StsBadArg, ("method must be POSE_LINEAR (%d), got %d", (int)POSE_LINEAR, method));
+    if (method != POSE_LINEAR && method != POSE_LINEAR_REFINE)
+        CV_Error_(Error::StsBadArg, ("method must be POSE_LINEAR (%d) or POSE_LINEAR_REFINE (%d), got %d",
+                                     (int)POSE_LINEAR, (int)POSE_LINEAR_REFINE, method));
 
     const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                              cameraMatrix, distCoeffs, R12, t12);
     std::vector<detail::CameraPose> poses;
     detail::linearPoseCandidates(views, poses);
     const detail::PoseScorer scorer(views);
-    const std::vector<detail::ScoredPose> ranked = detail::rankCandidates(scorer, poses);
+    std::vector<detail::ScoredPose> ranked = detail::rankCandidates(scorer, poses);
+    if (method == POSE_LINEAR_REFINE)
+        refineCandidates(views, ranked);
 
     const int n = (int)ranked.size();
     if (n == 0)

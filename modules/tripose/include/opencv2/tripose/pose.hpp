@@ -17,7 +17,10 @@ namespace tripose {
 //! Methods of estimatePoseLinePoint().
 enum PoseMethod
 {
-    POSE_LINEAR = 0, //!< The unified linear solver of @cite QadirNeubert2017 on all features (no outlier rejection).
+    POSE_LINEAR = 0,        //!< The unified linear solver of @cite QadirNeubert2017 on all features (no outlier rejection).
+    POSE_LINEAR_REFINE = 1, //!< POSE_LINEAR, then every candidate refined by refinePoseLinePoint() (default
+                            //!< RefineParams) and the candidates ranked by their refined reprojection error over
+                            //!< the three views (no outlier rejection).
 };
 
 /** @brief Estimates the pose of a third calibrated view from point and line triplets, the poses of
@@ -30,11 +33,16 @@ The metric scale of \f$t\f$ is that of \f$t_{12}\f$.
 With POSE_LINEAR the method of @cite QadirNeubert2017 is used: every point triplet adds rows of the
 normalized trilinear constraints and every line triplet the two rows left by eliminating the planes
 of views 1 and 2; the pose is a combination of the last N singular vectors of the stacked system
-(N = 1 for six or more features, N = 2 for five, N = 4 for four), whose coefficients are found from
-the orthonormality of \f$R\f$. Each candidate gets the nearest rotation and a least-squares
-translation; candidates that put most triangulated points behind view 3 are dropped and the rest
-are ranked by their reprojection error in view 3 (points: pixel distance; segments: distance of
-both end points to the projected line).
+(N = 1 for six or more features, also N = 2 there; N = 2 for five, N = 4 for four), whose coefficients
+are found from the orthonormality of \f$R\f$. Each candidate gets the nearest rotation and a
+least-squares translation, polished on the algebraic error, and its twisted pair (rotated by pi
+about the baseline) is added. With the structure triangulated from views 1 and 2, candidates that
+put most of it behind view 3 are dropped and the rest are ranked by their RMS reprojection error in
+view 3 (points: pixel distance; segments: distances of both end points to the projected line).
+Four or five features whose constraints are dependent (e.g. collinear points) give no candidate.
+
+With POSE_LINEAR_REFINE every candidate is then refined by refinePoseLinePoint() and the candidates
+are ranked by their refined RMS reprojection error over the three views.
 
 Any mix of at least four features works (4 points, 4 lines, 2 points + 2 lines, 3 + 1, 1 + 3 and
 anything larger).
@@ -58,8 +66,9 @@ shared by the views or a vector of three; empty means no distortion.
 @param method One of #PoseMethod.
 @param Rs Optional output: every candidate rotation (3x3 CV_64F), best first.
 @param ts Optional output: the matching translations (3x1 CV_64F).
-@param reprojectionErrors Optional output: RMS reprojection error in view 3 of each candidate, in
-pixels (CV_64F, one per candidate, same order as Rs).
+@param reprojectionErrors Optional output: per candidate, in pixels (CV_64F, same order as Rs): the
+RMS reprojection error in view 3 (POSE_LINEAR) or over the three views after refinement
+(POSE_LINEAR_REFINE).
 @return The number of candidate poses (0 when the geometry admits none, e.g. degenerate input).
 
 @throws cv::Exception naming the argument when an input has the wrong shape or type, the counts
