@@ -281,9 +281,9 @@ def test_problem_that_is_not_a_map_is_rejected(tmp_path, text):
 
 
 def reader_regression(name):
-    """The problem text of a fuzz_problem_reader regression input (its first byte is not text)."""
+    """The problem text of a fuzz_problem_reader regression input."""
     regression = Path(__file__).resolve().parents[1] / "fuzz" / "regressions" / "fuzz_problem_reader"
-    return (regression / name).read_bytes()[1:]
+    return (regression / name).read_bytes()
 
 
 def test_key_repeated_inside_a_matrix_is_a_parse_error(tmp_path):
