@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs everything tripose needs, idempotently and quickly when it is already there:
-#  - Debian packages (compiler, CMake, Ninja, OpenCV 4.6, Eigen 3.4, GoogleTest, Python headers,
-#    clang with libFuzzer);
+#  - Debian packages (compiler, CMake, Ninja, OpenCV 4.6, Eigen 3.4, GoogleTest, libyaml, Python
+#    headers, clang with libFuzzer);
 #  - a Python virtual environment in .venv from the pinned requirements/python.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 apt_packages=(build-essential cmake ninja-build pkg-config
               libopencv-dev libeigen3-dev libgtest-dev
+              libyaml-dev                    # the problem reader of the command-line tools
               python3 python3-dev python3-venv python3-numpy
               clang-14 libclang-rt-14-dev)   # libFuzzer for scripts/fuzz.sh
 

@@ -2,8 +2,9 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Problem and result files of the command-line tools: OpenCV FileStorage (YAML or JSON, chosen by
-// the file name's extension).
+// Problem and result files of the command-line tools, in OpenCV FileStorage's YAML or JSON. Problems
+// are read with libyaml (YAML and JSON alike), whose parser returns on any text; results are written
+// with cv::FileStorage (YAML or JSON, chosen by the file name's extension).
 #ifndef TRIPOSE_SAMPLES_PROBLEM_IO_HPP
 #define TRIPOSE_SAMPLES_PROBLEM_IO_HPP
 
@@ -24,15 +25,17 @@ struct Problem
     cv::Mat lines[3];           //!< Mx4 (0x4 when absent).
 };
 
-/** Reads a problem from FileStorage text (YAML or JSON). Keys: K or K1..K3; optional dist or
+/** Reads a problem from FileStorage text (YAML, with or without OpenCV's "%YAML:1.0" first line, or
+JSON; told apart by the text itself, not the file name). Keys: K or K1..K3; optional dist or
 dist1..dist3; R12 (3x3 or 3x1 Rodrigues), t12; points1..points3 (Nx2) and lines1..lines3 (Mx4), each
-kind absent or empty in all views when not used. Throws std::runtime_error naming the key on any
-malformed or inconsistent entry.
+kind absent or empty in all views when not used; other keys are ignored. Matrices are FileStorage's
+(rows, cols, dt, data). Throws std::runtime_error on text that is not YAML or JSON ("cannot parse",
+with the line), and naming the key on any malformed or inconsistent entry.
 */
 Problem readProblem(const std::string& path);
 
-//! The same from text in memory (used by the fuzzer); @p format is ".yml" or ".json".
-Problem readProblemFromString(const std::string& text, const std::string& format);
+//! The same from text in memory (used by the fuzzer).
+Problem readProblemFromString(const std::string& text);
 
 /** The problem key behind the argument a solver message names, as " (key 'K2')", or "" when it names
 none: the solver speaks of cameraMatrix[1] and distCoeffs, the file of K2 and dist.

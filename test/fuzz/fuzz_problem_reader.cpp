@@ -3,9 +3,9 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // libFuzzer target over the problem reader of the command-line tools (samples/common/problem_io):
-// the first byte picks the format (even: YAML, odd: JSON), the rest is the FileStorage text. The
-// reader's contract is a Problem or a std::runtime_error naming the key; any other exception, a
-// crash or a sanitizer report is a bug. What it returns is checked against the shapes it promises.
+// the input is the problem text (YAML or JSON). The reader's contract is a
+// Problem or a std::runtime_error naming the key or the line; any other exception, a crash, a
+// sanitizer report or a timeout is a bug. What it returns is checked against the shapes it promises.
 
 #include <cstdio>
 #include <cstdlib>
@@ -43,13 +43,10 @@ void checkShapes(const tripose_samples::Problem& p)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    if (size == 0)
-        return 0;
-    const std::string format = (data[0] & 1) ? ".json" : ".yml";
-    const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
+    const std::string text(reinterpret_cast<const char*>(data), size);
     try
     {
-        checkShapes(tripose_samples::readProblemFromString(text, format));
+        checkShapes(tripose_samples::readProblemFromString(text));
     }
     catch (const std::runtime_error&)
     {

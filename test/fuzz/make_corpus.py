@@ -5,7 +5,7 @@ Seeds are small valid problems: scenes from the project's generator (tripose_mak
 standalone build) and three views of Oxford VGG's Merton College I (test/data/vgg), the first
 features seen in all three views, with intrinsics and poses from the sequence's projection matrices.
 
-  fuzz_problem_reader: one byte for the format (0 YAML, 1 JSON) + the problem file text.
+  fuzz_problem_reader: the problem file text (YAML or JSON).
   fuzz_estimate_pose:  the binary layout documented at the top of fuzz_estimate_pose.cpp.
 
   .venv/bin/python test/fuzz/make_corpus.py [--build build]
@@ -128,9 +128,9 @@ def main():
         for old in folder.iterdir():
             old.unlink()
     for name, problem in scenes.items():
-        (reader / f"{name}.yml.seed").write_bytes(b"\x00" + problem_text(problem, ".yml"))
+        (reader / f"{name}.yml.seed").write_bytes(problem_text(problem, ".yml"))
     for name in ("scene_3p3l", "vgg_merton1_6p6l"):
-        (reader / f"{name}.json.seed").write_bytes(b"\x01" + problem_text(scenes[name], ".json"))
+        (reader / f"{name}.json.seed").write_bytes(problem_text(scenes[name], ".json"))
 
     # Options: 96 = local optimisation + refinement; 2 float32; 4 three K; 16 Rodrigues R12;
     # 1 homogeneous lines; 8 distortion; 128 initial pose for the refinement.
