@@ -16,6 +16,7 @@
 #include <opencv2/tripose.hpp>
 
 #include "pose_errors.hpp"
+#include "tripose_support/vgg_dataset.hpp"
 
 namespace {
 
@@ -75,10 +76,10 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    cv::tripose::VggTriplet triplet;
+    cv::tripose::support::VggTriplet triplet;
     try
     {
-        triplet = cv::tripose::loadVggTriplet(data, views[0], views[1], views[2]);
+        triplet = cv::tripose::support::loadVggTriplet(data, views[0], views[1], views[2]);
     }
     catch (const cv::Exception& e)
     {

@@ -16,6 +16,7 @@
 #include <opencv2/tripose.hpp>
 
 #include "pose_errors.hpp"
+#include "tripose_support/vgg_dataset.hpp"
 
 namespace {
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv)
         int views = 0;
         try
         {
-            views = cv::tripose::vggSequenceViewCount(folder);
+            views = cv::tripose::support::vggSequenceViewCount(folder);
         }
         catch (const cv::Exception& e)
         {
@@ -63,7 +64,7 @@ int main(int argc, char** argv)
         }
         for (int v = 0; v + 2 < views; ++v)
         {
-            const cv::tripose::VggTriplet s = cv::tripose::loadVggTriplet(folder, v, v + 1, v + 2);
+            const cv::tripose::support::VggTriplet s = cv::tripose::support::loadVggTriplet(folder, v, v + 1, v + 2);
             const int features = s.points1.rows + s.lines1.rows;
             std::string linear = "- | -", robust = "- | - | -";
             if (features >= 4)

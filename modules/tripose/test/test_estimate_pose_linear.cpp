@@ -26,7 +26,7 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
     double worstSelectedRotation = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
-        const tripose::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
+        const tripose::support::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         const int n = solveScene(s, Rs, ts, R, t);
@@ -43,7 +43,7 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
             selected += e < rotationTolerance && relativeTranslationError(t, s.t) < translationTolerance;
         }
     }
-    std::cout << mixName(mix) << (motion == tripose::MOTION_LARGE ? " large" : " small")
+    std::cout << mixName(mix) << (motion == tripose::support::MOTION_LARGE ? " large" : " small")
               << ": true pose among candidates " << found << "/" << scenes << ", selected " << selected
               << "/" << scenes << ", worst selected rotation error " << worstSelectedRotation << " rad" << std::endl;
     EXPECT_GE(found, scenes * 999 / 1000);
@@ -58,7 +58,7 @@ const FeatureMix kExactMixes[] = {
 
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
                         testing::Combine(testing::ValuesIn(kExactMixes),
-                                         testing::Values((int)tripose::MOTION_LARGE, (int)tripose::MOTION_SMALL)));
+                                         testing::Values((int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL)));
 
 // ---------------------------------------------------------------------------------------------
 // Input forms: all accepted layouts give the same pose.
@@ -66,7 +66,7 @@ INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
 
 TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrinsics)
 {
-    const tripose::SyntheticScene s = makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 7);
+    const tripose::support::SyntheticScene s = makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 7);
     Mat R, t;
     ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                              s.cameraMatrices[0], noArray(), s.R12, s.t12, R, t), 0);
@@ -98,7 +98,7 @@ TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrin
 
 TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
 {
-    const tripose::SyntheticScene s = makeScene({ 2, 4 }, tripose::MOTION_SMALL, 0.0, 3);
+    const tripose::support::SyntheticScene s = makeScene({ 2, 4 }, tripose::support::MOTION_SMALL, 0.0, 3);
     Mat homogeneous[3];
     const Mat* lines[3] = { &s.lines1, &s.lines2, &s.lines3 };
     for (int v = 0; v < 3; ++v)
@@ -122,7 +122,7 @@ TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
 
 TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
 {
-    const tripose::SyntheticScene s = makeScene({ 10, 10 }, tripose::MOTION_LARGE, 0.0, 5);
+    const tripose::support::SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 0.0, 5);
     const Mat dist = (Mat_<double>(1, 5) << -0.3, 0.1, 0.001, -0.0005, 0.0);
     const Mat K = s.cameraMatrices[0];
     // Distort every observation: pixel -> normalised -> projectPoints with the model.
@@ -154,7 +154,7 @@ TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
 
 TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_error)
 {
-    const tripose::SyntheticScene s = makeScene({ 2, 2 }, tripose::MOTION_LARGE, 1.0, 21);
+    const tripose::support::SyntheticScene s = makeScene({ 2, 2 }, tripose::support::MOTION_LARGE, 1.0, 21);
     std::vector<Mat> Rs, ts;
     Mat R, t, errors;
     const int n = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,

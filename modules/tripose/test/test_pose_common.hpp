@@ -53,19 +53,19 @@ inline std::string mixName(const FeatureMix& m)
     return cv::format("%dP%dL", m.points, m.lines);
 }
 
-inline tripose::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
+inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = mix.points;
     params.numLines = mix.lines;
     params.motion = motion;
     params.noiseSigma = noise;
     params.seed = seed;
-    return tripose::generateSyntheticScene(params);
+    return tripose::support::generateSyntheticScene(params);
 }
 
 //! Solves a scene with the linear method; all candidates best first.
-inline int solveScene(const tripose::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
+inline int solveScene(const tripose::support::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
 {
     return tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                           s.cameraMatrices, noArray(), s.R12, s.t12, R, t,

@@ -15,8 +15,8 @@ namespace opencv_test {
 namespace {
 
 using tripose::RefineParams;
-using tripose::SyntheticScene;
-using tripose::SyntheticSceneParams;
+using tripose::support::SyntheticScene;
+using tripose::support::SyntheticSceneParams;
 
 //! Rotation angle (deg) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
 double rotationErrorDeg(const Mat& A, const Mat& B)
@@ -47,7 +47,7 @@ SyntheticScene makeScene(int points, int lines, int motion, double sigma, int se
     p.noiseSigma = sigma;
     p.outlierRatio = outlierRatio;
     p.seed = seed;
-    return tripose::generateSyntheticScene(p);
+    return tripose::support::generateSyntheticScene(p);
 }
 
 //! The true pose turned by @p degrees about a random axis, its translation moved by @p fraction of its norm.
@@ -85,12 +85,12 @@ struct Setting
 
 std::string settingName(const Setting& s)
 {
-    return format("%dP+%dL %s", s.points, s.lines, s.motion == tripose::MOTION_LARGE ? "large" : "small");
+    return format("%dP+%dL %s", s.points, s.lines, s.motion == tripose::support::MOTION_LARGE ? "large" : "small");
 }
 
 const Setting kPaperSettings[] = {
-    { 3, 3, tripose::MOTION_LARGE }, { 4, 4, tripose::MOTION_LARGE }, { 10, 10, tripose::MOTION_LARGE },
-    { 3, 3, tripose::MOTION_SMALL }, { 4, 4, tripose::MOTION_SMALL }, { 10, 10, tripose::MOTION_SMALL },
+    { 3, 3, tripose::support::MOTION_LARGE }, { 4, 4, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_LARGE },
+    { 3, 3, tripose::support::MOTION_SMALL }, { 4, 4, tripose::support::MOTION_SMALL }, { 10, 10, tripose::support::MOTION_SMALL },
 };
 
 TEST(Tripose_LineParameterization, chart_jacobian_matches_finite_differences)
@@ -161,7 +161,7 @@ TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
 
 TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_LARGE, 1.0, 8);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 1.0, 8);
     const tripose::detail::TripletData data = tripose::detail::readTripletInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose pose;
@@ -181,8 +181,8 @@ TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
 {
     const Setting settings[] = {
-        { 3, 3, tripose::MOTION_LARGE }, { 10, 10, tripose::MOTION_SMALL }, { 6, 0, tripose::MOTION_LARGE },
-        { 0, 6, tripose::MOTION_SMALL }, { 2, 1, tripose::MOTION_LARGE },
+        { 3, 3, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_SMALL }, { 6, 0, tripose::support::MOTION_LARGE },
+        { 0, 6, tripose::support::MOTION_SMALL }, { 2, 1, tripose::support::MOTION_LARGE },
     };
     RNG rng(7);
     for (const Setting& setting : settings)
@@ -221,7 +221,7 @@ TEST(Tripose_RefinePose, noise_free_lines3d_are_the_view1_end_points)
 {
     // The ends of a generated segment are observed exactly in view 1, so the returned points of each
     // line (closest to the view-1 end rays) are the true 3D end points.
-    const SyntheticScene s = makeScene(3, 5, tripose::MOTION_LARGE, 0.0, 3);
+    const SyntheticScene s = makeScene(3, 5, tripose::support::MOTION_LARGE, 0.0, 3);
     Mat R = s.R.clone(), t = s.t.clone(), L;
     refineScene(s, R, t, RefineParams(), noArray(), L);
     EXPECT_LT(cv::norm(L, s.lines3d, NORM_INF), 1e-6);
@@ -244,7 +244,7 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
             Mat R, t;
             // Several times the ML errors: in small motion (|t| of a few metres) the ML translation error
             // alone is ~7 % of |t|.
-            perturbPose(s, 2.0, setting.motion == tripose::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
+            perturbPose(s, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
             startRot.push_back(rotationErrorDeg(R, s.R));
             startTrans.push_back(relativeTranslationError(t, s.t));
             refineScene(s, R, t);
@@ -347,7 +347,7 @@ void triangulateThenPnpRefine(const SyntheticScene& s, Mat& R, Mat& t)
 TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
 {
     const int scenes = 200;
-    for (int motion : { (int)tripose::MOTION_LARGE, (int)tripose::MOTION_SMALL })
+    for (int motion : { (int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL })
     {
         for (int points : { 6, 20 })
         {
@@ -368,7 +368,7 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
                 pnpRot.push_back(rotationErrorDeg(R, s.R));
                 pnpTrans.push_back(relativeTranslationError(t, s.t));
             }
-            const std::string name = format("%dP %s", points, motion == tripose::MOTION_LARGE ? "large" : "small");
+            const std::string name = format("%dP %s", points, motion == tripose::support::MOTION_LARGE ? "large" : "small");
             SCOPED_TRACE(name);
             std::cout << format("[ %-10s ] three-view ML %.4f deg %.5f | triangulate + solvePnPRefineLM %.4f deg %.5f\n",
                                 name.c_str(), median(oursRot), median(oursTrans), median(pnpRot), median(pnpTrans));
@@ -386,7 +386,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
     for (int seed = 0; seed < scenes; ++seed)
     {
         // 2 of 10 points and 2 of 10 lines are wrong matches in view 3 (at least 20 px off).
-        const SyntheticScene s = makeScene(10, 10, tripose::MOTION_LARGE, 1.0, seed, 0.2);
+        const SyntheticScene s = makeScene(10, 10, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
         Mat R0, t0;
         perturbPose(s, 1.0, 0.02, rng, R0, t0);
         for (int loss = tripose::LOSS_SQUARED; loss <= tripose::LOSS_CAUCHY; ++loss)
@@ -418,7 +418,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 {
     // The robust estimator refines over its inliers by index; the result must be that of a problem
     // holding only those features.
-    const SyntheticScene s = makeScene(12, 8, tripose::MOTION_SMALL, 1.0, 21);
+    const SyntheticScene s = makeScene(12, 8, tripose::support::MOTION_SMALL, 1.0, 21);
     const std::vector<int> pointIdx = { 0, 2, 3, 5, 8, 11 }, lineIdx = { 1, 4, 6 };
     Mat p1, p2, p3, l1, l2, l3;
     for (int i : pointIdx)
@@ -465,7 +465,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 {
     // At the returned estimate, recompute the residuals from points3d / lines3d independently.
-    const SyntheticScene s = makeScene(5, 4, tripose::MOTION_LARGE, 1.0, 9);
+    const SyntheticScene s = makeScene(5, 4, tripose::support::MOTION_LARGE, 1.0, 9);
     Mat R = s.R.clone(), t = s.t.clone(), X, L;
     const double rms = refineScene(s, R, t, RefineParams(), X, L);
     const Mat Rs[3] = { Mat::eye(3, 3, CV_64F), s.R12, R }, ts[3] = { Mat::zeros(3, 1, CV_64F), s.t12, t };
@@ -504,7 +504,7 @@ TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 
 TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 {
-    const SyntheticScene s = makeScene(4, 3, tripose::MOTION_LARGE, 0.5, 4);
+    const SyntheticScene s = makeScene(4, 3, tripose::support::MOTION_LARGE, 0.5, 4);
     RNG rng(1);
     Mat R0, t0;
     perturbPose(s, 1.0, 0.02, rng, R0, t0);
@@ -550,7 +550,7 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 
 TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_SMALL, 1.0, 2);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_SMALL, 1.0, 2);
     // Every view sees the same image: the views 1-2 baseline cannot triangulate anything consistently,
     // and views 2, 3 are contradicted.
     {
@@ -591,7 +591,7 @@ TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 
 TEST(Tripose_RefinePose, bad_params_and_inputs_throw_naming_the_argument)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_LARGE, 0.0, 1);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 0.0, 1);
     auto expectThrow = [&](const RefineParams& params, Mat R, Mat t, const std::string& name) {
         try
         {
