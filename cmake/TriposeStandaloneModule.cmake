@@ -1,7 +1,7 @@
 # Builds modules/tripose outside an OpenCV tree, with the same source layout that
 # ocv_define_module() expects: src/ (globbed recursively, so src/generated/ is included),
 # test/ and perf/ (compiled against the thin ts shim in cmake/ts_shim). Also builds the support
-# library of modules/tripose/support (scene generator, VGG reader), which the tests,
+# library of modules/tripose/support (scene generator, VGG reader, pose error), which the tests,
 # perf tests, samples, benchmarks and evaluation link and which is not installed.
 
 set(TRIPOSE_TS_SHIM_DIR "${CMAKE_CURRENT_LIST_DIR}/ts_shim")

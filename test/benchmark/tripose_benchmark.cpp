@@ -24,13 +24,12 @@
 #include <opencv2/tripose.hpp>
 
 #include "benchmark_common.hpp"
+#include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 
 namespace {
 
 using tripose_benchmark::median;
-using tripose_benchmark::rotationErrorDeg;
-using tripose_benchmark::translationError;
 
 //! Triangulates the points from views 1-2 and solves PnP in view 3 (the baseline a user would write).
 bool triangulateThenPnP(const cv::tripose::support::SyntheticScene& s, int flags, cv::Mat& R, cv::Mat& t)
@@ -139,8 +138,11 @@ int main(int argc, char** argv)
             for (size_t m = 0; m < M; ++m)
             {
                 times[m].push_back(median(perScene[m]));
-                rot[m].push_back(ok[m] ? rotationErrorDeg(Rs[m], s.R) : HUGE_VAL);
-                trans[m].push_back(ok[m] ? translationError(ts[m], s.t) : HUGE_VAL);
+                cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+                if (ok[m])
+                    e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
+                rot[m].push_back(e.rotationDeg);
+                trans[m].push_back(e.relativeTranslation);
             }
         }
         const double base = median(times[0]);

@@ -26,6 +26,7 @@
 #include <opencv2/tripose.hpp>
 
 #include "benchmark_common.hpp"
+#include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 
 namespace {
@@ -140,8 +141,10 @@ int main(int argc, char** argv)
         for (size_t m = 0; m < M; ++m)
         {
             times[m].push_back(tripose_benchmark::median(perScene[m]));
-            const double r = ok[m] ? tripose_benchmark::rotationErrorDeg(Rs[m], s.R) : HUGE_VAL;
-            const double tr = ok[m] ? tripose_benchmark::translationError(ts[m], s.t) : HUGE_VAL;
+            cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+            if (ok[m])
+                e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
+            const double r = e.rotationDeg, tr = e.relativeTranslation;
             rot[m].push_back(r);
             trans[m].push_back(tr);
             good[m] += r < 1.0 && tr < 0.05;

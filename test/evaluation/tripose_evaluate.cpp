@@ -41,6 +41,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 
@@ -148,18 +149,7 @@ Options parse(int argc, char** argv)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Error measures
-
-double rotationErrorDeg(const cv::Mat& A, const cv::Mat& B)
-{
-    // |A - B|_F = 2 sqrt(2) sin(theta / 2): accurate for tiny angles, unlike acos of the trace.
-    return 2.0 * std::asin(std::min(1.0, cv::norm(A, B) / (2.0 * std::sqrt(2.0)))) * 180.0 / CV_PI;
-}
-
-double translationError(const cv::Mat& a, const cv::Mat& b)
-{
-    return cv::norm(a.reshape(1, 3), b.reshape(1, 3)) / cv::norm(b);
-}
+// Statistics
 
 double medianOf(std::vector<double> v)
 {
@@ -305,8 +295,9 @@ Result timed(const Problem& p, int repeats, const std::function<bool(cv::Mat&, c
     res.ok = res.ok && !R.empty() && cv::checkRange(R) && cv::checkRange(t);
     if (res.ok)
     {
-        res.rot = rotationErrorDeg(R, p.R);
-        res.trans = translationError(t, p.t);
+        const cv::tripose::support::PoseError e = cv::tripose::support::poseError(R, t, p.R, p.t);
+        res.rot = e.rotationDeg;
+        res.trans = e.relativeTranslation;
     }
     return res;
 }

@@ -77,8 +77,9 @@ TEST_P(Tripose_LinearNoise, median_errors_stay_at_the_measured_level)
             continue;
         }
         ++solved;
-        rotation.push_back(rotationError(R, s.R) * 180.0 / CV_PI);
-        translation.push_back(relativeTranslationError(t, s.t));
+        const PoseError e = poseError(R, t, s.R, s.t);
+        rotation.push_back(e.rotationDeg);
+        translation.push_back(e.relativeTranslation);
         meanRotation += rotation.back();
         meanTranslation += translation.back();
     }

@@ -45,9 +45,9 @@ TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
         const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
         if (inliers == 0)
             continue;
-        const double rotDeg = rotationError(R, s.R) * 180 / CV_PI;
-        rotationErrors.push_back(rotDeg);
-        accurate += rotDeg < 1.0 && relativeTranslationError(t, s.t) < 0.05;
+        const PoseError e = poseError(R, t, s.R, s.t);
+        rotationErrors.push_back(e.rotationDeg);
+        accurate += e.rotationDeg < 1.0 && e.relativeTranslation < 0.05;
         ASSERT_EQ(pointMask.total(), (size_t)s.points1.rows);
         ASSERT_EQ(lineMask.total(), (size_t)s.lines1.rows);
         EXPECT_EQ(inliers, cv::countNonZero(pointMask) + cv::countNonZero(lineMask));
@@ -80,8 +80,9 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
             Mat R, t, pointMask, lineMask;
             const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
             ASSERT_EQ(inliers, mix.points + mix.lines) << mixName(mix) << " seed " << seed;
-            EXPECT_LT(rotationError(R, s.R), 1e-6) << mixName(mix) << " seed " << seed;
-            EXPECT_LT(relativeTranslationError(t, s.t), 1e-6) << mixName(mix) << " seed " << seed;
+            const PoseError e = poseError(R, t, s.R, s.t);
+            EXPECT_LT(e.rotationDeg, degrees(1e-6)) << mixName(mix) << " seed " << seed;
+            EXPECT_LT(e.relativeTranslation, 1e-6) << mixName(mix) << " seed " << seed;
         }
 }
 

@@ -8,7 +8,8 @@
 #include "opencv2/ts.hpp"
 #include "opencv2/tripose.hpp"
 
-// The support library: scenes and data sets of the tests (not part of the module).
+// The support library: scenes, data sets and pose errors of the tests (not part of the module).
+#include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 

@@ -18,17 +18,16 @@ using tripose::RefineParams;
 using tripose::support::SyntheticScene;
 using tripose::support::SyntheticSceneParams;
 
-//! Rotation angle (deg) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
-double rotationErrorDeg(const Mat& A, const Mat& B)
-{
-    const double d = cv::norm(A, B, NORM_L2) / (2.0 * std::sqrt(2.0));
-    return 2.0 * std::asin(std::min(1.0, d)) * 180.0 / CV_PI;
-}
+using tripose::support::PoseError;
+using tripose::support::poseError;
 
-//! |a - b| / |b|.
-double relativeTranslationError(const Mat& a, const Mat& b)
+//! Appends the errors of (R, t) against (Rref, tref): rotation (deg) and relative translation.
+void appendErrors(const Mat& R, const Mat& t, const Mat& Rref, const Mat& tref, std::vector<double>& rotation,
+                  std::vector<double>& translation)
 {
-    return cv::norm(a.reshape(1, 3), b.reshape(1, 3), NORM_L2) / cv::norm(b, NORM_L2);
+    const PoseError e = poseError(R, t, Rref, tref);
+    rotation.push_back(e.rotationDeg);
+    translation.push_back(e.relativeTranslation);
 }
 
 double median(std::vector<double> v)
@@ -194,8 +193,9 @@ TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
             Mat R, t, X, L;
             perturbPose(s, 2.0, 0.05, rng, R, t);
             const double rms = refineScene(s, R, t, RefineParams(), X, L);
-            worstRotation = std::max(worstRotation, rotationErrorDeg(R, s.R));
-            worstTranslation = std::max(worstTranslation, relativeTranslationError(t, s.t));
+            const PoseError e = poseError(R, t, s.R, s.t);
+            worstRotation = std::max(worstRotation, e.rotationDeg);
+            worstTranslation = std::max(worstTranslation, e.relativeTranslation);
             worstRms = std::max(worstRms, rms);
             ASSERT_EQ(X.size(), Size(3, setting.points));
             ASSERT_EQ(L.size(), Size(6, setting.lines));
@@ -245,16 +245,12 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
             // Several times the ML errors: in small motion (|t| of a few metres) the ML translation error
             // alone is ~7 % of |t|.
             perturbPose(s, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
-            startRot.push_back(rotationErrorDeg(R, s.R));
-            startTrans.push_back(relativeTranslationError(t, s.t));
+            appendErrors(R, t, s.R, s.t, startRot, startTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
-            mlRot.push_back(rotationErrorDeg(Rml, s.R));
-            mlTrans.push_back(relativeTranslationError(tml, s.t));
-            refinedRot.push_back(rotationErrorDeg(R, s.R));
-            refinedTrans.push_back(relativeTranslationError(t, s.t));
-            gapRot.push_back(rotationErrorDeg(R, Rml));
-            gapTrans.push_back(relativeTranslationError(t, tml));
+            appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
+            appendErrors(R, t, s.R, s.t, refinedRot, refinedTrans);
+            appendErrors(R, t, Rml, tml, gapRot, gapTrans);
             otherMinimum += gapRot.back() > 1e-3;
         }
         SCOPED_TRACE(settingName(setting));
@@ -291,8 +287,7 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
             const SyntheticScene s = makeScene(setting.points, setting.lines, setting.motion, 1.0, 1000 + seed);
             Mat Rml = s.R.clone(), tml = s.t.clone();
             refineScene(s, Rml, tml);
-            mlRot.push_back(rotationErrorDeg(Rml, s.R));
-            mlTrans.push_back(relativeTranslationError(tml, s.t));
+            appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
 
             Mat R, t;
             if (tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
@@ -305,13 +300,11 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
                 continue;
             }
             ++solved;
-            linRot.push_back(rotationErrorDeg(R, s.R));
-            linTrans.push_back(relativeTranslationError(t, s.t));
+            appendErrors(R, t, s.R, s.t, linRot, linTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
-            refinedRot.push_back(rotationErrorDeg(R, s.R));
-            refinedTrans.push_back(relativeTranslationError(t, s.t));
-            sameMinimum += rotationErrorDeg(R, Rml) < 1e-3;
+            appendErrors(R, t, s.R, s.t, refinedRot, refinedTrans);
+            sameMinimum += poseError(R, t, Rml, tml).rotationDeg < 1e-3;
         }
         SCOPED_TRACE(settingName(setting));
         const double rotRatio = median(refinedRot) / median(mlRot);
@@ -360,13 +353,11 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
                 perturbPose(s, 2.0, 0.05, rng, R0, t0);
                 Mat R = R0.clone(), t = t0.clone();
                 refineScene(s, R, t);
-                oursRot.push_back(rotationErrorDeg(R, s.R));
-                oursTrans.push_back(relativeTranslationError(t, s.t));
+                appendErrors(R, t, s.R, s.t, oursRot, oursTrans);
                 R = R0.clone();
                 t = t0.clone();
                 triangulateThenPnpRefine(s, R, t);
-                pnpRot.push_back(rotationErrorDeg(R, s.R));
-                pnpTrans.push_back(relativeTranslationError(t, s.t));
+                appendErrors(R, t, s.R, s.t, pnpRot, pnpTrans);
             }
             const std::string name = format("%dP %s", points, motion == tripose::support::MOTION_LARGE ? "large" : "small");
             SCOPED_TRACE(name);
@@ -398,8 +389,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
             Mat R = R0.clone(), t = t0.clone();
             const double rms = refineScene(s, R, t, params);
             ASSERT_TRUE(std::isfinite(rms));
-            errors[loss][0].push_back(rotationErrorDeg(R, s.R));
-            errors[loss][1].push_back(relativeTranslationError(t, s.t));
+            appendErrors(R, t, s.R, s.t, errors[loss][0], errors[loss][1]);
         }
     }
     const char* names[3] = { "squared", "Huber", "Cauchy" };
@@ -544,8 +534,9 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
     ASSERT_EQ(R32.type(), CV_64F);
     ASSERT_EQ(t1x3.type(), CV_64F);
     ASSERT_EQ(t1x3.size(), Size(1, 3));
-    EXPECT_LT(rotationErrorDeg(R32, Rref), 1e-3);
-    EXPECT_LT(relativeTranslationError(t1x3, tref), 1e-4);
+    const PoseError e = poseError(R32, t1x3, Rref, tref); // a 1x3 estimate against a 3x1 reference
+    EXPECT_LT(e.rotationDeg, 1e-3);
+    EXPECT_LT(e.relativeTranslation, 1e-4);
 }
 
 TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)

@@ -5,8 +5,8 @@
 #ifndef TRIPOSE_SUPPORT_OPENCV_GEOMETRY_HPP
 #define TRIPOSE_SUPPORT_OPENCV_GEOMETRY_HPP
 
-// RQDecomp3x3 is declared in calib3d up to OpenCV 4.x and in geometry (3d in early 5.x snapshots)
-// from OpenCV 5 on. The support library is built against the same OpenCVs as the
+// Rodrigues and RQDecomp3x3 are declared in calib3d up to OpenCV 4.x and in geometry (3d in early
+// 5.x snapshots) from OpenCV 5 on. The support library is built against the same OpenCVs as the
 // module; opencv_modules.hpp says which of these modules the one at hand has.
 #include "opencv2/opencv_modules.hpp"
 
