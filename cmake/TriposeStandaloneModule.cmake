@@ -25,7 +25,7 @@ function(tripose_add_module_targets)
   target_link_libraries(opencv_tripose
     PUBLIC opencv_core
     # Eigen is header-only: a build-time dependency that installed consumers need not find.
-    PRIVATE opencv_imgproc opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
+    PRIVATE opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
   target_compile_options(opencv_tripose PRIVATE
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
 
@@ -61,7 +61,7 @@ endfunction()
 function(tripose_link_ts_shim target)
   # Tests reach private headers by relative paths ("../src/..."), as they must inside OpenCV.
   target_include_directories(${target} PRIVATE "${TRIPOSE_TS_SHIM_DIR}")
-  target_link_libraries(${target} PRIVATE opencv_tripose tripose_support opencv_core opencv_imgproc opencv_calib3d
+  target_link_libraries(${target} PRIVATE opencv_tripose tripose_support opencv_core opencv_calib3d
     Eigen3::Eigen GTest::gtest)
   target_compile_definitions(${target} PRIVATE
     TRIPOSE_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data")
