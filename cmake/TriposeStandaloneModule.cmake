@@ -1,6 +1,8 @@
 # Builds modules/tripose outside an OpenCV tree, with the same source layout that
 # ocv_define_module() expects: src/ (globbed recursively, so src/generated/ is included),
-# test/ and perf/ (compiled against the thin ts shim in cmake/ts_shim).
+# test/ and perf/ (compiled against the thin ts shim in cmake/ts_shim). Also builds the support
+# library of modules/tripose/support (scene generator, VGG reader, pose error), which the tests,
+# perf tests, samples, benchmarks and evaluation link and which is not installed.
 
 set(TRIPOSE_TS_SHIM_DIR "${CMAKE_CURRENT_LIST_DIR}/ts_shim")
 
@@ -23,9 +25,11 @@ function(tripose_add_module_targets)
   target_link_libraries(opencv_tripose
     PUBLIC opencv_core
     # Eigen is header-only: a build-time dependency that installed consumers need not find.
-    PRIVATE opencv_imgproc opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
+    PRIVATE opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
   target_compile_options(opencv_tripose PRIVATE
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
+
+  tripose_add_support_library("${module_dir}/support")
 
   if(TRIPOSE_BUILD_TESTS)
     file(GLOB test_sources CONFIGURE_DEPENDS "${module_dir}/test/*.cpp")
@@ -43,10 +47,21 @@ function(tripose_add_module_targets)
   endif()
 endfunction()
 
+# tripose_support: built only when a target that links it is (EXCLUDE_FROM_ALL), and never installed.
+# It calls nothing of the module: the ground truth of a test must not go through the code under test.
+function(tripose_add_support_library support_dir)
+  file(GLOB support_sources CONFIGURE_DEPENDS "${support_dir}/src/*.cpp")
+  add_library(tripose_support STATIC EXCLUDE_FROM_ALL ${support_sources})
+  target_include_directories(tripose_support PUBLIC "${support_dir}/include")
+  target_link_libraries(tripose_support PUBLIC opencv_core PRIVATE opencv_calib3d)
+  target_compile_options(tripose_support PRIVATE
+    $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
+endfunction()
+
 function(tripose_link_ts_shim target)
   # Tests reach private headers by relative paths ("../src/..."), as they must inside OpenCV.
   target_include_directories(${target} PRIVATE "${TRIPOSE_TS_SHIM_DIR}")
-  target_link_libraries(${target} PRIVATE opencv_tripose opencv_core opencv_imgproc opencv_calib3d
+  target_link_libraries(${target} PRIVATE opencv_tripose tripose_support opencv_core opencv_calib3d
     Eigen3::Eigen GTest::gtest)
   target_compile_definitions(${target} PRIVATE
     TRIPOSE_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data")

@@ -15,7 +15,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/tripose.hpp>
 
-#include "pose_errors.hpp"
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/vgg_dataset.hpp"
 
 namespace {
 
@@ -75,10 +76,10 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    cv::tripose::VggTriplet triplet;
+    cv::tripose::support::VggTriplet triplet;
     try
     {
-        triplet = cv::tripose::loadVggTriplet(data, views[0], views[1], views[2]);
+        triplet = cv::tripose::support::loadVggTriplet(data, views[0], views[1], views[2]);
     }
     catch (const cv::Exception& e)
     {
@@ -100,14 +101,14 @@ int main(int argc, char** argv)
         return 2;
     }
 
-    const double translationError = tripose_samples::relativeTranslationError(t, triplet.t);
+    const cv::tripose::support::PoseError error = cv::tripose::support::poseError(R, t, triplet.R, triplet.t);
     const double directionError =
         std::acos(std::max(-1.0, std::min(1.0, t.dot(triplet.t) / (cv::norm(t) * cv::norm(triplet.t))))) * 180.0 / CV_PI;
     std::cout << cv::format("Solved in %.3f ms (%d candidate(s))\n", ms, n)
               << "Estimated R =\n" << R << "\nGround truth R =\n" << triplet.R << "\n"
               << "Estimated t = " << t.t() << "\nGround truth t = " << triplet.t.t() << "\n"
-              << cv::format("Rotation error: %.4f deg\n", tripose_samples::rotationErrorDegrees(R, triplet.R))
-              << cv::format("Translation error: %.2f %% of |t| (direction %.4f deg)\n", 100 * translationError,
+              << cv::format("Rotation error: %.4f deg\n", error.rotationDeg)
+              << cv::format("Translation error: %.2f %% of |t| (direction %.4f deg)\n", 100 * error.relativeTranslation,
                             directionError);
 
     if (!imagePath.empty())

@@ -2,9 +2,9 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// tripose_make_scene: writes a synthetic three-view scene (cv::tripose::generateSyntheticScene)
-// as a problem file for tripose_estimate, with its ground truth, so that scripts in any language
-// use the same scenes as the C++ tests and benchmarks.
+// tripose_make_scene: writes a synthetic three-view scene (generateSyntheticScene of the support
+// library) as a problem file for tripose_estimate, with its ground truth, so that scripts in any
+// language use the same scenes as the C++ tests and benchmarks.
 //
 //   tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]
 //                      [--noise px] [--outliers ratio] [--seed k]
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/tripose.hpp>
+#include "tripose_support/synthetic_scene.hpp"
 
 #include "arguments.hpp"
 #include "problem_io.hpp"
@@ -48,7 +48,7 @@ const char* kUsage =
 struct Options
 {
     std::string output;
-    cv::tripose::SyntheticSceneParams scene;
+    cv::tripose::support::SyntheticSceneParams scene;
 };
 
 bool hasExtension(const std::string& path, const std::string& extension)
@@ -75,9 +75,9 @@ Options parseArguments(int argc, char** argv)
         else if (arg == "--motion")
         {
             if (value == "large")
-                o.scene.motion = cv::tripose::MOTION_LARGE;
+                o.scene.motion = cv::tripose::support::MOTION_LARGE;
             else if (value == "small")
-                o.scene.motion = cv::tripose::MOTION_SMALL;
+                o.scene.motion = cv::tripose::support::MOTION_SMALL;
             else
                 throw argumentError(arg, "expected 'large' or 'small', got '" + value + "'");
         }
@@ -103,7 +103,7 @@ Options parseArguments(int argc, char** argv)
     return o;
 }
 
-void writeScene(cv::FileStorage& fs, const cv::tripose::SyntheticScene& s)
+void writeScene(cv::FileStorage& fs, const cv::tripose::support::SyntheticScene& s)
 {
     for (int v = 0; v < 3; ++v)
         fs << "K" + std::to_string(v + 1) << s.cameraMatrices[v];
@@ -131,7 +131,7 @@ int main(int argc, char** argv)
     }
     try
     {
-        const cv::tripose::SyntheticScene scene = cv::tripose::generateSyntheticScene(options.scene);
+        const cv::tripose::support::SyntheticScene scene = cv::tripose::support::generateSyntheticScene(options.scene);
         tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) { writeScene(fs, scene); });
     }
     catch (const cv::Exception& e)

@@ -15,7 +15,8 @@
 
 #include <opencv2/tripose.hpp>
 
-#include "pose_errors.hpp"
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/vgg_dataset.hpp"
 
 namespace {
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv)
         int views = 0;
         try
         {
-            views = cv::tripose::vggSequenceViewCount(folder);
+            views = cv::tripose::support::vggSequenceViewCount(folder);
         }
         catch (const cv::Exception& e)
         {
@@ -63,7 +64,7 @@ int main(int argc, char** argv)
         }
         for (int v = 0; v + 2 < views; ++v)
         {
-            const cv::tripose::VggTriplet s = cv::tripose::loadVggTriplet(folder, v, v + 1, v + 2);
+            const cv::tripose::support::VggTriplet s = cv::tripose::support::loadVggTriplet(folder, v, v + 1, v + 2);
             const int features = s.points1.rows + s.lines1.rows;
             std::string linear = "- | -", robust = "- | - | -";
             if (features >= 4)
@@ -71,14 +72,19 @@ int main(int argc, char** argv)
                 cv::Mat R, t;
                 if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                        s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) > 0)
-                    linear = cv::format("%.3f | %.2f", tripose_samples::rotationErrorDegrees(R, s.R), 100 * tripose_samples::relativeTranslationError(t, s.t));
+                {
+                    const cv::tripose::support::PoseError e = cv::tripose::support::poseError(R, t, s.R, s.t);
+                    linear = cv::format("%.3f | %.2f", e.rotationDeg, 100 * e.relativeTranslation);
+                }
                 cv::Mat pm, lm;
                 const int inliers = cv::tripose::estimatePoseLinePointRansac(
                     s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, cv::noArray(),
                     s.R12, s.t12, R, t, params, pm, lm);
                 if (inliers > 0)
-                    robust = cv::format("%.3f | %.2f | %d/%d", tripose_samples::rotationErrorDegrees(R, s.R),
-                                        100 * tripose_samples::relativeTranslationError(t, s.t), inliers, features);
+                {
+                    const cv::tripose::support::PoseError e = cv::tripose::support::poseError(R, t, s.R, s.t);
+                    robust = cv::format("%.3f | %.2f | %d/%d", e.rotationDeg, 100 * e.relativeTranslation, inliers, features);
+                }
             }
             std::printf("| %s | %d-%d-%d | %d | %d | %s | %s |\n", baseName(folder).c_str(), v, v + 1, v + 2,
                         s.points1.rows, s.lines1.rows, linear.c_str(), robust.c_str());

@@ -24,15 +24,15 @@
 #include <opencv2/tripose.hpp>
 
 #include "benchmark_common.hpp"
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/synthetic_scene.hpp"
 
 namespace {
 
 using tripose_benchmark::median;
-using tripose_benchmark::rotationErrorDeg;
-using tripose_benchmark::translationError;
 
 //! Triangulates the points from views 1-2 and solves PnP in view 3 (the baseline a user would write).
-bool triangulateThenPnP(const cv::tripose::SyntheticScene& s, int flags, cv::Mat& R, cv::Mat& t)
+bool triangulateThenPnP(const cv::tripose::support::SyntheticScene& s, int flags, cv::Mat& R, cv::Mat& t)
 {
     const cv::Mat& K1 = s.cameraMatrices[0];
     const cv::Mat P1 = K1 * cv::Mat::eye(3, 4, CV_64F);
@@ -57,14 +57,14 @@ int main(int argc, char** argv)
 {
     int scenes = 200, repeats = 20;
     double noise = 1.0;
-    int motion = cv::tripose::MOTION_LARGE;
+    int motion = cv::tripose::support::MOTION_LARGE;
     for (int i = 1; i + 1 < argc; i += 2)
     {
         const std::string arg = argv[i], value = argv[i + 1];
         if (arg == "--scenes") scenes = std::stoi(value);
         else if (arg == "--repeats") repeats = std::stoi(value);
         else if (arg == "--noise") noise = std::stod(value);
-        else if (arg == "--motion") motion = value == "small" ? cv::tripose::MOTION_SMALL : cv::tripose::MOTION_LARGE;
+        else if (arg == "--motion") motion = value == "small" ? cv::tripose::support::MOTION_SMALL : cv::tripose::support::MOTION_LARGE;
         else { std::fprintf(stderr, "unknown argument %s\n", arg.c_str()); return 1; }
     }
     if (scenes < 1 || repeats < 1)
@@ -74,13 +74,13 @@ int main(int argc, char** argv)
     }
     cv::setNumThreads(1);
 
-    typedef std::function<bool(const cv::tripose::SyntheticScene&, cv::Mat&, cv::Mat&)> Solver;
+    typedef std::function<bool(const cv::tripose::support::SyntheticScene&, cv::Mat&, cv::Mat&)> Solver;
     const std::vector<std::pair<std::string, Solver>> methods = {
-        { "linear", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "linear", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
               return cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                         s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) > 0;
           } },
-        { "lin+refine", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "lin+refine", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
               if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                      s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) == 0)
                   return false;
@@ -88,10 +88,10 @@ int main(int argc, char** argv)
                                                                     s.lines2, s.lines3, s.cameraMatrices,
                                                                     cv::noArray(), s.R12, s.t12, R, t));
           } },
-        { "tri+SQPnP", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "tri+SQPnP", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
               return triangulateThenPnP(s, cv::SOLVEPNP_SQPNP, R, t);
           } },
-        { "tri+EPnP", [](const cv::tripose::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "tri+EPnP", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
               return triangulateThenPnP(s, cv::SOLVEPNP_EPNP, R, t);
           } },
     };
@@ -99,7 +99,7 @@ int main(int argc, char** argv)
 
     const int configs[][2] = { { 4, 4 }, { 5, 5 }, { 10, 10 }, { 20, 20 }, { 45, 45 } };
     std::printf("%d scenes x %d repeats, noise %.2f px, %s motion, one thread\n", scenes, repeats, noise,
-                motion == cv::tripose::MOTION_LARGE ? "large" : "small");
+                motion == cv::tripose::support::MOTION_LARGE ? "large" : "small");
     std::printf("per method: median time (us) [ratio to linear] median rotation error (deg) / median relative "
                 "translation error; failures count as infinite error\n");
     std::printf("%-9s", "features");
@@ -111,13 +111,13 @@ int main(int argc, char** argv)
         std::vector<std::vector<double>> times(M), rot(M), trans(M);
         for (int k = 0; k < scenes; ++k)
         {
-            cv::tripose::SyntheticSceneParams params;
+            cv::tripose::support::SyntheticSceneParams params;
             params.numPoints = c[0];
             params.numLines = c[1];
             params.noiseSigma = noise;
             params.motion = motion;
             params.seed = 1000 + k;
-            const cv::tripose::SyntheticScene s = cv::tripose::generateSyntheticScene(params);
+            const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
             std::vector<std::vector<double>> perScene(M);
             std::vector<cv::Mat> Rs(M), ts(M);
             std::vector<bool> ok(M, false);
@@ -138,8 +138,11 @@ int main(int argc, char** argv)
             for (size_t m = 0; m < M; ++m)
             {
                 times[m].push_back(median(perScene[m]));
-                rot[m].push_back(ok[m] ? rotationErrorDeg(Rs[m], s.R) : HUGE_VAL);
-                trans[m].push_back(ok[m] ? translationError(ts[m], s.t) : HUGE_VAL);
+                cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+                if (ok[m])
+                    e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
+                rot[m].push_back(e.rotationDeg);
+                trans[m].push_back(e.relativeTranslation);
             }
         }
         const double base = median(times[0]);

@@ -26,6 +26,8 @@
 #include <opencv2/tripose.hpp>
 
 #include "benchmark_common.hpp"
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/synthetic_scene.hpp"
 
 namespace {
 
@@ -39,7 +41,7 @@ struct Options
 samples; the threshold is doubled because the triangulated points carry the error of two views,
 as tripose's own sampling threshold is), then Levenberg-Marquardt on the inliers.
 */
-bool triangulatePnPRansacRefine(const cv::tripose::SyntheticScene& s, double threshold, cv::Mat& R, cv::Mat& t)
+bool triangulatePnPRansacRefine(const cv::tripose::support::SyntheticScene& s, double threshold, cv::Mat& R, cv::Mat& t)
 {
     const cv::Mat P1 = s.cameraMatrices[0] * cv::Mat::eye(3, 4, CV_64F);
     cv::Mat Rt2;
@@ -92,9 +94,9 @@ int main(int argc, char** argv)
     }
     cv::setNumThreads(1);
 
-    typedef std::function<bool(const cv::tripose::SyntheticScene&, int, cv::Mat&, cv::Mat&)> Solver;
+    typedef std::function<bool(const cv::tripose::support::SyntheticScene&, int, cv::Mat&, cv::Mat&)> Solver;
     const std::vector<std::pair<std::string, Solver>> methods = {
-        { "tripose RANSAC+refine", [&o](const cv::tripose::SyntheticScene& s, int seed, cv::Mat& R, cv::Mat& t) {
+        { "tripose RANSAC+refine", [&o](const cv::tripose::support::SyntheticScene& s, int seed, cv::Mat& R, cv::Mat& t) {
               cv::tripose::RansacParams params;
               params.threshold = o.threshold;
               params.seed = seed;
@@ -102,7 +104,7 @@ int main(int argc, char** argv)
                                                               s.lines3, s.cameraMatrices, cv::noArray(), s.R12, s.t12,
                                                               R, t, params) > 0;
           } },
-        { "tri+PnPRansac+RefineLM", [&o](const cv::tripose::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
+        { "tri+PnPRansac+RefineLM", [&o](const cv::tripose::support::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
               return triangulatePnPRansacRefine(s, o.threshold, R, t);
           } },
     };
@@ -112,13 +114,13 @@ int main(int argc, char** argv)
     std::vector<int> good(M, 0);
     for (int k = 0; k < o.scenes; ++k)
     {
-        cv::tripose::SyntheticSceneParams params;
+        cv::tripose::support::SyntheticSceneParams params;
         params.numPoints = o.points;
         params.numLines = o.lines;
         params.noiseSigma = o.noise;
         params.outlierRatio = o.outliers;
         params.seed = 2000 + k;
-        const cv::tripose::SyntheticScene s = cv::tripose::generateSyntheticScene(params);
+        const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
         std::vector<std::vector<double>> perScene(M);
         std::vector<cv::Mat> Rs(M), ts(M);
         std::vector<bool> ok(M, false);
@@ -139,8 +141,10 @@ int main(int argc, char** argv)
         for (size_t m = 0; m < M; ++m)
         {
             times[m].push_back(tripose_benchmark::median(perScene[m]));
-            const double r = ok[m] ? tripose_benchmark::rotationErrorDeg(Rs[m], s.R) : HUGE_VAL;
-            const double tr = ok[m] ? tripose_benchmark::translationError(ts[m], s.t) : HUGE_VAL;
+            cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+            if (ok[m])
+                e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
+            const double r = e.rotationDeg, tr = e.relativeTranslation;
             rot[m].push_back(r);
             trans[m].push_back(tr);
             good[m] += r < 1.0 && tr < 0.05;

@@ -41,6 +41,10 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/synthetic_scene.hpp"
+#include "tripose_support/vgg_dataset.hpp"
+
 namespace {
 
 const char* kUsage =
@@ -59,7 +63,7 @@ struct Options
     std::string source;  // "synthetic" or "vgg"
     int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1;
     double noise = 0.0, outliers = 0.0, threshold = -1.0;
-    int motion = cv::tripose::MOTION_LARGE;
+    int motion = cv::tripose::support::MOTION_LARGE;
     std::string sequence;
     int views[3] = { 0, 1, 2 };
     std::vector<std::string> methods = kAllMethods;
@@ -113,7 +117,7 @@ Options parse(int argc, char** argv)
         {
             if (v != "large" && v != "small")
                 throw std::runtime_error("argument --motion: expected large or small, got " + v);
-            o.motion = v == "small" ? cv::tripose::MOTION_SMALL : cv::tripose::MOTION_LARGE;
+            o.motion = v == "small" ? cv::tripose::support::MOTION_SMALL : cv::tripose::support::MOTION_LARGE;
         }
         else if (arg == "--views")
         {
@@ -145,18 +149,7 @@ Options parse(int argc, char** argv)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Error measures
-
-double rotationErrorDeg(const cv::Mat& A, const cv::Mat& B)
-{
-    // |A - B|_F = 2 sqrt(2) sin(theta / 2): accurate for tiny angles, unlike acos of the trace.
-    return 2.0 * std::asin(std::min(1.0, cv::norm(A, B) / (2.0 * std::sqrt(2.0)))) * 180.0 / CV_PI;
-}
-
-double translationError(const cv::Mat& a, const cv::Mat& b)
-{
-    return cv::norm(a.reshape(1, 3), b.reshape(1, 3)) / cv::norm(b);
-}
+// Statistics
 
 double medianOf(std::vector<double> v)
 {
@@ -222,14 +215,14 @@ cv::Mat triangulateLines12(const Problem& p)
 
 Problem syntheticProblem(const Options& o, int trial)
 {
-    cv::tripose::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = o.points;
     params.numLines = o.lines;
     params.motion = o.motion;
     params.noiseSigma = o.noise;
     params.outlierRatio = o.outliers;
     params.seed = o.seed + trial;
-    const cv::tripose::SyntheticScene s = cv::tripose::generateSyntheticScene(params);
+    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
     Problem p;
     p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
     p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
@@ -258,7 +251,7 @@ cv::Mat selectRows(const cv::Mat& m, const std::vector<int>& rows)
     return out.empty() ? cv::Mat(0, m.cols, CV_64F) : out;
 }
 
-Problem vggProblem(const cv::tripose::VggTriplet& v, const Options& o, int trial)
+Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, int trial)
 {
     if (v.points1.rows < o.points || v.lines1.rows < o.lines)
         throw std::runtime_error(cv::format("the sequence has %d points and %d lines in the three views, %d and %d requested",
@@ -302,8 +295,9 @@ Result timed(const Problem& p, int repeats, const std::function<bool(cv::Mat&, c
     res.ok = res.ok && !R.empty() && cv::checkRange(R) && cv::checkRange(t);
     if (res.ok)
     {
-        res.rot = rotationErrorDeg(R, p.R);
-        res.trans = translationError(t, p.t);
+        const cv::tripose::support::PoseError e = cv::tripose::support::poseError(R, t, p.R, p.t);
+        res.rot = e.rotationDeg;
+        res.trans = e.relativeTranslation;
     }
     return res;
 }
@@ -446,9 +440,9 @@ int main(int argc, char** argv)
 
     try
     {
-        cv::tripose::VggTriplet vgg;
+        cv::tripose::support::VggTriplet vgg;
         if (o.source == "vgg")
-            vgg = cv::tripose::loadVggTriplet(o.sequence, o.views[0], o.views[1], o.views[2]);
+            vgg = cv::tripose::support::loadVggTriplet(o.sequence, o.views[0], o.views[1], o.views[2]);
         for (int trial = 0; trial < o.trials; ++trial)
         {
             const Problem p = o.source == "vgg" ? vggProblem(vgg, o, trial) : syntheticProblem(o, trial);
@@ -458,7 +452,7 @@ int main(int argc, char** argv)
                                ",\"threshold\":" + num(o.threshold);
             if (o.source == "synthetic")
                 line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"motion\":\"" +
-                        (o.motion == cv::tripose::MOTION_SMALL ? "small" : "large") + "\"";
+                        (o.motion == cv::tripose::support::MOTION_SMALL ? "small" : "large") + "\"";
             else
                 line += ",\"sequence\":\"" + o.sequence.substr(o.sequence.find_last_of('/') + 1) + "\",\"views\":[" +
                         std::to_string(o.views[0]) + "," + std::to_string(o.views[1]) + "," +

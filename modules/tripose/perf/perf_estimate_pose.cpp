@@ -15,12 +15,12 @@ PERF_TEST_P(Tripose_EstimatePoseLinear, estimate,
             testing::Values(FeatureCounts(2, 2), FeatureCounts(4, 4), FeatureCounts(5, 5), FeatureCounts(10, 10),
                             FeatureCounts(45, 45)))
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = get<0>(GetParam());
     params.numLines = get<1>(GetParam());
     params.noiseSigma = 1.0;
     params.seed = 3;
-    const tripose::SyntheticScene s = tripose::generateSyntheticScene(params);
+    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
     Mat R, t;
     declare.iterations(2000);
     TEST_CYCLE()

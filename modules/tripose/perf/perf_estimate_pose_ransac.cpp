@@ -16,13 +16,13 @@ typedef perf::TestBaseWithParam<RansacCase> Tripose_EstimatePoseRansac;
 PERF_TEST_P(Tripose_EstimatePoseRansac, estimate,
             testing::Values(RansacCase(100, 40, 0.5), RansacCase(1000, 400, 0.0), RansacCase(1000, 400, 0.5)))
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = get<0>(GetParam());
     params.numLines = get<1>(GetParam());
     params.outlierRatio = get<2>(GetParam());
     params.noiseSigma = 1.0;
     params.seed = 3;
-    const tripose::SyntheticScene s = tripose::generateSyntheticScene(params);
+    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
     tripose::RansacParams ransac; // default: threshold 2 px, confidence 0.999, refinement on, seed 0
     Mat R, t, pointMask, lineMask;
     declare.iterations(100);

@@ -9,4 +9,7 @@
 #include "opencv2/ts/ts_perf.hpp"
 #include "opencv2/tripose.hpp"
 
+// The support library's scene generator (not part of the module).
+#include "tripose_support/synthetic_scene.hpp"
+
 #endif // OPENCV_TRIPOSE_PERF_PRECOMP_HPP

@@ -20,18 +20,18 @@ typedef perf::TestBaseWithParam<FeatureCounts> Tripose_RefinePoseEngine;
 
 const FeatureCounts kSizes[] = { FeatureCounts(10, 10), FeatureCounts(100, 40), FeatureCounts(700, 280) };
 
-tripose::SyntheticScene makeScene(const FeatureCounts& counts)
+tripose::support::SyntheticScene makeScene(const FeatureCounts& counts)
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = std::get<0>(counts);
     params.numLines = std::get<1>(counts);
     params.noiseSigma = 1.0;
     params.seed = 5;
-    return tripose::generateSyntheticScene(params);
+    return tripose::support::generateSyntheticScene(params);
 }
 
 //! A start like the robust estimator's: the truth off by 0.5 degrees and 2 % of |t|.
-void startingPose(const tripose::SyntheticScene& s, Mat& R, Mat& t)
+void startingPose(const tripose::support::SyntheticScene& s, Mat& R, Mat& t)
 {
     Mat dR;
     Rodrigues(Vec3d(0.5, -0.5, 0.5) * (0.5 * CV_PI / 180.0 / std::sqrt(0.75)), dR);
@@ -42,7 +42,7 @@ void startingPose(const tripose::SyntheticScene& s, Mat& R, Mat& t)
 //! The public function: input validation, undistortion and the refinement.
 PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
 {
-    const tripose::SyntheticScene s = makeScene(GetParam());
+    const tripose::support::SyntheticScene s = makeScene(GetParam());
     Mat R0, t0;
     startingPose(s, R0, t0);
     Mat R, t;
@@ -60,7 +60,7 @@ PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
 //! The engine alone, as the robust estimator calls it on already parsed data.
 PERF_TEST_P(Tripose_RefinePoseEngine, refinePoseAndStructure, testing::ValuesIn(kSizes))
 {
-    const tripose::SyntheticScene s = makeScene(GetParam());
+    const tripose::support::SyntheticScene s = makeScene(GetParam());
     Mat R0, t0;
     startingPose(s, R0, t0);
     const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(

@@ -16,7 +16,7 @@ struct Results
     double rms = 0;
 };
 
-Results runAll(const tripose::SyntheticScene& s)
+Results runAll(const tripose::support::SyntheticScene& s)
 {
     Results r;
     tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
@@ -42,17 +42,17 @@ bool identical(const Mat& a, const Mat& b)
 // state, no dependence on scheduling), and the robust estimator is reproducible for a fixed seed.
 TEST(Tripose_Concurrency, threads_on_shared_inputs_give_bit_identical_results)
 {
-    std::vector<tripose::SyntheticScene> scenes;
+    std::vector<tripose::support::SyntheticScene> scenes;
     std::vector<Results> reference;
     for (int seed = 0; seed < 4; ++seed)
     {
-        tripose::SyntheticSceneParams p;
+        tripose::support::SyntheticSceneParams p;
         p.numPoints = 30;
         p.numLines = 15;
         p.noiseSigma = 1.0;
         p.outlierRatio = 0.3;
         p.seed = seed;
-        scenes.push_back(tripose::generateSyntheticScene(p));
+        scenes.push_back(tripose::support::generateSyntheticScene(p));
         reference.push_back(runAll(scenes.back()));
         ASSERT_FALSE(reference.back().R.empty());
     }
@@ -87,7 +87,7 @@ struct RobustRun
     int inliers = 0;
 };
 
-RobustRun runRobust(const tripose::SyntheticScene& s, int seed)
+RobustRun runRobust(const tripose::support::SyntheticScene& s, int seed)
 {
     tripose::RansacParams params;
     params.seed = seed;
@@ -104,13 +104,13 @@ RobustRun runRobust(const tripose::SyntheticScene& s, int seed)
 // sampler drawing from cv::theRNG() would consume); and the seed does reach the sampler.
 TEST(Tripose_Concurrency, robust_estimator_is_reproducible_for_a_fixed_seed)
 {
-    tripose::SyntheticSceneParams p;
+    tripose::support::SyntheticSceneParams p;
     p.numPoints = 40;
     p.numLines = 20;
     p.noiseSigma = 1.0;
     p.outlierRatio = 0.3;
     p.seed = 7;
-    const tripose::SyntheticScene scene = tripose::generateSyntheticScene(p);
+    const tripose::support::SyntheticScene scene = tripose::support::generateSyntheticScene(p);
 
     const RobustRun first = runRobust(scene, 3);
     ASSERT_GT(first.inliers, 0);

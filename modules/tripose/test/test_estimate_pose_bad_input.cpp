@@ -33,7 +33,7 @@ struct Call
     tripose::RefineParams refine;
     Mat R0, t0;                        // initial pose of the refinement
 
-    explicit Call(const tripose::SyntheticScene& s)
+    explicit Call(const tripose::support::SyntheticScene& s)
         : p1(s.points1.clone()), p2(s.points2.clone()), p3(s.points3.clone()),
           l1(s.lines1.clone()), l2(s.lines2.clone()), l3(s.lines3.clone()),
           K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()),
@@ -118,7 +118,7 @@ const double kInf = std::numeric_limits<double>::infinity();
 class Tripose_BadInput : public testing::Test
 {
 protected:
-    Tripose_BadInput() : call(makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 1)) {}
+    Tripose_BadInput() : call(makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 1)) {}
     void keepFeatures(int points, int lines)
     {
         call.p1 = call.p1.rowRange(0, points).clone(); call.p2 = call.p2.rowRange(0, points).clone();

@@ -21,31 +21,33 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
     const int motion = testing::get<1>(GetParam());
     const int scenes = 1000;
     // Exact data: the method is exact, so only rounding separates the estimate from the truth.
-    const double rotationTolerance = 1e-6, translationTolerance = 1e-6;
+    const double rotationToleranceDeg = degrees(1e-6), translationTolerance = 1e-6;
     int found = 0, selected = 0;
     double worstSelectedRotation = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
-        const tripose::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
+        const tripose::support::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         const int n = solveScene(s, Rs, ts, R, t);
         ASSERT_EQ(n, (int)Rs.size());
         bool hit = false;
         for (int i = 0; i < n && !hit; ++i)
-            hit = rotationError(Rs[i], s.R) < rotationTolerance &&
-                  relativeTranslationError(ts[i], s.t) < translationTolerance;
+        {
+            const PoseError e = poseError(Rs[i], ts[i], s.R, s.t);
+            hit = e.rotationDeg < rotationToleranceDeg && e.relativeTranslation < translationTolerance;
+        }
         found += hit;
         if (n > 0)
         {
-            const double e = rotationError(R, s.R);
-            worstSelectedRotation = std::max(worstSelectedRotation, e);
-            selected += e < rotationTolerance && relativeTranslationError(t, s.t) < translationTolerance;
+            const PoseError e = poseError(R, t, s.R, s.t);
+            worstSelectedRotation = std::max(worstSelectedRotation, e.rotationDeg);
+            selected += e.rotationDeg < rotationToleranceDeg && e.relativeTranslation < translationTolerance;
         }
     }
-    std::cout << mixName(mix) << (motion == tripose::MOTION_LARGE ? " large" : " small")
+    std::cout << mixName(mix) << (motion == tripose::support::MOTION_LARGE ? " large" : " small")
               << ": true pose among candidates " << found << "/" << scenes << ", selected " << selected
-              << "/" << scenes << ", worst selected rotation error " << worstSelectedRotation << " rad" << std::endl;
+              << "/" << scenes << ", worst selected rotation error " << worstSelectedRotation << " deg" << std::endl;
     EXPECT_GE(found, scenes * 999 / 1000);
     EXPECT_GE(selected, scenes * 99 / 100);
 }
@@ -58,7 +60,7 @@ const FeatureMix kExactMixes[] = {
 
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
                         testing::Combine(testing::ValuesIn(kExactMixes),
-                                         testing::Values((int)tripose::MOTION_LARGE, (int)tripose::MOTION_SMALL)));
+                                         testing::Values((int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL)));
 
 // ---------------------------------------------------------------------------------------------
 // Input forms: all accepted layouts give the same pose.
@@ -66,14 +68,14 @@ INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
 
 TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrinsics)
 {
-    const tripose::SyntheticScene s = makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 7);
+    const tripose::support::SyntheticScene s = makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 7);
     Mat R, t;
     ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                              s.cameraMatrices[0], noArray(), s.R12, s.t12, R, t), 0);
     EXPECT_EQ(R.type(), CV_64F);
     EXPECT_EQ(R.size(), Size(3, 3));
     EXPECT_EQ(t.size(), Size(1, 3));
-    EXPECT_LT(rotationError(R, s.R), 1e-9);
+    EXPECT_LT(poseError(R, t, s.R, s.t).rotationDeg, degrees(1e-9));
 
     // CV_32F, Nx1 2-channel points, Mx1 4-channel segments, Rodrigues R12.
     Mat p[3], l[3];
@@ -92,13 +94,14 @@ TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrin
     ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices, noArray(),
                                              rvec, s.t12, R32, t32), 0);
     // Float inputs carry ~1e-7 relative rounding: a few micro-radians at this geometry.
-    EXPECT_LT(rotationError(R32, s.R), 1e-4);
-    EXPECT_LT(relativeTranslationError(t32, s.t), 1e-3);
+    const PoseError e = poseError(R32, t32, s.R, s.t);
+    EXPECT_LT(e.rotationDeg, degrees(1e-4));
+    EXPECT_LT(e.relativeTranslation, 1e-3);
 }
 
 TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
 {
-    const tripose::SyntheticScene s = makeScene({ 2, 4 }, tripose::MOTION_SMALL, 0.0, 3);
+    const tripose::support::SyntheticScene s = makeScene({ 2, 4 }, tripose::support::MOTION_SMALL, 0.0, 3);
     Mat homogeneous[3];
     const Mat* lines[3] = { &s.lines1, &s.lines2, &s.lines3 };
     for (int v = 0; v < 3; ++v)
@@ -116,13 +119,14 @@ TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
     Mat R, t;
     ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, homogeneous[0], homogeneous[1],
                                              homogeneous[2], s.cameraMatrices, noArray(), s.R12, s.t12, R, t), 0);
-    EXPECT_LT(rotationError(R, s.R), 1e-6);
-    EXPECT_LT(relativeTranslationError(t, s.t), 1e-6);
+    const PoseError e = poseError(R, t, s.R, s.t);
+    EXPECT_LT(e.rotationDeg, degrees(1e-6));
+    EXPECT_LT(e.relativeTranslation, 1e-6);
 }
 
 TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
 {
-    const tripose::SyntheticScene s = makeScene({ 10, 10 }, tripose::MOTION_LARGE, 0.0, 5);
+    const tripose::support::SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 0.0, 5);
     const Mat dist = (Mat_<double>(1, 5) << -0.3, 0.1, 0.001, -0.0005, 0.0);
     const Mat K = s.cameraMatrices[0];
     // Distort every observation: pixel -> normalised -> projectPoints with the model.
@@ -144,17 +148,18 @@ TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
     Mat R, t;
     ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, dist, s.R12, s.t12, R, t), 0);
     // Straight 3D lines are curved in distorted images; their end points undistort exactly.
-    EXPECT_LT(rotationError(R, s.R), 1e-6);
-    EXPECT_LT(relativeTranslationError(t, s.t), 1e-6);
+    const PoseError e = poseError(R, t, s.R, s.t);
+    EXPECT_LT(e.rotationDeg, degrees(1e-6));
+    EXPECT_LT(e.relativeTranslation, 1e-6);
 
     Mat Rbad, tbad; // Ignoring the distortion must cost accuracy, or the test above proves nothing.
     tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, noArray(), s.R12, s.t12, Rbad, tbad);
-    EXPECT_TRUE(Rbad.empty() || rotationError(Rbad, s.R) > 1e-4);
+    EXPECT_TRUE(Rbad.empty() || poseError(Rbad, tbad, s.R, s.t).rotationDeg > degrees(1e-4));
 }
 
 TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_error)
 {
-    const tripose::SyntheticScene s = makeScene({ 2, 2 }, tripose::MOTION_LARGE, 1.0, 21);
+    const tripose::support::SyntheticScene s = makeScene({ 2, 2 }, tripose::support::MOTION_LARGE, 1.0, 21);
     std::vector<Mat> Rs, ts;
     Mat R, t, errors;
     const int n = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,

@@ -7,18 +7,18 @@
 namespace opencv_test {
 namespace {
 
-tripose::SyntheticScene outlierScene(double outlierRatio, int seed)
+tripose::support::SyntheticScene outlierScene(double outlierRatio, int seed)
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = 100;
     params.numLines = 40;
     params.noiseSigma = 1.0;
     params.outlierRatio = outlierRatio;
     params.seed = seed;
-    return tripose::generateSyntheticScene(params);
+    return tripose::support::generateSyntheticScene(params);
 }
 
-int runRansac(const tripose::SyntheticScene& s, const tripose::RansacParams& params, Mat& R, Mat& t,
+int runRansac(const tripose::support::SyntheticScene& s, const tripose::RansacParams& params, Mat& R, Mat& t,
               Mat& pointMask, Mat& lineMask)
 {
     return tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
@@ -38,16 +38,16 @@ TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
     std::vector<double> rotationErrors;
     for (int seed = 0; seed < trials; ++seed)
     {
-        const tripose::SyntheticScene s = outlierScene(outlierRatio, seed);
+        const tripose::support::SyntheticScene s = outlierScene(outlierRatio, seed);
         tripose::RansacParams params;
         params.seed = seed;
         Mat R, t, pointMask, lineMask;
         const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
         if (inliers == 0)
             continue;
-        const double rotDeg = rotationError(R, s.R) * 180 / CV_PI;
-        rotationErrors.push_back(rotDeg);
-        accurate += rotDeg < 1.0 && relativeTranslationError(t, s.t) < 0.05;
+        const PoseError e = poseError(R, t, s.R, s.t);
+        rotationErrors.push_back(e.rotationDeg);
+        accurate += e.rotationDeg < 1.0 && e.relativeTranslation < 0.05;
         ASSERT_EQ(pointMask.total(), (size_t)s.points1.rows);
         ASSERT_EQ(lineMask.total(), (size_t)s.lines1.rows);
         EXPECT_EQ(inliers, cv::countNonZero(pointMask) + cv::countNonZero(lineMask));
@@ -74,20 +74,21 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
     for (const FeatureMix& mix : mixes)
         for (int seed = 0; seed < 20; ++seed)
         {
-            const tripose::SyntheticScene s = makeScene(mix, tripose::MOTION_LARGE, 0.0, seed);
+            const tripose::support::SyntheticScene s = makeScene(mix, tripose::support::MOTION_LARGE, 0.0, seed);
             tripose::RansacParams params;
             params.seed = seed;
             Mat R, t, pointMask, lineMask;
             const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
             ASSERT_EQ(inliers, mix.points + mix.lines) << mixName(mix) << " seed " << seed;
-            EXPECT_LT(rotationError(R, s.R), 1e-6) << mixName(mix) << " seed " << seed;
-            EXPECT_LT(relativeTranslationError(t, s.t), 1e-6) << mixName(mix) << " seed " << seed;
+            const PoseError e = poseError(R, t, s.R, s.t);
+            EXPECT_LT(e.rotationDeg, degrees(1e-6)) << mixName(mix) << " seed " << seed;
+            EXPECT_LT(e.relativeTranslation, 1e-6) << mixName(mix) << " seed " << seed;
         }
 }
 
 TEST(Tripose_RansacDeterminism, same_seed_same_result)
 {
-    const tripose::SyntheticScene s = outlierScene(0.4, 77);
+    const tripose::support::SyntheticScene s = outlierScene(0.4, 77);
     tripose::RansacParams params;
     params.seed = 5;
     Mat R1, t1, p1, l1, R2, t2, p2, l2;
@@ -102,7 +103,7 @@ TEST(Tripose_RansacDeterminism, same_seed_same_result)
 
 TEST(Tripose_RansacParams, invalid_parameters_are_named)
 {
-    const tripose::SyntheticScene s = outlierScene(0.0, 1);
+    const tripose::support::SyntheticScene s = outlierScene(0.0, 1);
     Mat R, t, pm, lm;
     auto expectNamed = [&](const tripose::RansacParams& p, const std::string& name) {
         try
@@ -137,12 +138,12 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
 // by the sanitizer build, scripts/test_sanitizers.sh; a release build stopped sampling at once).
 TEST(Tripose_RansacRegression, iteration_bound_with_a_tiny_inlier_ratio)
 {
-    tripose::SyntheticSceneParams sp;
+    tripose::support::SyntheticSceneParams sp;
     sp.numPoints = 100000;
     sp.numLines = 0;
     sp.outlierRatio = 0.99995;   // 5 true matches
     sp.seed = 3;
-    const tripose::SyntheticScene s = tripose::generateSyntheticScene(sp);
+    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(sp);
     tripose::RansacParams params;
     params.threshold = 1.0;      // a few wrong matches fall within it by chance
     params.maxIterations = 20;

@@ -28,17 +28,14 @@ inline Vec3d toVec3(const Mat& m)
     return Vec3d(m.ptr<double>());
 }
 
-//! Rotation angle (rad) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
-inline double rotationError(const Mat& A, const Mat& B)
-{
-    const double d = cv::norm(A, B, NORM_L2) / (2.0 * std::sqrt(2.0));
-    return 2.0 * std::asin(std::min(1.0, d));
-}
+using tripose::support::PoseError;
+using tripose::support::poseError;
 
-//! |a - b| / |b|.
-inline double relativeTranslationError(const Mat& a, const Mat& b)
+//! An angle in radians in degrees, the unit of PoseError: noise-free bounds are stated in radians,
+//! as in the Python tests.
+inline double degrees(double radians)
 {
-    return cv::norm(a.reshape(1, 3), b.reshape(1, 3), NORM_L2) / cv::norm(b, NORM_L2);
+    return radians * 180.0 / CV_PI;
 }
 
 //! A feature mix: numbers of point and line triplets.
@@ -53,19 +50,19 @@ inline std::string mixName(const FeatureMix& m)
     return cv::format("%dP%dL", m.points, m.lines);
 }
 
-inline tripose::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
+inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
 {
-    tripose::SyntheticSceneParams params;
+    tripose::support::SyntheticSceneParams params;
     params.numPoints = mix.points;
     params.numLines = mix.lines;
     params.motion = motion;
     params.noiseSigma = noise;
     params.seed = seed;
-    return tripose::generateSyntheticScene(params);
+    return tripose::support::generateSyntheticScene(params);
 }
 
 //! Solves a scene with the linear method; all candidates best first.
-inline int solveScene(const tripose::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
+inline int solveScene(const tripose::support::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
 {
     return tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                           s.cameraMatrices, noArray(), s.R12, s.t12, R, t,

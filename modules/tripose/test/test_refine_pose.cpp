@@ -15,20 +15,19 @@ namespace opencv_test {
 namespace {
 
 using tripose::RefineParams;
-using tripose::SyntheticScene;
-using tripose::SyntheticSceneParams;
+using tripose::support::SyntheticScene;
+using tripose::support::SyntheticSceneParams;
 
-//! Rotation angle (deg) of A B^T, accurate near zero: |A - B|_F = 2 sqrt(2) sin(angle / 2).
-double rotationErrorDeg(const Mat& A, const Mat& B)
-{
-    const double d = cv::norm(A, B, NORM_L2) / (2.0 * std::sqrt(2.0));
-    return 2.0 * std::asin(std::min(1.0, d)) * 180.0 / CV_PI;
-}
+using tripose::support::PoseError;
+using tripose::support::poseError;
 
-//! |a - b| / |b|.
-double relativeTranslationError(const Mat& a, const Mat& b)
+//! Appends the errors of (R, t) against (Rref, tref): rotation (deg) and relative translation.
+void appendErrors(const Mat& R, const Mat& t, const Mat& Rref, const Mat& tref, std::vector<double>& rotation,
+                  std::vector<double>& translation)
 {
-    return cv::norm(a.reshape(1, 3), b.reshape(1, 3), NORM_L2) / cv::norm(b, NORM_L2);
+    const PoseError e = poseError(R, t, Rref, tref);
+    rotation.push_back(e.rotationDeg);
+    translation.push_back(e.relativeTranslation);
 }
 
 double median(std::vector<double> v)
@@ -47,7 +46,7 @@ SyntheticScene makeScene(int points, int lines, int motion, double sigma, int se
     p.noiseSigma = sigma;
     p.outlierRatio = outlierRatio;
     p.seed = seed;
-    return tripose::generateSyntheticScene(p);
+    return tripose::support::generateSyntheticScene(p);
 }
 
 //! The true pose turned by @p degrees about a random axis, its translation moved by @p fraction of its norm.
@@ -85,12 +84,12 @@ struct Setting
 
 std::string settingName(const Setting& s)
 {
-    return format("%dP+%dL %s", s.points, s.lines, s.motion == tripose::MOTION_LARGE ? "large" : "small");
+    return format("%dP+%dL %s", s.points, s.lines, s.motion == tripose::support::MOTION_LARGE ? "large" : "small");
 }
 
 const Setting kPaperSettings[] = {
-    { 3, 3, tripose::MOTION_LARGE }, { 4, 4, tripose::MOTION_LARGE }, { 10, 10, tripose::MOTION_LARGE },
-    { 3, 3, tripose::MOTION_SMALL }, { 4, 4, tripose::MOTION_SMALL }, { 10, 10, tripose::MOTION_SMALL },
+    { 3, 3, tripose::support::MOTION_LARGE }, { 4, 4, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_LARGE },
+    { 3, 3, tripose::support::MOTION_SMALL }, { 4, 4, tripose::support::MOTION_SMALL }, { 10, 10, tripose::support::MOTION_SMALL },
 };
 
 TEST(Tripose_LineParameterization, chart_jacobian_matches_finite_differences)
@@ -161,7 +160,7 @@ TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
 
 TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_LARGE, 1.0, 8);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 1.0, 8);
     const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose pose;
@@ -181,8 +180,8 @@ TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
 {
     const Setting settings[] = {
-        { 3, 3, tripose::MOTION_LARGE }, { 10, 10, tripose::MOTION_SMALL }, { 6, 0, tripose::MOTION_LARGE },
-        { 0, 6, tripose::MOTION_SMALL }, { 2, 1, tripose::MOTION_LARGE },
+        { 3, 3, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_SMALL }, { 6, 0, tripose::support::MOTION_LARGE },
+        { 0, 6, tripose::support::MOTION_SMALL }, { 2, 1, tripose::support::MOTION_LARGE },
     };
     RNG rng(7);
     for (const Setting& setting : settings)
@@ -194,8 +193,9 @@ TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
             Mat R, t, X, L;
             perturbPose(s, 2.0, 0.05, rng, R, t);
             const double rms = refineScene(s, R, t, RefineParams(), X, L);
-            worstRotation = std::max(worstRotation, rotationErrorDeg(R, s.R));
-            worstTranslation = std::max(worstTranslation, relativeTranslationError(t, s.t));
+            const PoseError e = poseError(R, t, s.R, s.t);
+            worstRotation = std::max(worstRotation, e.rotationDeg);
+            worstTranslation = std::max(worstTranslation, e.relativeTranslation);
             worstRms = std::max(worstRms, rms);
             ASSERT_EQ(X.size(), Size(3, setting.points));
             ASSERT_EQ(L.size(), Size(6, setting.lines));
@@ -221,7 +221,7 @@ TEST(Tripose_RefinePose, noise_free_lines3d_are_the_view1_end_points)
 {
     // The ends of a generated segment are observed exactly in view 1, so the returned points of each
     // line (closest to the view-1 end rays) are the true 3D end points.
-    const SyntheticScene s = makeScene(3, 5, tripose::MOTION_LARGE, 0.0, 3);
+    const SyntheticScene s = makeScene(3, 5, tripose::support::MOTION_LARGE, 0.0, 3);
     Mat R = s.R.clone(), t = s.t.clone(), L;
     refineScene(s, R, t, RefineParams(), noArray(), L);
     EXPECT_LT(cv::norm(L, s.lines3d, NORM_INF), 1e-6);
@@ -244,17 +244,13 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
             Mat R, t;
             // Several times the ML errors: in small motion (|t| of a few metres) the ML translation error
             // alone is ~7 % of |t|.
-            perturbPose(s, 2.0, setting.motion == tripose::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
-            startRot.push_back(rotationErrorDeg(R, s.R));
-            startTrans.push_back(relativeTranslationError(t, s.t));
+            perturbPose(s, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
+            appendErrors(R, t, s.R, s.t, startRot, startTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
-            mlRot.push_back(rotationErrorDeg(Rml, s.R));
-            mlTrans.push_back(relativeTranslationError(tml, s.t));
-            refinedRot.push_back(rotationErrorDeg(R, s.R));
-            refinedTrans.push_back(relativeTranslationError(t, s.t));
-            gapRot.push_back(rotationErrorDeg(R, Rml));
-            gapTrans.push_back(relativeTranslationError(t, tml));
+            appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
+            appendErrors(R, t, s.R, s.t, refinedRot, refinedTrans);
+            appendErrors(R, t, Rml, tml, gapRot, gapTrans);
             otherMinimum += gapRot.back() > 1e-3;
         }
         SCOPED_TRACE(settingName(setting));
@@ -291,8 +287,7 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
             const SyntheticScene s = makeScene(setting.points, setting.lines, setting.motion, 1.0, 1000 + seed);
             Mat Rml = s.R.clone(), tml = s.t.clone();
             refineScene(s, Rml, tml);
-            mlRot.push_back(rotationErrorDeg(Rml, s.R));
-            mlTrans.push_back(relativeTranslationError(tml, s.t));
+            appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
 
             Mat R, t;
             if (tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
@@ -305,13 +300,11 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
                 continue;
             }
             ++solved;
-            linRot.push_back(rotationErrorDeg(R, s.R));
-            linTrans.push_back(relativeTranslationError(t, s.t));
+            appendErrors(R, t, s.R, s.t, linRot, linTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
-            refinedRot.push_back(rotationErrorDeg(R, s.R));
-            refinedTrans.push_back(relativeTranslationError(t, s.t));
-            sameMinimum += rotationErrorDeg(R, Rml) < 1e-3;
+            appendErrors(R, t, s.R, s.t, refinedRot, refinedTrans);
+            sameMinimum += poseError(R, t, Rml, tml).rotationDeg < 1e-3;
         }
         SCOPED_TRACE(settingName(setting));
         const double rotRatio = median(refinedRot) / median(mlRot);
@@ -347,7 +340,7 @@ void triangulateThenPnpRefine(const SyntheticScene& s, Mat& R, Mat& t)
 TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
 {
     const int scenes = 200;
-    for (int motion : { (int)tripose::MOTION_LARGE, (int)tripose::MOTION_SMALL })
+    for (int motion : { (int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL })
     {
         for (int points : { 6, 20 })
         {
@@ -360,15 +353,13 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
                 perturbPose(s, 2.0, 0.05, rng, R0, t0);
                 Mat R = R0.clone(), t = t0.clone();
                 refineScene(s, R, t);
-                oursRot.push_back(rotationErrorDeg(R, s.R));
-                oursTrans.push_back(relativeTranslationError(t, s.t));
+                appendErrors(R, t, s.R, s.t, oursRot, oursTrans);
                 R = R0.clone();
                 t = t0.clone();
                 triangulateThenPnpRefine(s, R, t);
-                pnpRot.push_back(rotationErrorDeg(R, s.R));
-                pnpTrans.push_back(relativeTranslationError(t, s.t));
+                appendErrors(R, t, s.R, s.t, pnpRot, pnpTrans);
             }
-            const std::string name = format("%dP %s", points, motion == tripose::MOTION_LARGE ? "large" : "small");
+            const std::string name = format("%dP %s", points, motion == tripose::support::MOTION_LARGE ? "large" : "small");
             SCOPED_TRACE(name);
             std::cout << format("[ %-10s ] three-view ML %.4f deg %.5f | triangulate + solvePnPRefineLM %.4f deg %.5f\n",
                                 name.c_str(), median(oursRot), median(oursTrans), median(pnpRot), median(pnpTrans));
@@ -386,7 +377,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
     for (int seed = 0; seed < scenes; ++seed)
     {
         // 2 of 10 points and 2 of 10 lines are wrong matches in view 3 (at least 20 px off).
-        const SyntheticScene s = makeScene(10, 10, tripose::MOTION_LARGE, 1.0, seed, 0.2);
+        const SyntheticScene s = makeScene(10, 10, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
         Mat R0, t0;
         perturbPose(s, 1.0, 0.02, rng, R0, t0);
         for (int loss = tripose::LOSS_SQUARED; loss <= tripose::LOSS_CAUCHY; ++loss)
@@ -398,8 +389,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
             Mat R = R0.clone(), t = t0.clone();
             const double rms = refineScene(s, R, t, params);
             ASSERT_TRUE(std::isfinite(rms));
-            errors[loss][0].push_back(rotationErrorDeg(R, s.R));
-            errors[loss][1].push_back(relativeTranslationError(t, s.t));
+            appendErrors(R, t, s.R, s.t, errors[loss][0], errors[loss][1]);
         }
     }
     const char* names[3] = { "squared", "Huber", "Cauchy" };
@@ -418,7 +408,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 {
     // The robust estimator refines over its inliers by index; the result must be that of a problem
     // holding only those features.
-    const SyntheticScene s = makeScene(12, 8, tripose::MOTION_SMALL, 1.0, 21);
+    const SyntheticScene s = makeScene(12, 8, tripose::support::MOTION_SMALL, 1.0, 21);
     const std::vector<int> pointIdx = { 0, 2, 3, 5, 8, 11 }, lineIdx = { 1, 4, 6 };
     Mat p1, p2, p3, l1, l2, l3;
     for (int i : pointIdx)
@@ -465,7 +455,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 {
     // At the returned estimate, recompute the residuals from points3d / lines3d independently.
-    const SyntheticScene s = makeScene(5, 4, tripose::MOTION_LARGE, 1.0, 9);
+    const SyntheticScene s = makeScene(5, 4, tripose::support::MOTION_LARGE, 1.0, 9);
     Mat R = s.R.clone(), t = s.t.clone(), X, L;
     const double rms = refineScene(s, R, t, RefineParams(), X, L);
     const Mat Rs[3] = { Mat::eye(3, 3, CV_64F), s.R12, R }, ts[3] = { Mat::zeros(3, 1, CV_64F), s.t12, t };
@@ -504,7 +494,7 @@ TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 
 TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 {
-    const SyntheticScene s = makeScene(4, 3, tripose::MOTION_LARGE, 0.5, 4);
+    const SyntheticScene s = makeScene(4, 3, tripose::support::MOTION_LARGE, 0.5, 4);
     RNG rng(1);
     Mat R0, t0;
     perturbPose(s, 1.0, 0.02, rng, R0, t0);
@@ -544,13 +534,14 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
     ASSERT_EQ(R32.type(), CV_64F);
     ASSERT_EQ(t1x3.type(), CV_64F);
     ASSERT_EQ(t1x3.size(), Size(1, 3));
-    EXPECT_LT(rotationErrorDeg(R32, Rref), 1e-3);
-    EXPECT_LT(relativeTranslationError(t1x3, tref), 1e-4);
+    const PoseError e = poseError(R32, t1x3, Rref, tref); // a 1x3 estimate against a 3x1 reference
+    EXPECT_LT(e.rotationDeg, 1e-3);
+    EXPECT_LT(e.relativeTranslation, 1e-4);
 }
 
 TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_SMALL, 1.0, 2);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_SMALL, 1.0, 2);
     // Every view sees the same image: the views 1-2 baseline cannot triangulate anything consistently,
     // and views 2, 3 are contradicted.
     {
@@ -591,7 +582,7 @@ TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 
 TEST(Tripose_RefinePose, bad_params_and_inputs_throw_naming_the_argument)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::MOTION_LARGE, 0.0, 1);
+    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 0.0, 1);
     auto expectThrow = [&](const RefineParams& params, Mat R, Mat t, const std::string& name) {
         try
         {

@@ -15,9 +15,9 @@
 namespace opencv_test {
 namespace {
 
-using tripose::VggTriplet;
-using tripose::loadVggTriplet;
-using tripose::vggSequenceViewCount;
+using tripose::support::VggTriplet;
+using tripose::support::loadVggTriplet;
+using tripose::support::vggSequenceViewCount;
 
 //! A sequence of the bundled data (test/data/vgg, see ATTRIBUTION.md there) and the number of
 //! features seen in all three views of each consecutive triplet (views i, i+1, i+2), counted from

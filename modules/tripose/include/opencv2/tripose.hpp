@@ -8,8 +8,6 @@
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"
-#include "opencv2/tripose/synthetic.hpp"
-#include "opencv2/tripose/vgg.hpp"
 
 /**
 @defgroup tripose Camera pose from point and line triplets in three views
@@ -30,7 +28,6 @@ Conventions, followed by every function of the module:
 
 @{
     @defgroup tripose_pose Pose estimation
-    @defgroup tripose_data Synthetic scenes and data sets
 @}
 */
 

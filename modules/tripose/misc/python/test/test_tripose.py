@@ -1,5 +1,6 @@
 #!/usr/bin/env python
-"""Python bindings of the tripose module: synthetic three-view scenes solved through cv2.tripose.
+"""Python bindings of the tripose module: synthetic three-view scenes, made here in numpy (the scene
+generator of the C++ tests is no part of the module), solved through cv2.tripose.
 
 Run inside an OpenCV build (scripts/test_intree.sh does it):
   OPENCV_PYTEST_FILTER=test_tripose python3 <opencv>/modules/python/test/test.py --repo <opencv>
@@ -30,14 +31,112 @@ def translation_error(t, t_true):
     return np.linalg.norm(t - t_true) / np.linalg.norm(t_true)
 
 
-def make_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0):
-    params = cv.tripose.SyntheticSceneParams()
-    params.numPoints = num_points
-    params.numLines = num_lines
-    params.noiseSigma = noise
-    params.outlierRatio = outliers
-    params.seed = seed
-    return cv.tripose.generateSyntheticScene(params)
+class Scene(object):
+    """A three-view scene with its ground truth, all in the frame of view 1: x ~ K (R X + t)."""
+
+
+def look_at_origin(centre, roll):
+    """World-to-camera rotation of a camera at `centre` looking at the origin, rolled by `roll`."""
+    z = -centre / np.linalg.norm(centre)
+    helper = np.array([1.0, 0, 0]) if abs(z[0]) < 0.9 else np.array([0, 1.0, 0])
+    x0 = np.cross(helper, z)
+    x0 /= np.linalg.norm(x0)
+    y0 = np.cross(z, x0)
+    x = np.cos(roll) * x0 + np.sin(roll) * y0
+    return np.array([x, np.cross(z, x), z])
+
+
+def project(K, R, t, X):
+    """Pixels (Nx2) and depths (N) of the points X (Nx3) in the camera K [R | t]."""
+    c = X @ R.T + t.ravel()
+    p = c @ K.T
+    return p[:, :2] / p[:, 2:], c[:, 2]
+
+
+def make_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, K=None, image_size=(640, 480)):
+    """The synthetic protocol of the paper (Qadir & Neubert, Sec. IV-A) in numpy: points and segment
+    end points uniform in a 10 m cube at the origin, three cameras (f = 800 px unless K is given) at
+    20 m in random directions looking at it. Every feature projects at least 2 px inside all three
+    images, in front of the cameras, and every segment is at least 20 px long in each; then Gaussian
+    noise of `noise` px on every coordinate. A fraction `outliers` of the points and of the lines get
+    a random view-3 observation at least 20 px from the true one (pointInliers / lineInliers say which)."""
+    rng = np.random.default_rng(seed)
+    width, height = image_size
+    if K is None:
+        K = np.array([[800.0, 0, (width - 1) / 2.0], [0, 800.0, (height - 1) / 2.0], [0, 0, 1]])
+    K = np.asarray(K, dtype=np.float64)
+    margin, min_length, outlier_offset = 2.0, 20.0, 20.0
+
+    # Cameras in the world frame, then everything in the frame of view 1.
+    directions = rng.normal(size=(3, 3))
+    centres = 20.0 * directions / np.linalg.norm(directions, axis=1, keepdims=True)
+    Rw = [look_at_origin(c, rng.uniform(0, 2 * np.pi)) for c in centres]
+    tw = [-R @ c for R, c in zip(Rw, centres)]
+    poses = [(np.eye(3), np.zeros((3, 1)))] + [(R @ Rw[0].T, (t - R @ Rw[0].T @ tw[0]).reshape(3, 1))
+                                                for R, t in zip(Rw[1:], tw[1:])]
+
+    def random_structure(n):
+        return rng.uniform(-5.0, 5.0, size=(n, 3)) @ Rw[0].T + tw[0]
+
+    def visible(X):
+        ok = np.ones(len(X), dtype=bool)
+        for R, t in poses:
+            x, depth = project(K, R, t, X)
+            ok &= (depth > 0) & np.all((x >= margin) & (x <= np.array([width, height]) - 1 - margin), axis=1)
+        return ok
+
+    def sample(n, draw, keep):
+        """n rows of draw(batch) that keep() accepts."""
+        rows = [draw(0)[:0]]
+        for _ in range(1000):
+            if sum(len(r) for r in rows) >= n:
+                break
+            candidates = draw(max(64, 4 * n))
+            rows.append(candidates[keep(candidates)])
+        rows = np.concatenate(rows)
+        assert len(rows) >= n, 'the scene generator found too few visible features'
+        return rows[:n]
+
+    def long_segments(S):
+        ok = visible(S[:, :3]) & visible(S[:, 3:])
+        for R, t in poses:
+            a, b = project(K, R, t, S[:, :3])[0], project(K, R, t, S[:, 3:])[0]
+            ok &= np.linalg.norm(b - a, axis=1) >= min_length
+        return ok
+
+    scene = Scene()
+    scene.points3d = sample(num_points, random_structure, visible)
+    scene.lines3d = sample(num_lines, lambda n: np.hstack([random_structure(n), random_structure(n)]), long_segments)
+    points = [project(K, R, t, scene.points3d)[0] for R, t in poses]
+    lines = [np.hstack([project(K, R, t, scene.lines3d[:, :3])[0], project(K, R, t, scene.lines3d[:, 3:])[0]])
+             for R, t in poses]
+
+    def random_pixels(n):
+        return rng.uniform([margin, margin], [width - 1 - margin, height - 1 - margin], size=(n, 2))
+
+    scene.pointInliers = np.ones((num_points, 1), dtype=np.uint8)
+    for i in rng.permutation(num_points)[:int(round(outliers * num_points))]:
+        scene.pointInliers[i] = 0
+        points[2][i] = sample(1, random_pixels, lambda x: np.linalg.norm(x - points[2][i], axis=1) >= outlier_offset)[0]
+    scene.lineInliers = np.ones((num_lines, 1), dtype=np.uint8)
+    for i in rng.permutation(num_lines)[:int(round(outliers * num_lines))]:
+        scene.lineInliers[i] = 0
+        a, b = lines[2][i, :2], lines[2][i, 2:]
+        normal = np.array([a[1] - b[1], b[0] - a[0]]) / np.linalg.norm(b - a)
+
+        def wrong(S):
+            far = np.maximum(abs((S[:, :2] - a) @ normal), abs((S[:, 2:] - a) @ normal)) >= outlier_offset
+            return far & (np.linalg.norm(S[:, 2:] - S[:, :2], axis=1) >= min_length)
+        lines[2][i] = sample(1, lambda n: np.hstack([random_pixels(n), random_pixels(n)]), wrong)[0]
+
+    if noise > 0:
+        points = [x + rng.normal(0, noise, x.shape) for x in points]
+        lines = [s + rng.normal(0, noise, s.shape) for s in lines]
+    scene.points1, scene.points2, scene.points3 = points
+    scene.lines1, scene.lines2, scene.lines3 = lines
+    scene.cameraMatrices = [K.copy(), K.copy(), K.copy()]
+    (_, _), (scene.R12, scene.t12), (scene.R, scene.t) = poses
+    return scene
 
 
 def solve(scene, cameraMatrix=None, distCoeffs=None):
@@ -66,31 +165,49 @@ class tripose_test(NewOpenCVTests):
         self.assertLess(trans, trans_tol, '%s: relative translation error %.3g' % (what, trans))
         return rot, trans
 
-    def test_scene_generator(self):
+    def test_scene_helper(self):
+        # The scenes of these tests are exact: shapes, proper rotations, and noise-free points and
+        # segment end points that project where they are observed, in every view.
         scene = make_scene(7, 5, seed=3)
         self.assertEqual(scene.points1.shape, (7, 2))
         self.assertEqual(scene.lines3.shape, (5, 4))
         self.assertEqual(len(scene.cameraMatrices), 3)
-        np.testing.assert_allclose(scene.R @ scene.R.T, np.eye(3), atol=1e-12)
-        self.assertAlmostEqual(np.linalg.det(scene.R), 1.0, places=12)
-        # Noise-free points project exactly: x3 ~ K (R X + t).
-        X = scene.points3d
-        x = (scene.cameraMatrices[2] @ (scene.R @ X.T + scene.t.reshape(3, 1))).T
-        np.testing.assert_allclose(x[:, :2] / x[:, 2:], scene.points3, atol=1e-9)
+        for R in (scene.R12, scene.R):
+            np.testing.assert_allclose(R @ R.T, np.eye(3), atol=1e-12)
+            self.assertAlmostEqual(np.linalg.det(R), 1.0, places=12)
+        views = [(np.eye(3), np.zeros((3, 1)), scene.points1, scene.lines1),
+                 (scene.R12, scene.t12, scene.points2, scene.lines2), (scene.R, scene.t, scene.points3, scene.lines3)]
+        for K, (R, t, points, lines) in zip(scene.cameraMatrices, views):
+            np.testing.assert_allclose(project(K, R, t, scene.points3d)[0], points, atol=1e-9)
+            np.testing.assert_allclose(project(K, R, t, scene.lines3d[:, :3])[0], lines[:, :2], atol=1e-9)
+            np.testing.assert_allclose(project(K, R, t, scene.lines3d[:, 3:])[0], lines[:, 2:], atol=1e-9)
 
-    def test_scene_parameters_round_trip(self):
-        # std::vector<Mat> and Size members of a CV_EXPORTS_W_SIMPLE struct, set from Python.
+    def test_parameters_round_trip(self):
+        # The members of the CV_EXPORTS_W_SIMPLE parameter structs: defaults seen from Python, values
+        # set from Python read back.
+        ransac = cv.tripose.RansacParams()
+        self.assertEqual((ransac.threshold, ransac.confidence, ransac.maxIterations, ransac.localOptimization,
+                          ransac.refine, ransac.seed), (2.0, 0.999, 10000, True, True, 0))
+        ransac.threshold, ransac.confidence, ransac.maxIterations = 1.5, 0.99, 500
+        ransac.localOptimization, ransac.refine, ransac.seed = False, False, -7
+        self.assertEqual((ransac.threshold, ransac.confidence, ransac.maxIterations, ransac.localOptimization,
+                          ransac.refine, ransac.seed), (1.5, 0.99, 500, False, False, -7))
+        refine = cv.tripose.RefineParams()
+        self.assertEqual((refine.maxIterations, refine.loss, refine.lossScale, refine.tolerance),
+                         (30, cv.tripose.LOSS_SQUARED, 1.0, 1e-10))
+        refine.maxIterations, refine.loss, refine.lossScale, refine.tolerance = 5, cv.tripose.LOSS_CAUCHY, 2.5, 1e-6
+        self.assertEqual((refine.maxIterations, refine.loss, refine.lossScale, refine.tolerance),
+                         (5, cv.tripose.LOSS_CAUCHY, 2.5, 1e-6))
+
+    def test_non_default_intrinsics(self):
+        # A camera other than the default one, given from Python as one shared matrix or a list of one.
         K = np.array([[500.0, 0, 300], [0, 520.0, 250], [0, 0, 1]])
-        params = cv.tripose.SyntheticSceneParams()
-        params.numPoints = 6
-        params.numLines = 0
-        params.imageSize = (600, 500)
-        params.cameraMatrices = [K]
-        self.assertEqual(tuple(params.imageSize), (600, 500))
-        scene = cv.tripose.generateSyntheticScene(params)
-        for Ki in scene.cameraMatrices:
-            np.testing.assert_array_equal(Ki, K)
+        scene = make_scene(6, 2, seed=4, K=K, image_size=(600, 500))
         self.assertTrue(np.all((scene.points3 >= -0.5) & (scene.points3 < np.array([600, 500]) - 0.5)))
+        for form, Kv in [('3x3 array', K), ('list of one K', [K])]:
+            count, R, t = solve(scene, Kv)[:3]
+            self.assertGreaterEqual(count, 1, form)
+            self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, form)
 
     def test_noise_free_overdetermined(self):
         # Six or more features: the best candidate is the exact pose.

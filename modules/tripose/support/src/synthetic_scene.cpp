@@ -6,10 +6,14 @@
 // a cube centred at the world origin, cameras looking at the origin. Everything is returned in the
 // frame of view 1.
 
-#include "precomp.hpp"
+#include "tripose_support/synthetic_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 namespace cv {
 namespace tripose {
+namespace support {
 
 SyntheticSceneParams::SyntheticSceneParams()
     : numPoints(4), numLines(4), motion(MOTION_LARGE), noiseSigma(0.0), outlierRatio(0.0),
@@ -124,7 +128,10 @@ double distanceToLine(const Point2d& x, const Point2d& a, const Point2d& b)
                     what, kMaxAttemptsPerFeature));
 }
 
-//! Checked, normalised (K(2,2) = 1) intrinsics of the three views.
+//! The intrinsics of the three views, scaled to K(2,2) = 1. Only what projecting needs is checked:
+//! a last row (0, 0, k), so that the third projected coordinate is the depth and "in front" means
+//! a positive one. Whether the estimators accept a matrix (skew, signs of the focal lengths, ...)
+//! is theirs to say: their bad-input tests may use scenes made with such matrices.
 void intrinsicsFromParams(const SyntheticSceneParams& params, Matx33d K[3])
 {
     const std::vector<Mat>& given = params.cameraMatrices;
@@ -142,18 +149,18 @@ void intrinsicsFromParams(const SyntheticSceneParams& params, Matx33d K[3])
     {
         const String name = format("cameraMatrices[%d]", (int)i);
         const Mat& m = given[i];
-        if (m.rows != 3 || m.cols != 3 || m.channels() != 1)
+        if (m.dims > 2 || m.rows != 3 || m.cols != 3 || m.channels() != 1)
             badParam(name.c_str(), format("expected a 3x3 1-channel matrix, got %dx%d with %d channels",
                                           m.rows, m.cols, m.channels()));
         Mat m64;
         m.convertTo(m64, CV_64F);
         Matx33d k(m64.ptr<double>());
-        if (!checkRange(m64) || k(2, 2) == 0)
-            badParam(name.c_str(), "expected finite entries and K(2,2) != 0");
-        k *= 1.0 / k(2, 2);
-        if (k(1, 0) != 0 || k(2, 0) != 0 || k(2, 1) != 0 || !(k(0, 0) > 0) || !(k(1, 1) > 0))
-            badParam(name.c_str(), "expected an upper-triangular intrinsic matrix with positive focal lengths");
-        K[i] = k;
+        if (!checkRange(m64))
+            badParam(name.c_str(), "expected finite entries");
+        if (k(2, 0) != 0 || k(2, 1) != 0 || k(2, 2) == 0)
+            badParam(name.c_str(), format("expected a last row (0, 0, k) with k != 0, got (%g, %g, %g)",
+                                          k(2, 0), k(2, 1), k(2, 2)));
+        K[i] = k * (1.0 / k(2, 2));
     }
     if (given.size() == 1)
         K[1] = K[2] = K[0];
@@ -230,7 +237,6 @@ Vec3d randomCubePoint(RNG& rng, double halfSize, const Matx33d& R, const Vec3d& 
 
 SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
 {
-    CV_INSTRUMENT_REGION();
     validate(params);
     Matx33d K[3];
     intrinsicsFromParams(params, K);
@@ -386,5 +392,6 @@ SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
     return scene;
 }
 
+} // namespace support
 } // namespace tripose
 } // namespace cv

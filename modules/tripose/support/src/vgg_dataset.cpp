@@ -9,19 +9,22 @@
 // <prefix>nview-lines, where <prefix> is "house.", "bt." or empty. Row i of an nview file lists, per
 // view in image order, the 0-based index of 3D feature i in that view's file, '*' when unseen.
 
-#include "precomp.hpp"
+#include "tripose_support/vgg_dataset.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
 
-#include "opencv_compat.hpp"
 #include "opencv2/core/utils/filesystem.hpp"
+#include "opencv_geometry.hpp"
 
 namespace cv {
 namespace tripose {
+namespace support {
 
 namespace {
 
@@ -204,13 +207,11 @@ Mat toMat(const Vec3d& v) { return Mat(v, true); }
 
 int vggSequenceViewCount(const String& sequenceDir)
 {
-    CV_INSTRUMENT_REGION();
     return (int)findLayout(sequenceDir, "vggSequenceViewCount").viewStems.size();
 }
 
 VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3)
 {
-    CV_INSTRUMENT_REGION();
     const SequenceLayout layout = findLayout(sequenceDir, "loadVggTriplet");
     const int numViews = (int)layout.viewStems.size();
     const int views[3] = { view1, view2, view3 };
@@ -341,5 +342,6 @@ VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int v
     return triplet;
 }
 
+} // namespace support
 } // namespace tripose
 } // namespace cv

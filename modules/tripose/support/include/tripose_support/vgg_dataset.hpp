@@ -2,8 +2,12 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#ifndef OPENCV_TRIPOSE_VGG_HPP
-#define OPENCV_TRIPOSE_VGG_HPP
+// Reader of the Oxford VGG multi-view sequences (test/data/vgg), for the module's tests, the samples
+// and the evaluation. Part of the tripose support library, which is built beside the module but not
+// installed: a data-set parser is not part of the module's API.
+
+#ifndef TRIPOSE_SUPPORT_VGG_DATASET_HPP
+#define TRIPOSE_SUPPORT_VGG_DATASET_HPP
 
 #include <vector>
 
@@ -11,29 +15,27 @@
 
 namespace cv {
 namespace tripose {
-
-//! @addtogroup tripose_data
-//! @{
+namespace support {
 
 /** @brief Three views of a sequence in the Oxford VGG multi-view format (per view: .corners,
 .lines, .P; per sequence: nview-corners, nview-lines, p3d, l3d), restricted to the features seen in
 all three views, with the ground truth expressed relative to the first of them (x ~ K(RX + t)).
 All matrices are CV_64F unless stated.
 */
-struct CV_EXPORTS_W_SIMPLE VggTriplet
+struct VggTriplet
 {
-    CV_PROP_RW Mat points1, points2, points3; //!< Nx2 corners (px) seen in all three views.
-    CV_PROP_RW Mat lines1, lines2, lines3;    //!< Mx4 segments (x0 y0 x1 y1, px) seen in all three views.
-    CV_PROP_RW Mat pointIds, lineIds;         //!< Nx1 / Mx1 CV_32S: row of each feature in p3d / l3d.
-    CV_PROP_RW Mat points3d;                  //!< Nx3 points of p3d in the frame of the first view.
-    CV_PROP_RW Mat lines3d;                   //!< Mx6 segments of l3d in the frame of the first view.
-    CV_PROP_RW std::vector<Mat> cameraMatrices; //!< The three 3x3 intrinsic matrices (from the P matrices).
-    CV_PROP_RW Mat R12, t12;                  //!< Pose of the second view (3x3, 3x1).
-    CV_PROP_RW Mat R, t;                      //!< Pose of the third view (3x3, 3x1).
+    Mat points1, points2, points3;   //!< Nx2 corners (px) seen in all three views.
+    Mat lines1, lines2, lines3;      //!< Mx4 segments (x0 y0 x1 y1, px) seen in all three views.
+    Mat pointIds, lineIds;           //!< Nx1 / Mx1 CV_32S: row of each feature in p3d / l3d.
+    Mat points3d;                    //!< Nx3 points of p3d in the frame of the first view.
+    Mat lines3d;                     //!< Mx6 segments of l3d in the frame of the first view.
+    std::vector<Mat> cameraMatrices; //!< The three 3x3 intrinsic matrices (from the P matrices).
+    Mat R12, t12;                    //!< Pose of the second view (3x3, 3x1).
+    Mat R, t;                        //!< Pose of the third view (3x3, 3x1).
 };
 
 /** @brief Number of views of a VGG multi-view sequence stored in a folder. */
-CV_EXPORTS_W int vggSequenceViewCount(const String& sequenceDir);
+int vggSequenceViewCount(const String& sequenceDir);
 
 /** @brief Loads three views (0-based indices in image order, distinct, in any order) of a VGG
 multi-view sequence.
@@ -51,11 +53,10 @@ that every rotation is proper. Features are returned in p3d / l3d order.
 @throws cv::Exception naming the file when a file is missing or malformed, or the view index when
 it is out of range.
 */
-CV_EXPORTS_W VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3);
+VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3);
 
-//! @}
-
+} // namespace support
 } // namespace tripose
 } // namespace cv
 
-#endif // OPENCV_TRIPOSE_VGG_HPP
+#endif // TRIPOSE_SUPPORT_VGG_DATASET_HPP
