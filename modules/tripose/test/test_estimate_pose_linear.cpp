@@ -185,14 +185,14 @@ TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_erro
 // 100 small-motion 5P+5L scenes must drop below the plain linear solver's.
 TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
 {
-    const tripose::SyntheticScene exact = makeScene({ 3, 3 }, tripose::MOTION_LARGE, 0.0, 5);
+    const tripose::support::SyntheticScene exact = makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 5);
     std::vector<Mat> Rs, ts;
     Mat R, t, errors;
     const int n = tripose::estimatePoseLinePoint(exact.points1, exact.points2, exact.points3, exact.lines1,
                                                  exact.lines2, exact.lines3, exact.cameraMatrices, noArray(),
                                                  exact.R12, exact.t12, R, t, tripose::POSE_LINEAR_REFINE, Rs, ts, errors);
     ASSERT_GT(n, 0);
-    EXPECT_LT(rotationError(R, exact.R), 1e-8);
+    EXPECT_LT(poseError(R, t, exact.R, exact.t).rotationDeg, degrees(1e-8));
     EXPECT_LT(errors.at<double>(0), 1e-6);
     for (int i = 1; i < n; ++i)
         EXPECT_LE(errors.at<double>(i - 1), errors.at<double>(i));
@@ -200,21 +200,21 @@ TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
     std::vector<double> linear, refined;
     for (int seed = 0; seed < 100; ++seed)
     {
-        const tripose::SyntheticScene s = makeScene({ 5, 5 }, tripose::MOTION_SMALL, 1.0, 300 + seed);
+        const tripose::support::SyntheticScene s = makeScene({ 5, 5 }, tripose::support::MOTION_SMALL, 1.0, 300 + seed);
         for (int method : { (int)tripose::POSE_LINEAR, (int)tripose::POSE_LINEAR_REFINE })
         {
             Mat Rm, tm;
             const int found = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                              s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12,
                                                              Rm, tm, method);
-            const double error = found > 0 ? rotationError(Rm, s.R) : CV_PI;
+            const double error = found > 0 ? poseError(Rm, tm, s.R, s.t).rotationDeg : 180.0;
             (method == tripose::POSE_LINEAR ? linear : refined).push_back(error);
         }
     }
     std::nth_element(linear.begin(), linear.begin() + 50, linear.end());
     std::nth_element(refined.begin(), refined.begin() + 50, refined.end());
-    std::cout << "5P5L small 1 px: median rotation error linear " << linear[50] * 180 / CV_PI << " deg, refined "
-              << refined[50] * 180 / CV_PI << " deg" << std::endl;
+    std::cout << "5P5L small 1 px: median rotation error linear " << linear[50] << " deg, refined " << refined[50]
+              << " deg" << std::endl;
     EXPECT_LT(refined[50], linear[50]);
 }
 

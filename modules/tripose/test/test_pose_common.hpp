@@ -50,13 +50,15 @@ inline std::string mixName(const FeatureMix& m)
     return cv::format("%dP%dL", m.points, m.lines);
 }
 
-inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed)
+inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed,
+                                                  double outlierRatio = 0)
 {
     tripose::support::SyntheticSceneParams params;
     params.numPoints = mix.points;
     params.numLines = mix.lines;
     params.motion = motion;
     params.noiseSigma = noise;
+    params.outlierRatio = outlierRatio;
     params.seed = seed;
     return tripose::support::generateSyntheticScene(params);
 }

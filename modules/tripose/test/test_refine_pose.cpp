@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 #include <Eigen/Dense>
 #include "../src/opencv_compat.hpp"
@@ -16,7 +16,6 @@ namespace {
 
 using tripose::RefineParams;
 using tripose::support::SyntheticScene;
-using tripose::support::SyntheticSceneParams;
 
 using tripose::support::PoseError;
 using tripose::support::poseError;
@@ -35,18 +34,6 @@ double median(std::vector<double> v)
     CV_Assert(!v.empty());
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
     return v[v.size() / 2];
-}
-
-SyntheticScene makeScene(int points, int lines, int motion, double sigma, int seed, double outlierRatio = 0)
-{
-    SyntheticSceneParams p;
-    p.numPoints = points;
-    p.numLines = lines;
-    p.motion = motion;
-    p.noiseSigma = sigma;
-    p.outlierRatio = outlierRatio;
-    p.seed = seed;
-    return tripose::support::generateSyntheticScene(p);
 }
 
 //! The true pose turned by @p degrees about a random axis, its translation moved by @p fraction of its norm.
@@ -160,7 +147,7 @@ TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
 
 TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 1.0, 8);
+    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_LARGE, 1.0, 8);
     const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
     tripose::detail::CameraPose pose;
@@ -189,7 +176,7 @@ TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
         double worstRotation = 0, worstTranslation = 0, worstRms = 0, worstStructure = 0;
         for (int seed = 0; seed < 20; ++seed)
         {
-            const SyntheticScene s = makeScene(setting.points, setting.lines, setting.motion, 0.0, seed);
+            const SyntheticScene s = makeScene({ setting.points, setting.lines }, setting.motion, 0.0, seed);
             Mat R, t, X, L;
             perturbPose(s, 2.0, 0.05, rng, R, t);
             const double rms = refineScene(s, R, t, RefineParams(), X, L);
@@ -221,7 +208,7 @@ TEST(Tripose_RefinePose, noise_free_lines3d_are_the_view1_end_points)
 {
     // The ends of a generated segment are observed exactly in view 1, so the returned points of each
     // line (closest to the view-1 end rays) are the true 3D end points.
-    const SyntheticScene s = makeScene(3, 5, tripose::support::MOTION_LARGE, 0.0, 3);
+    const SyntheticScene s = makeScene({ 3, 5 }, tripose::support::MOTION_LARGE, 0.0, 3);
     Mat R = s.R.clone(), t = s.t.clone(), L;
     refineScene(s, R, t, RefineParams(), noArray(), L);
     EXPECT_LT(cv::norm(L, s.lines3d, NORM_INF), 1e-6);
@@ -238,7 +225,7 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
         std::vector<double> startRot, startTrans, mlRot, mlTrans, refinedRot, refinedTrans, gapRot, gapTrans;
         for (int seed = 0; seed < scenes; ++seed)
         {
-            const SyntheticScene s = makeScene(setting.points, setting.lines, setting.motion, 1.0, seed);
+            const SyntheticScene s = makeScene({ setting.points, setting.lines }, setting.motion, 1.0, seed);
             Mat Rml = s.R.clone(), tml = s.t.clone();
             refineScene(s, Rml, tml);
             Mat R, t;
@@ -284,7 +271,7 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
         int solved = 0, sameMinimum = 0;
         for (int seed = 0; seed < scenes; ++seed)
         {
-            const SyntheticScene s = makeScene(setting.points, setting.lines, setting.motion, 1.0, 1000 + seed);
+            const SyntheticScene s = makeScene({ setting.points, setting.lines }, setting.motion, 1.0, 1000 + seed);
             Mat Rml = s.R.clone(), tml = s.t.clone();
             refineScene(s, Rml, tml);
             appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
@@ -348,7 +335,7 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
             std::vector<double> oursRot, oursTrans, pnpRot, pnpTrans;
             for (int seed = 0; seed < scenes; ++seed)
             {
-                const SyntheticScene s = makeScene(points, 0, motion, 1.0, seed);
+                const SyntheticScene s = makeScene({ points, 0 }, motion, 1.0, seed);
                 Mat R0, t0;
                 perturbPose(s, 2.0, 0.05, rng, R0, t0);
                 Mat R = R0.clone(), t = t0.clone();
@@ -377,7 +364,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
     for (int seed = 0; seed < scenes; ++seed)
     {
         // 2 of 10 points and 2 of 10 lines are wrong matches in view 3 (at least 20 px off).
-        const SyntheticScene s = makeScene(10, 10, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
+        const SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
         Mat R0, t0;
         perturbPose(s, 1.0, 0.02, rng, R0, t0);
         for (int loss = tripose::LOSS_SQUARED; loss <= tripose::LOSS_CAUCHY; ++loss)
@@ -408,7 +395,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 {
     // The robust estimator refines over its inliers by index; the result must be that of a problem
     // holding only those features.
-    const SyntheticScene s = makeScene(12, 8, tripose::support::MOTION_SMALL, 1.0, 21);
+    const SyntheticScene s = makeScene({ 12, 8 }, tripose::support::MOTION_SMALL, 1.0, 21);
     const std::vector<int> pointIdx = { 0, 2, 3, 5, 8, 11 }, lineIdx = { 1, 4, 6 };
     Mat p1, p2, p3, l1, l2, l3;
     for (int i : pointIdx)
@@ -455,7 +442,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 {
     // At the returned estimate, recompute the residuals from points3d / lines3d independently.
-    const SyntheticScene s = makeScene(5, 4, tripose::support::MOTION_LARGE, 1.0, 9);
+    const SyntheticScene s = makeScene({ 5, 4 }, tripose::support::MOTION_LARGE, 1.0, 9);
     Mat R = s.R.clone(), t = s.t.clone(), X, L;
     const double rms = refineScene(s, R, t, RefineParams(), X, L);
     const Mat Rs[3] = { Mat::eye(3, 3, CV_64F), s.R12, R }, ts[3] = { Mat::zeros(3, 1, CV_64F), s.t12, t };
@@ -494,7 +481,7 @@ TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 
 TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 {
-    const SyntheticScene s = makeScene(4, 3, tripose::support::MOTION_LARGE, 0.5, 4);
+    const SyntheticScene s = makeScene({ 4, 3 }, tripose::support::MOTION_LARGE, 0.5, 4);
     RNG rng(1);
     Mat R0, t0;
     perturbPose(s, 1.0, 0.02, rng, R0, t0);
@@ -541,7 +528,7 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 
 TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_SMALL, 1.0, 2);
+    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_SMALL, 1.0, 2);
     // Every view sees the same image: the views 1-2 baseline cannot triangulate anything consistently,
     // and views 2, 3 are contradicted.
     {
@@ -582,7 +569,7 @@ TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 
 TEST(Tripose_RefinePose, bad_params_and_inputs_throw_naming_the_argument)
 {
-    const SyntheticScene s = makeScene(4, 4, tripose::support::MOTION_LARGE, 0.0, 1);
+    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_LARGE, 0.0, 1);
     auto expectThrow = [&](const RefineParams& params, Mat R, Mat t, const std::string& name) {
         try
         {
