@@ -2,7 +2,7 @@
 
 import importlib
 
-FAMILY_MODULES = ["line_rows", "point_rows", "beta_constraints", "beta_n4"]
+FAMILY_MODULES = ["line_rows", "point_rows", "beta_constraints", "beta_n4", "rig_rows"]
 
 
 def all_families():
