@@ -1,3 +1,6 @@
+import sys
+from pathlib import Path
+
 import numpy as np
 import sympy
 
@@ -5,6 +8,8 @@ from conftest import kernel, pose_vector, random_rotation, similarity, skew
 from tripose_codegen.spec import Kernel
 from tripose_codegen.specs import point_rows
 from tripose_codegen.specs import rig_rows as spec
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "prototypes"))
 
 
 def random_similarity(rng):
@@ -129,3 +134,11 @@ def test_exact_rig_rows_hold_at_the_true_pose(rng):
         assert s[1] / s[0] > 1e-6
         assert s[2] / s[0] < 1e-12
 
+
+def test_kernel_dimension_and_solution_count_match_numeric_ranks():
+    """The prototype's kernel_dimension and solution_count (the counts the C++ solver will use)
+    against the numeric ranks, exact data, every mix of up to four features (point or line, seen
+    in views 3 and 4, in view 3 only or in view 4 only)."""
+    import stereo_rig
+
+    assert stereo_rig.check_counts(4, seeds=2) == []
