@@ -592,6 +592,8 @@ def mixes() -> List[Mix]:
         # Minimal, d = 6: 8 or 4 poses fit.
         mix("3 single (2P only3, 1P only4)", [(P, only3), (P, only3), (P, only4)]),
         mix("3 single (1P+2L, mixed views)", [(P, only4), (L, only3), (L, only4)]),
+        mix("3 single (2P+1L, mixed views)", [(P, only3), (P, only4), (L, only4)]),
+        mix("3 single (3L, mixed views)", [(L, only3), (L, only4), (L, only3)]),
         mix("1L both + 1P only3", [(L, both), (P, only3)]),
         mix("1L both + 1L only4", [(L, both), (L, only4)]),
         mix("3 view-3 only (2P+1L)", [(P, only3), (P, only3), (L, only3)]),
