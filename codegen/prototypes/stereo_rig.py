@@ -597,6 +597,9 @@ def mixes() -> List[Mix]:
         mix("1L both + 1P only3", [(L, both), (P, only3)]),
         mix("1L both + 1L only4", [(L, both), (L, only4)]),
         mix("3 view-3 only (2P+1L)", [(P, only3), (P, only3), (L, only3)]),
+        mix("3 view-3 only (3P)", [(P, only3)] * 3),
+        mix("3 view-3 only (1P+2L)", [(P, only3), (L, only3), (L, only3)]),
+        mix("3 view-4 only (3L)", [(L, only4)] * 3),
         # Not determined: a turn about the line through the points is free.
         mix("2P both", [(P, both)] * 2),
     ]
