@@ -13,12 +13,17 @@ from tripose_codegen.evaluate import numeric_kernel  # noqa: E402
 
 
 @functools.lru_cache(maxsize=None)
-def kernel(family_module: str, name: str):
-    """The double-precision evaluation of one generated kernel (built once per session)."""
+def family(family_module: str):
+    """The spec's Family, built once per session (building derives every kernel of it)."""
     import importlib
 
-    module = importlib.import_module(f"tripose_codegen.specs.{family_module}")
-    for k in module.family().kernels:
+    return importlib.import_module(f"tripose_codegen.specs.{family_module}").family()
+
+
+@functools.lru_cache(maxsize=None)
+def kernel(family_module: str, name: str):
+    """The double-precision evaluation of one generated kernel (built once per session)."""
+    for k in family(family_module).kernels:
         if k.name == name:
             return numeric_kernel(k)
     raise KeyError(name)
