@@ -18,7 +18,7 @@ namespace detail {
 
 struct RefinementSummary
 {
-    double initialRms = 0; //!< RMS reprojection error (px) over the three views at the start (+inf: nothing usable).
+    double initialRms = 0; //!< RMS reprojection error (px) over every view at the start (+inf: nothing usable).
     double finalRms = 0;   //!< The same at the returned estimate.
     int iterations = 0;    //!< Levenberg-Marquardt steps tried (accepted or rejected).
 };
@@ -27,20 +27,25 @@ struct RefinementSummary
 struct RefinedStructure
 {
     std::vector<Eigen::Vector3d> points;   //!< One per selected point.
-    std::vector<Eigen::Vector3d> lineEnds; //!< Two per selected line: the points closest to the view-1 end rays.
+    std::vector<Eigen::Vector3d> lineEnds; //!< Two per selected line: the points closest to the end-point
+                                           //!< rays of the first view that sees it.
     std::vector<unsigned char> pointUsed;  //!< 1 where the point entered the cost (else: its initialisation).
     std::vector<unsigned char> lineUsed;   //!< 1 where the line entered the cost.
 };
 
-/** Maximum-likelihood refinement over the three views: minimises the (robustified) reprojection
-error in pixels of the selected points and line segments in views 1, 2 and 3 over the pose of view 3
-(refined in place: R <- Exp(omega) R, t <- t + dt) and the structure (3D points; 3D lines in the
-orthonormal representation), with views 1 and 2 fixed.
+/** Maximum-likelihood refinement over every view of @p set: minimises the (robustified) reprojection
+error in pixels (geometry/residuals.hpp) of the selected points and line segments in every view
+that sees them, over the pose of the estimated camera (refined in place: R <- Exp(omega) R,
+t <- t + dt; views that move with it follow through their mounts) and the structure (3D points;
+3D lines in the orthonormal representation), with the known views fixed.
 
-Levenberg-Marquardt on the normal equations with each feature's structure block eliminated
-(Schur complement to a 6x6 system), analytic Jacobians and per-call buffers only, so it stays linear
-in the number of features. @p params must be valid (see checkRefineParams()). Null index lists
-select every point / line. The pose is never replaced by non-finite values.
+The structure starts from a triangulation over every view that sees it, the estimated ones at
+@p pose. Features that their views do not determine (parallel rays, coinciding planes), points
+behind a view and lines through a view's centre do not enter the cost. Levenberg-Marquardt on the
+normal equations with each feature's structure eliminated (refine/schur_system.hpp), analytic
+Jacobians (refine/observation_model.hpp), time linear in the number of features. @p params must be
+valid (see checkRefineParams()). Null index lists select every point / line. The pose is never
+replaced by non-finite values.
 */
 RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, const RefineParams& params,
                                          const std::vector<int>* pointIndices = nullptr,

@@ -1,0 +1,268 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Every analytic Jacobian of the residuals (geometry/residuals.hpp) and of the refinement's
+// observation model (refine/observation_model.hpp) against central finite differences, for a
+// known view, the estimated camera itself and a camera mounted on it (a stereo rig's second camera).
+
+#include "test_precomp.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include "../src/geometry/line_parameterization.hpp"
+#include "../src/geometry/residuals.hpp"
+#include "../src/refine/observation_model.hpp"
+
+namespace opencv_test {
+namespace {
+
+using namespace cv::tripose::detail;
+
+typedef Eigen::Matrix<double, 6, 1> Vector6d; // a left increment (omega, dt) of the estimated pose
+
+// Central differences with this step have a truncation error of about step^2 times the third
+// derivative and a rounding error of about 1e-16 / step relative to the residuals (hundreds of px):
+// a relative agreement of 1e-6 separates a right Jacobian from a wrong one by orders of magnitude.
+const double kStep = 1e-6;
+const double kTolerance = 1e-6;
+
+Eigen::Vector3d randomVector(RNG& rng, double scale)
+{
+    return Eigen::Vector3d(rng.uniform(-scale, scale), rng.uniform(-scale, scale), rng.uniform(-scale, scale));
+}
+
+Eigen::Matrix3d randomRotation(RNG& rng, double maxAngle)
+{
+    const Eigen::Vector3d axis = randomVector(rng, 1.0).normalized();
+    return Eigen::AngleAxisd(rng.uniform(-maxAngle, maxAngle), axis).toRotationMatrix();
+}
+
+CameraPose randomPose(RNG& rng)
+{
+    CameraPose p;
+    p.R = randomRotation(rng, 0.3);
+    p.t = randomVector(rng, 1.0);
+    return p;
+}
+
+Intrinsics randomIntrinsics(RNG& rng)
+{
+    Eigen::Matrix3d K;
+    K << rng.uniform(600.0, 900.0), rng.uniform(-2.0, 2.0), rng.uniform(300.0, 340.0), 0, rng.uniform(600.0, 900.0),
+        rng.uniform(220.0, 260.0), 0, 0, 1;
+    return Intrinsics(K);
+}
+
+//! The estimated camera's pose moved by the left increment (omega, dt).
+CameraPose moved(const CameraPose& pose, const Vector6d& delta)
+{
+    const Eigen::Vector3d omega = delta.head<3>();
+    const double angle = omega.norm();
+    CameraPose p;
+    p.R = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, omega / angle) * pose.R) : pose.R;
+    p.t = pose.t + delta.tail<3>();
+    return p;
+}
+
+//! Max |analytic - numeric| relative to the largest entry of the numeric Jacobian.
+template <typename A, typename B>
+double relativeError(const A& analytic, const B& numeric)
+{
+    return (analytic - numeric).cwiseAbs().maxCoeff() / std::max(numeric.cwiseAbs().maxCoeff(), 1e-12);
+}
+
+//! A view that sees one point and one segment, in one of three roles.
+struct Scenario
+{
+    View view;
+    CameraPose estimated;
+    Eigen::Vector3d X;
+    PluckerLine L;
+};
+
+enum Role { KnownView, EstimatedCamera, MountedCamera };
+
+Scenario makeScenario(RNG& rng, Role role)
+{
+    Scenario s;
+    s.view.camera = randomIntrinsics(rng);
+    s.estimated = randomPose(rng);
+    s.view.estimated = role != KnownView;
+    if (role == KnownView)
+        s.view.pose = randomPose(rng);
+    else if (role == MountedCamera)
+        s.view.pose = randomPose(rng); // the rig offset
+    const CameraPose pose = s.view.poseFor(s.estimated);
+    // Structure 4-12 m in front of the view; observations a few pixels off the projections.
+    const Eigen::Vector3d Xc(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(4.0, 12.0));
+    s.X = pose.R.transpose() * (Xc - pose.t);
+    const Eigen::Vector3d Bc = Xc + randomVector(rng, 2.0);
+    const Eigen::Vector3d A = s.X, B = pose.R.transpose() * (Bc - pose.t);
+    s.L.d = B - A;
+    s.L.m = A.cross(s.L.d);
+    s.view.points.push_back(s.view.camera.project(Xc) + Eigen::Vector2d(rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)));
+    s.view.lineEnds.push_back(s.view.camera.project(Xc) + Eigen::Vector2d(rng.uniform(-3.0, 3.0), 2.0));
+    s.view.lineEnds.push_back(s.view.camera.project(Bc) + Eigen::Vector2d(-1.0, rng.uniform(-3.0, 3.0)));
+    return s;
+}
+
+TEST(Tripose_ResidualJacobians, point_residual_matches_finite_differences)
+{
+    RNG rng(11);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const Intrinsics c = randomIntrinsics(rng);
+        const Eigen::Vector3d Xc(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(2.0, 20.0));
+        const Eigen::Vector2d observed(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
+        Eigen::Vector2d r;
+        Matrix23d J;
+        ASSERT_TRUE(pointResidual(c, Xc, observed, r, &J));
+        Matrix23d numeric;
+        for (int k = 0; k < 3; ++k)
+        {
+            const double h = kStep * std::max(1.0, std::abs(Xc(k)));
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(pointResidual(c, Xc + h * Eigen::Vector3d::Unit(k), observed, plus));
+            ASSERT_TRUE(pointResidual(c, Xc - h * Eigen::Vector3d::Unit(k), observed, minus));
+            numeric.col(k) = (plus - minus) / (2 * h);
+        }
+        EXPECT_LT(relativeError(J, numeric), kTolerance) << "trial " << trial;
+    }
+}
+
+TEST(Tripose_ResidualJacobians, line_residual_matches_finite_differences)
+{
+    RNG rng(12);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const Intrinsics c = randomIntrinsics(rng);
+        const Eigen::Vector3d A(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(2.0, 20.0));
+        const Eigen::Vector3d moment = A.cross(A + randomVector(rng, 2.0));
+        const Eigen::Vector2d end0(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
+        const Eigen::Vector2d end1(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
+        Eigen::Vector2d r;
+        Matrix23d J;
+        ASSERT_TRUE(lineResidual(c, moment, end0, end1, r, &J));
+        Matrix23d numeric;
+        for (int k = 0; k < 3; ++k)
+        {
+            const double h = kStep * moment.norm();
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(lineResidual(c, moment + h * Eigen::Vector3d::Unit(k), end0, end1, plus));
+            ASSERT_TRUE(lineResidual(c, moment - h * Eigen::Vector3d::Unit(k), end0, end1, minus));
+            numeric.col(k) = (plus - minus) / (2 * h);
+        }
+        EXPECT_LT(relativeError(J, numeric), kTolerance) << "trial " << trial;
+    }
+}
+
+class Tripose_ObservationJacobians : public testing::TestWithParam<int>
+{
+};
+
+TEST_P(Tripose_ObservationJacobians, point_matches_finite_differences)
+{
+    const Role role = (Role)GetParam();
+    RNG rng(100 + GetParam());
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const Scenario s = makeScenario(rng, role);
+        ViewAtPose v;
+        v.set(s.view, s.estimated);
+        Eigen::Vector2d r;
+        Matrix23d dX;
+        Matrix26d dPose = Matrix26d::Constant(std::numeric_limits<double>::quiet_NaN());
+        ASSERT_TRUE(pointObservation(v, s.estimated, s.X, s.view.points[0], 0.0, r, &dX, &dPose));
+
+        Matrix23d numericX;
+        for (int k = 0; k < 3; ++k)
+        {
+            const Eigen::Vector3d h = kStep * Eigen::Vector3d::Unit(k);
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(pointObservation(v, s.estimated, s.X + h, s.view.points[0], 0.0, plus));
+            ASSERT_TRUE(pointObservation(v, s.estimated, s.X - h, s.view.points[0], 0.0, minus));
+            numericX.col(k) = (plus - minus) / (2 * kStep);
+        }
+        EXPECT_LT(relativeError(dX, numericX), kTolerance) << "trial " << trial;
+
+        if (role == KnownView)
+        {
+            EXPECT_TRUE(dPose.hasNaN()) << "a known view has no pose Jacobian";
+            continue;
+        }
+        Matrix26d numericPose;
+        for (int k = 0; k < 6; ++k)
+        {
+            const Vector6d h = kStep * Vector6d::Unit(k);
+            ViewAtPose vp, vm;
+            const CameraPose plusPose = moved(s.estimated, h), minusPose = moved(s.estimated, -h);
+            vp.set(s.view, plusPose);
+            vm.set(s.view, minusPose);
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(pointObservation(vp, plusPose, s.X, s.view.points[0], 0.0, plus));
+            ASSERT_TRUE(pointObservation(vm, minusPose, s.X, s.view.points[0], 0.0, minus));
+            numericPose.col(k) = (plus - minus) / (2 * kStep);
+        }
+        EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
+    }
+}
+
+TEST_P(Tripose_ObservationJacobians, line_matches_finite_differences)
+{
+    const Role role = (Role)GetParam();
+    RNG rng(200 + GetParam());
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const Scenario s = makeScenario(rng, role);
+        OrthonormalLine line;
+        ASSERT_TRUE(OrthonormalLine::fromPlucker(s.L, line));
+        const PluckerLine L = line.plucker();
+        const Eigen::Matrix<double, 6, 4> chart = line.pluckerJacobian();
+        ViewAtPose v;
+        v.set(s.view, s.estimated);
+        const Eigen::Vector2d &end0 = s.view.lineEnds[0], &end1 = s.view.lineEnds[1];
+        Eigen::Vector2d r;
+        Matrix24d dLine;
+        Matrix26d dPose = Matrix26d::Constant(std::numeric_limits<double>::quiet_NaN());
+        ASSERT_TRUE(lineObservation(v, s.estimated, L, end0, end1, r, &chart, &dLine, &dPose));
+
+        Matrix24d numericLine;
+        for (int k = 0; k < 4; ++k)
+        {
+            const Eigen::Vector4d h = kStep * Eigen::Vector4d::Unit(k);
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(lineObservation(v, s.estimated, line.plus(h).plucker(), end0, end1, plus));
+            ASSERT_TRUE(lineObservation(v, s.estimated, line.plus(-h).plucker(), end0, end1, minus));
+            numericLine.col(k) = (plus - minus) / (2 * kStep);
+        }
+        EXPECT_LT(relativeError(dLine, numericLine), kTolerance) << "trial " << trial;
+
+        if (role == KnownView)
+        {
+            EXPECT_TRUE(dPose.hasNaN()) << "a known view has no pose Jacobian";
+            continue;
+        }
+        Matrix26d numericPose;
+        for (int k = 0; k < 6; ++k)
+        {
+            const Vector6d h = kStep * Vector6d::Unit(k);
+            ViewAtPose vp, vm;
+            const CameraPose plusPose = moved(s.estimated, h), minusPose = moved(s.estimated, -h);
+            vp.set(s.view, plusPose);
+            vm.set(s.view, minusPose);
+            Eigen::Vector2d plus, minus;
+            ASSERT_TRUE(lineObservation(vp, plusPose, L, end0, end1, plus));
+            ASSERT_TRUE(lineObservation(vm, minusPose, L, end0, end1, minus));
+            numericPose.col(k) = (plus - minus) / (2 * kStep);
+        }
+        EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
+    }
+}
+
+INSTANTIATE_TEST_CASE_P(Roles, Tripose_ObservationJacobians,
+                        testing::Values((int)KnownView, (int)EstimatedCamera, (int)MountedCamera));
+
+} // namespace
+} // namespace opencv_test
