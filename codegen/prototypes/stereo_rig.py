@@ -307,7 +307,7 @@ class System:
 
 
 def build_system(rig: Rig, features: List[Feature], observations) -> System:
-    R0, t0 = rig.R12.ravel(), rig.t12
+    R12, t12 = rig.R12.ravel(), rig.t12
     rows, rhs = [], []
 
     def add(block_rows, block_b):
@@ -329,23 +329,24 @@ def build_system(rig: Rig, features: List[Feature], observations) -> System:
             if o[2] is not None:
                 r = kernel("point_rows", "pointRows")(
                     x1=x1, x2=x2, x3=apply_similarity(n[2], o[2]), n1=n[0], n2=n[1], n3=n[2],
-                    R0=R0, t0=t0)["rows"].reshape(4, 12)
+                    R12=R12, t12=t12)["rows"].reshape(4, 12)
                 add(r, np.zeros(4))
             if o[3] is not None:
                 out = kernel("rig_rows", "rigPointRows")(
                     x1=x1, x2=x2, x4=apply_similarity(n[3], o[3]), n1=n[0], n2=n[1], n4=n[3],
-                    R0=R0, t0=t0)
+                    R12=R12, t12=t12)
                 add(out["rows"].reshape(4, 12), out["b"])
     for i, f in enumerate(features):
         if f.kind != "line":
             continue
         o = observations[i]
-        q = kernel("line_rows", "lineNullSpace")(l1=o[0], l2=o[1], R0=R0, t0=t0)
+        q = kernel("line_rows", "lineNullSpace")(l1=o[0], l2=o[1], R12=R12, t12=t12)
         if o[2] is not None:
             r = kernel("line_rows", "lineRows")(qa=q["qa"], qb=q["qb"], l3=o[2])["rows"]
             add(r.reshape(2, 12), np.zeros(2))
         if o[3] is not None:
-            out = kernel("rig_rows", "rigLineRows")(qa=q["qa"], qb=q["qb"], l4=o[3], R0=R0, t0=t0)
+            out = kernel("rig_rows", "rigLineRows")(qa=q["qa"], qb=q["qb"], l4=o[3],
+                                                    R12=R12, t12=t12)
             add(out["rows"].reshape(2, 12), out["b"])
     d = kernel_dimension(features)
     return System(np.vstack(rows), np.concatenate(rhs), d, solution_count(features, d))

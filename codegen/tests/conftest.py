@@ -58,13 +58,13 @@ class Scene:
     """Three calibrated views, view 1 = [I|0], generic points and lines in front of them."""
 
     def __init__(self, rng):
-        self.R0, self.t0 = random_rotation(rng), rng.normal(size=3)
+        self.R12, self.t12 = random_rotation(rng), rng.normal(size=3)
         self.R, self.t = random_rotation(rng), rng.normal(size=3)
         # Keep the structure in front of all cameras: shift it along each optical axis.
         self.rng = rng
 
     def cameras(self):
-        return [(np.eye(3), np.zeros(3)), (self.R0, self.t0), (self.R, self.t)]
+        return [(np.eye(3), np.zeros(3)), (self.R12, self.t12), (self.R, self.t)]
 
     def point(self):
         X = self.rng.normal(size=3) + np.array([0, 0, 6.0])

@@ -3,9 +3,9 @@ import numpy as np
 from conftest import Scene, kernel, pose_vector
 
 
-def null_space_planes(l1, l2, R0, t0):
+def null_space_planes(l1, l2, R12, t12):
     pi1 = np.concatenate([l1, [0.0]])
-    pi2 = np.concatenate([R0.T @ l2, [t0 @ l2]])
+    pi2 = np.concatenate([R12.T @ l2, [t12 @ l2]])
     return np.vstack([pi1, pi2])
 
 
@@ -24,12 +24,12 @@ def test_line_null_space_is_orthonormal_basis_of_the_null_space(rng):
     null_space = kernel("line_rows", "lineNullSpace")
     for _ in range(50):
         l1, l2 = rng.normal(size=3), rng.normal(size=3)
-        R0 = np.linalg.qr(rng.normal(size=(3, 3)))[0]
-        t0 = rng.normal(size=3)
-        out = null_space(l1=l1, l2=l2, R0=R0.ravel(), t0=t0)
+        R12 = np.linalg.qr(rng.normal(size=(3, 3)))[0]
+        t12 = rng.normal(size=3)
+        out = null_space(l1=l1, l2=l2, R12=R12.ravel(), t12=t12)
         Q = np.vstack([out["qa"], out["qb"]]).T
         np.testing.assert_allclose(Q.T @ Q, np.eye(2), atol=1e-14)
-        P = null_space_planes(l1, l2, R0, t0)
+        P = null_space_planes(l1, l2, R12, t12)
         np.testing.assert_allclose(P @ Q, 0, atol=1e-14 * np.abs(P).max())
         # Same subspace as the SVD null space (the Householder Q spans it too).
         reference = np.linalg.svd(P)[2][2:].T
@@ -42,7 +42,7 @@ def test_exact_line_rows_vanish_on_true_pose(rng):
     for _ in range(20):
         scene = Scene(rng)
         l1, l2, l3 = scene.line()
-        out = null_space(l1=l1, l2=l2, R0=scene.R0.ravel(), t0=scene.t0)
+        out = null_space(l1=l1, l2=l2, R12=scene.R12.ravel(), t12=scene.t12)
         rows = line_rows(qa=out["qa"], qb=out["qb"], l3=l3)["rows"].reshape(2, 12)
         v = pose_vector(scene.R, scene.t)
         assert np.linalg.matrix_rank(rows, tol=1e-8) == 2

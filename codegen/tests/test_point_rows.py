@@ -11,25 +11,26 @@ def test_factored_form_equals_normalized_tensor_contraction():
     k = Kernel(name="reference", doc="")
     x1, x2, x3 = (sympy.symbols(f"x{i}_0:2", real=True) for i in (1, 2, 3))
     n1, n2, n3 = (sympy.symbols(f"s{i} cx{i} cy{i}", positive=True) for i in (1, 2, 3))
-    R0 = sympy.Matrix(3, 3, sympy.symbols("R0_0:9", real=True))
-    t0 = sympy.Matrix(sympy.symbols("t0_0:3", real=True))
+    R12 = sympy.Matrix(3, 3, sympy.symbols("R12_0:9", real=True))
+    t12 = sympy.Matrix(sympy.symbols("t12_0:3", real=True))
     v = sympy.symbols("v0:12", real=True)
-    factored = spec.factored_equations(k, x1, x2, x3, n1, n2, n3, R0, t0, v)
+    factored = spec.factored_equations(k, x1, x2, x3, n1, n2, n3, R12, t12, v)
     lets = {}
     for s, e in k.lets:
         lets[s] = e.xreplace(lets)
-    That = spec.normalized_tensor(spec.trifocal_tensor(R0, t0, v), spec.similarity(n1, inverse=True),
+    That = spec.normalized_tensor(spec.trifocal_tensor(R12, t12, v),
+                                  spec.similarity(n1, inverse=True),
                                   spec.similarity(n2), spec.similarity(n3))
     literal = spec.trilinear_equations(x1, x2, x3, That)
     for f, l in zip(factored, literal):
         assert sympy.expand(f.xreplace(lets) - l) == 0
 
 
-def trilinear_matrix(x1h, x2h, x3h, n1, n2, n3, R0, t0, R, t):
-    """E = [x^2]x G ((R0 x1) t^T - t0 (R x1)^T) H^T [x^3]x, x1 = F^-1 x^1 (homogeneous)."""
+def trilinear_matrix(x1h, x2h, x3h, n1, n2, n3, R12, t12, R, t):
+    """E = [x^2]x G ((R12 x1) t^T - t12 (R x1)^T) H^T [x^3]x, x1 = F^-1 x^1 (homogeneous)."""
     F, G, H = similarity(n1), similarity(n2), similarity(n3)
     x1 = np.linalg.solve(F, np.append(x1h, 1.0))
-    M = np.outer(R0 @ x1, t) - np.outer(t0, R @ x1)
+    M = np.outer(R12 @ x1, t) - np.outer(t12, R @ x1)
     return skew(np.append(x2h, 1.0)) @ G @ M @ H.T @ skew(np.append(x3h, 1.0))
 
 
@@ -42,15 +43,16 @@ def test_point_rows_equal_normalized_trilinear_matrix_entries(rng):
     for _ in range(20):
         x1, x2, x3 = rng.normal(size=2), rng.normal(size=2), rng.normal(size=2)
         n1, n2, n3 = (random_similarity(rng) for _ in range(3))
-        R0, t0 = rng.normal(size=(3, 3)), rng.normal(size=3)
-        rows = point_rows(x1=x1, x2=x2, x3=x3, n1=n1, n2=n2, n3=n3, R0=R0.ravel(), t0=t0)["rows"]
+        R12, t12 = rng.normal(size=(3, 3)), rng.normal(size=3)
+        rows = point_rows(x1=x1, x2=x2, x3=x3, n1=n1, n2=n2, n3=n3,
+                          R12=R12.ravel(), t12=t12)["rows"]
         rows = rows.reshape(4, 12)
         # Entry j of each row is the equation at v = e_j (the equations are linear in v).
         for j in range(12):
             e = np.zeros(12)
             e[j] = 1.0
             R, t = e[:9].reshape(3, 3).T, e[9:]
-            E = trilinear_matrix(x1, x2, x3, n1, n2, n3, R0, t0, R, t)
+            E = trilinear_matrix(x1, x2, x3, n1, n2, n3, R12, t12, R, t)
             expected = [-E[1, 1], E[1, 0], E[0, 1], -E[0, 0]]  # eqs. (9)-(12)
             np.testing.assert_allclose(rows[:, j], expected, rtol=1e-12, atol=1e-12 * np.abs(E).max())
 
@@ -62,7 +64,7 @@ def exact_point_rows(rng, scene):
     ns = [random_similarity(rng) for _ in range(3)]
     xh = [n[0] * (x - n[1:]) for x, n in zip(xs, ns)]
     rows = point_rows(x1=xh[0], x2=xh[1], x3=xh[2], n1=ns[0], n2=ns[1], n3=ns[2],
-                      R0=scene.R0.ravel(), t0=scene.t0)["rows"]
+                      R12=scene.R12.ravel(), t12=scene.t12)["rows"]
     return rows.reshape(4, 12)
 
 
@@ -86,7 +88,7 @@ def test_kernel_dimension_is_twelve_minus_two_per_feature(rng):
         A = [exact_point_rows(rng, scene) for _ in range(points)]
         for _ in range(lines):
             l1, l2, l3 = scene.line()
-            q = null_space(l1=l1, l2=l2, R0=scene.R0.ravel(), t0=scene.t0)
+            q = null_space(l1=l1, l2=l2, R12=scene.R12.ravel(), t12=scene.t12)
             A.append(line_rows(qa=q["qa"], qb=q["qb"], l3=l3)["rows"].reshape(2, 12))
         A = np.vstack(A)
         s = np.linalg.svd(A, compute_uv=False)

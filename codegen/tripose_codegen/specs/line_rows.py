@@ -1,13 +1,13 @@
 """Line triplets (paper Sec. III-A): two rows of A per line, and the null space they need.
 
-Derivation. The back-projected planes are pi1 = [l1; 0], pi2 = [R0^T l2; t0^T l2] and
+Derivation. The back-projected planes are pi1 = [l1; 0], pi2 = [R12^T l2; t12^T l2] and
 pi3 = [R^T l3; t^T l3]; M = [pi1 pi2 pi3] has rank 2. The QR (Householder) elimination of the two
 known columns leaves the two scalars q^T pi3 for q in an orthonormal basis {qa, qb} of the null
 space of [pi1 pi2]^T (the last two columns of Q). Each row of A is the gradient of q^T pi3 with
 respect to v = [r1; r2; r3; t]. Any orthonormal basis of that null space gives the same rows up to
 a 2x2 rotation, hence the same A^T A and the same least-squares solution; lineNullSpace builds
 one in closed form instead of running the Householder steps:
-  n1 = l1, n2 = R0^T l2, d2 = t0.l2, d = n1 x n2 (direction of the 3D line), m = n1 x d,
+  n1 = l1, n2 = R12^T l2, d2 = t12.l2, d = n1 x n2 (direction of the 3D line), m = n1 x d,
   qa = [d; 0] / |d|,  qb = [d2 m; |d|^2] / (|d| sqrt(d2^2 |n1|^2 + |d|^2)),
 using n2.m = -|d|^2 and |m| = |n1| |d|.
 """
@@ -53,11 +53,11 @@ def line_null_space_kernel() -> Kernel:
         name="lineNullSpace",
         doc="""
         An orthonormal basis {qa, qb} of the null space of [pi1 pi2]^T, where
-        pi1 = [l1; 0] and pi2 = [R0^T l2; t0^T l2] are the planes back-projected from views 1 and 2
-        (the two homogeneous points of their 3D line that lineRows needs).
+        pi1 = [l1; 0] and pi2 = [R12^T l2; t12^T l2] are the planes back-projected from views 1
+        and 2 (the two homogeneous points of their 3D line that lineRows needs).
 
         Closed form (equivalent to the last two columns of the Householder Q up to a 2x2
-        rotation, which leaves A^T A unchanged): with n1 = l1, n2 = R0^T l2, d2 = t0.l2,
+        rotation, which leaves A^T A unchanged): with n1 = l1, n2 = R12^T l2, d2 = t12.l2,
         d = n1 x n2 and m = n1 x d,
             qa = [d; 0] / |d|,   qb = [d2 m; |d|^2] / (|d| sqrt(d2^2 |n1|^2 + |d|^2)).
         qa is the line's point at infinity. Degenerate (division by zero) when d = 0, i.e. when
@@ -67,11 +67,11 @@ def line_null_space_kernel() -> Kernel:
     )
     l1 = sympy.Matrix(k.input("l1", 3, "the line in view 1, calibrated homogeneous (a, b, c)"))
     l2 = sympy.Matrix(k.input("l2", 3, "the line in view 2, calibrated homogeneous (a, b, c)"))
-    R0 = matrix(k.input("R0", 9, "rotation of view 2, row-major"), 3, 3)
-    t0 = sympy.Matrix(k.input("t0", 3, "translation of view 2"))
+    R12 = matrix(k.input("R12", 9, "rotation of view 2, row-major"), 3, 3)
+    t12 = sympy.Matrix(k.input("t12", 3, "translation of view 2"))
     n1 = l1
-    n2 = (R0.T * l2).applyfunc(k.let)
-    d2 = k.let(t0.dot(l2))
+    n2 = (R12.T * l2).applyfunc(k.let)
+    d2 = k.let(t12.dot(l2))
     d = n1.cross(n2).applyfunc(k.let)
     m = n1.cross(d).applyfunc(k.let)
     dd = k.let(d.dot(d))

@@ -1,6 +1,6 @@
 """Point triplets (paper Sec. III-B): four rows of A per point, eqs. (9)-(12).
 
-Derivation. With P1 = [I|0], P2 = [a1 a2 a3 a4] = [R0|t0] and P3 = [b1 b2 b3 b4] = [R|t], the
+Derivation. With P1 = [I|0], P2 = [a1 a2 a3 a4] = [R12|t12] and P3 = [b1 b2 b3 b4] = [R|t], the
 trifocal tensor is T_i^{jk} = a_i^j b_4^k - a_4^j b_i^k, linear in v = [r1; r2; r3; t]. Hartley
 normalization x^ = F x1, G x2, H x3 transforms it by eq. (8),
     T^_i^{jk} = (F^-1)^r_i G^j_s H^k_t T_r^{st},
@@ -24,9 +24,9 @@ def similarity(n, inverse=False) -> sympy.Matrix:
     return sympy.Matrix([[s, 0, -s * cx], [0, s, -s * cy], [0, 0, 1]])
 
 
-def trifocal_tensor(R0: sympy.Matrix, t0: sympy.Matrix, v):
+def trifocal_tensor(R12: sympy.Matrix, t12: sympy.Matrix, v):
     """T[r][s][t] = a_r^s b_4^t - a_4^s b_r^t (zero-based indices, r = 0..2)."""
-    a = [R0[:, 0], R0[:, 1], R0[:, 2], t0]
+    a = [R12[:, 0], R12[:, 1], R12[:, 2], t12]
     b = pose_columns(v)
     return [[[a[r][s] * b[3][t] - a[3][s] * b[r][t] for t in range(3)] for s in range(3)]
             for r in range(3)]
@@ -55,10 +55,10 @@ def trilinear_equations(x1, x2, x3, That):
     return equations
 
 
-def factored_equations(k, x1, x2, x3, n1, n2, n3, R0, t0, v):
+def factored_equations(k, x1, x2, x3, n1, n2, n3, R12, t12, v):
     """Eqs. (9)-(12) in the factored form the kernel evaluates (tests check that it equals
     trilinear_equations(normalized_tensor(...)) identically):
-        e(a, b) = (G^T alpha_a)^T M(F^-1 x^1) (H^T beta_b),  M(x) = (R0 x) t^T - t0 (R x)^T,
+        e(a, b) = (G^T alpha_a)^T M(F^-1 x^1) (H^T beta_b),  M(x) = (R12 x) t^T - t12 (R x)^T,
     with alpha_a = e_a - x^2^a e_3, beta_b = e_b - x^3^b e_3 (zero-based a, b in {0, 1}).
     Eq. (8) gives sum_k x^1^k T^_k = G (sum_r x1^r T_r) H^T with x1 = F^-1 x^1, and
     sum_r x1^r T_r = M(x1); the bracket of eqs. (9)-(12) is alpha_a^T (.) beta_b.
@@ -67,17 +67,17 @@ def factored_equations(k, x1, x2, x3, n1, n2, n3, R0, t0, v):
     R = sympy.Matrix.hstack(r1, r2, r3)
     X1 = similarity(n1, inverse=True) * sympy.Matrix(list(x1) + [1])
     X1 = X1.applyfunc(k.let)
-    R0x1 = (R0 * X1).applyfunc(k.let)
+    R12x1 = (R12 * X1).applyfunc(k.let)
     G, H = similarity(n2), similarity(n3)
     e = sympy.eye(3)
     g = [(G.T * (e[:, a] - x2[a] * e[:, 2])).applyfunc(k.let) for a in range(2)]
     h = [(H.T * (e[:, b] - x3[b] * e[:, 2])).applyfunc(k.let) for b in range(2)]
     equations = []
     for a in range(2):
-        gR0x1 = k.let(g[a].dot(R0x1))
-        gt0 = k.let(g[a].dot(t0))
+        gR12x1 = k.let(g[a].dot(R12x1))
+        gt12 = k.let(g[a].dot(t12))
         for b in range(2):
-            equations.append(gR0x1 * h[b].dot(t) - gt0 * h[b].dot(R * X1))
+            equations.append(gR12x1 * h[b].dot(t) - gt12 * h[b].dot(R * X1))
     return equations
 
 
@@ -87,15 +87,15 @@ def point_rows_kernel() -> Kernel:
         doc="""
         The four rows of A contributed by one point triplet (paper Sec. III-B, eqs. 8-12).
 
-        With the trifocal tensor T_i^{jk} = a_i^j b_4^k - a_4^j b_i^k of P2 = [a1 a2 a3 a4] = [R0|t0]
-        and P3 = [b1 b2 b3 b4] = [R|t], and the normalized tensor (eq. 8)
+        With P2 = [a1 a2 a3 a4] = [R12|t12], P3 = [b1 b2 b3 b4] = [R|t], the trifocal tensor
+        T_i^{jk} = a_i^j b_4^k - a_4^j b_i^k and the normalized tensor (eq. 8)
             T^_i^{jk} = (F^-1)^r_i G^j_s H^k_t T_r^{st},
         row e (e = 0..3 for eqs. 9..12, (a, b) = (1,1), (1,2), (2,1), (2,2)) holds the coefficients
         on v = [r1; r2; r3; t] of
             x^1^k (x^2^a x^3^b T^_k^33 - x^3^b T^_k^a3 - x^2^a T^_k^3b + T^_k^ab) = 0,
         x^_j the normalized points with third coordinate 1. Equivalently, with
-        M(x) = (R0 x) t^T - t0 (R x)^T and x1 = F^-1 x^1 (homogeneous), the equations are the entries
-        -E(2,2), E(2,1), E(1,2), -E(1,1) of E = [x^2]x G M(x1) H^T [x^3]x (1-based).
+        M(x) = (R12 x) t^T - t12 (R x)^T and x1 = F^-1 x^1 (homogeneous), the equations are the
+        entries -E(2,2), E(2,1), E(1,2), -E(1,1) of E = [x^2]x G M(x1) H^T [x^3]x (1-based).
         With exact data the four rows have rank 2.
         """,
     )
@@ -105,11 +105,11 @@ def point_rows_kernel() -> Kernel:
     n1 = k.input("n1", 3, "normalizing similarity F of view 1 as (s, cx, cy)")
     n2 = k.input("n2", 3, "normalizing similarity G of view 2 as (s, cx, cy)")
     n3 = k.input("n3", 3, "normalizing similarity H of view 3 as (s, cx, cy)")
-    R0 = matrix(k.input("R0", 9, "rotation of view 2, row-major"), 3, 3)
-    t0 = sympy.Matrix(k.input("t0", 3, "translation of view 2"))
+    R12 = matrix(k.input("R12", 9, "rotation of view 2, row-major"), 3, 3)
+    t12 = sympy.Matrix(k.input("t12", 3, "translation of view 2"))
     v = sympy.symbols("v0:12", real=True)
     rows = []
-    for equation in factored_equations(k, x1, x2, x3, n1, n2, n3, R0, t0, v):
+    for equation in factored_equations(k, x1, x2, x3, n1, n2, n3, R12, t12, v):
         rows += [equation.diff(vj) for vj in v]
     k.output("rows", rows, "4x12 row-major, eqs. (9)-(12)")
     return k

@@ -87,14 +87,14 @@ TEST(Tripose_GeneratedKernels, lineNullSpace_matches_householder_qr)
     cv::RNG rng(101);
     for (int trial = 0; trial < 200; ++trial)
     {
-        const Vector3d l1 = randomVector<3>(rng), l2 = randomVector<3>(rng), t0 = randomVector<3>(rng);
-        const RowMatrix3d R0 = randomRotation(rng);
+        const Vector3d l1 = randomVector<3>(rng), l2 = randomVector<3>(rng), t12 = randomVector<3>(rng);
+        const RowMatrix3d R12 = randomRotation(rng);
         Vector4d qa, qb;
-        lineNullSpace(l1.data(), l2.data(), R0.data(), t0.data(), qa.data(), qb.data());
+        lineNullSpace(l1.data(), l2.data(), R12.data(), t12.data(), qa.data(), qb.data());
 
         Eigen::Matrix<double, 4, 2> planes;
         planes.col(0) << l1, 0;
-        planes.col(1) << R0.transpose() * l2, t0.dot(l2);
+        planes.col(1) << R12.transpose() * l2, t12.dot(l2);
         // The paper's elimination: the last two columns of the Householder Q span the same space.
         const Eigen::Matrix4d Q = Eigen::HouseholderQR<Eigen::Matrix<double, 4, 2>>(planes).householderQ();
         const Eigen::Matrix4d expected = Q.rightCols<2>() * Q.rightCols<2>().transpose();
@@ -144,11 +144,11 @@ TEST(Tripose_GeneratedKernels, pointRows_equal_normalized_trilinear_matrix)
             x[j] = randomVector<2>(rng);
             n[j] << rng.uniform(0.5, 3.0), normal(rng), normal(rng);
         }
-        const RowMatrix3d R0 = randomRotation(rng);
-        const Vector3d t0 = randomVector<3>(rng);
+        const RowMatrix3d R12 = randomRotation(rng);
+        const Vector3d t12 = randomVector<3>(rng);
         Eigen::Matrix<double, 4, 12, Eigen::RowMajor> rows;
         pointRows(x[0].data(), x[1].data(), x[2].data(), n[0].data(), n[1].data(), n[2].data(),
-                  R0.data(), t0.data(), rows.data());
+                  R12.data(), t12.data(), rows.data());
 
         const Matrix3d F = similarity(n[0]), G = similarity(n[1]), H = similarity(n[2]);
         const Vector3d x1 = F.inverse() * x[0].homogeneous();
@@ -158,8 +158,8 @@ TEST(Tripose_GeneratedKernels, pointRows_equal_normalized_trilinear_matrix)
             v[k] = 1;
             const Matrix3d R = Eigen::Map<const Matrix3d>(v.data());
             const Vector3d t = v.tail<3>();
-            // E = [x^2]x G ((R0 x1) t^T - t0 (R x1)^T) H^T [x^3]x; eqs. (9)-(12) are -E11, E10, E01, -E00.
-            const Matrix3d M = (Matrix3d(R0) * x1) * t.transpose() - t0 * (R * x1).transpose();
+            // E = [x^2]x G ((R12 x1) t^T - t12 (R x1)^T) H^T [x^3]x; eqs. (9)-(12) are -E11, E10, E01, -E00.
+            const Matrix3d M = (Matrix3d(R12) * x1) * t.transpose() - t12 * (R * x1).transpose();
             const Matrix3d E = skew(x[1].homogeneous()) * G * M * H.transpose() * skew(x[2].homogeneous());
             const Vector4d expected(-E(1, 1), E(1, 0), E(0, 1), -E(0, 0));
             expectNear(rows.col(k), expected, std::max(1.0, E.cwiseAbs().maxCoeff()), "point row");
@@ -172,10 +172,10 @@ TEST(Tripose_GeneratedKernels, pointRows_have_rank_two_and_vanish_on_true_pose)
     cv::RNG rng(104);
     for (int trial = 0; trial < 100; ++trial)
     {
-        const Matrix3d R0 = randomRotation(rng), R = randomRotation(rng);
-        const Vector3d t0 = randomVector<3>(rng), t = randomVector<3>(rng);
+        const Matrix3d R12 = randomRotation(rng), R = randomRotation(rng);
+        const Vector3d t12 = randomVector<3>(rng), t = randomVector<3>(rng);
         const Vector3d X = randomVector<3>(rng) + Vector3d(0, 0, 6);
-        const Vector3d X2 = R0 * X + t0, X3 = R * X + t;
+        const Vector3d X2 = R12 * X + t12, X3 = R * X + t;
         const Eigen::Vector2d p[3] = { X.hnormalized(), X2.hnormalized(), X3.hnormalized() };
         Eigen::Vector2d xh[3];
         Vector3d n[3];
@@ -184,10 +184,10 @@ TEST(Tripose_GeneratedKernels, pointRows_have_rank_two_and_vanish_on_true_pose)
             n[j] << rng.uniform(0.5, 3.0), normal(rng), normal(rng);
             xh[j] = n[j][0] * (p[j] - n[j].tail<2>());
         }
-        const RowMatrix3d R0r = R0;
+        const RowMatrix3d R12r = R12;
         Eigen::Matrix<double, 4, 12, Eigen::RowMajor> rows;
         pointRows(xh[0].data(), xh[1].data(), xh[2].data(), n[0].data(), n[1].data(), n[2].data(),
-                  R0r.data(), t0.data(), rows.data());
+                  R12r.data(), t12.data(), rows.data());
         const Eigen::Vector4d s = Eigen::JacobiSVD<Eigen::Matrix<double, 4, 12>>(rows).singularValues();
         EXPECT_GT(s[1], 1e-6 * s[0]);
         EXPECT_LT(s[2], 1e-12 * s[0]);

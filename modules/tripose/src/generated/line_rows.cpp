@@ -16,14 +16,14 @@ namespace cv {
 namespace tripose {
 namespace generated {
 
-void lineNullSpace(const double* l1, const double* l2, const double* R0, const double* t0,
+void lineNullSpace(const double* l1, const double* l2, const double* R12, const double* t12,
         double* qa, double* qb)
 {
     // Operation count: 40 mul, 19 add, 2 div, 2 sqrt (total 63).
-    const double _tmp0 = R0[0]*l2[0] + R0[3]*l2[1] + R0[6]*l2[2];
-    const double _tmp1 = R0[1]*l2[0] + R0[4]*l2[1] + R0[7]*l2[2];
-    const double _tmp2 = R0[2]*l2[0] + R0[5]*l2[1] + R0[8]*l2[2];
-    const double _tmp3 = l2[0]*t0[0] + l2[1]*t0[1] + l2[2]*t0[2];
+    const double _tmp0 = R12[0]*l2[0] + R12[3]*l2[1] + R12[6]*l2[2];
+    const double _tmp1 = R12[1]*l2[0] + R12[4]*l2[1] + R12[7]*l2[2];
+    const double _tmp2 = R12[2]*l2[0] + R12[5]*l2[1] + R12[8]*l2[2];
+    const double _tmp3 = l2[0]*t12[0] + l2[1]*t12[1] + l2[2]*t12[2];
     const double _tmp4 = -_tmp1*l1[2] + _tmp2*l1[1];
     const double _tmp5 = _tmp0*l1[2] - _tmp2*l1[0];
     const double _tmp6 = -_tmp0*l1[1] + _tmp1*l1[0];

@@ -23,11 +23,11 @@ namespace tripose {
 namespace generated {
 
 /** An orthonormal basis {qa, qb} of the null space of [pi1 pi2]^T, where
-pi1 = [l1; 0] and pi2 = [R0^T l2; t0^T l2] are the planes back-projected from views 1 and 2
-(the two homogeneous points of their 3D line that lineRows needs).
+pi1 = [l1; 0] and pi2 = [R12^T l2; t12^T l2] are the planes back-projected from views 1
+and 2 (the two homogeneous points of their 3D line that lineRows needs).
 
 Closed form (equivalent to the last two columns of the Householder Q up to a 2x2
-rotation, which leaves A^T A unchanged): with n1 = l1, n2 = R0^T l2, d2 = t0.l2,
+rotation, which leaves A^T A unchanged): with n1 = l1, n2 = R12^T l2, d2 = t12.l2,
 d = n1 x n2 and m = n1 x d,
     qa = [d; 0] / |d|,   qb = [d2 m; |d|^2] / (|d| sqrt(d2^2 |n1|^2 + |d|^2)).
 qa is the line's point at infinity. Degenerate (division by zero) when d = 0, i.e. when
@@ -36,12 +36,12 @@ triangulated; callers reject such lines before calling.
 
 @param l1 input, 3 doubles: the line in view 1, calibrated homogeneous (a, b, c)
 @param l2 input, 3 doubles: the line in view 2, calibrated homogeneous (a, b, c)
-@param R0 input, 9 doubles: rotation of view 2, row-major
-@param t0 input, 3 doubles: translation of view 2
+@param R12 input, 9 doubles: rotation of view 2, row-major
+@param t12 input, 3 doubles: translation of view 2
 @param qa output, 4 doubles: unit 4-vector, the point at infinity of the line
 @param qb output, 4 doubles: unit 4-vector orthogonal to qa
 */
-void lineNullSpace(const double* l1, const double* l2, const double* R0, const double* t0,
+void lineNullSpace(const double* l1, const double* l2, const double* R12, const double* t12,
         double* qa, double* qb);
 
 /** The two rows of A contributed by one line triplet (paper Sec. III-A, eqs. 1-3).

@@ -16,22 +16,22 @@ namespace tripose {
 namespace generated {
 
 void pointRows(const double* x1, const double* x2, const double* x3, const double* n1,
-        const double* n2, const double* n3, const double* R0, const double* t0, double* rows)
+        const double* n2, const double* n3, const double* R12, const double* t12, double* rows)
 {
     // Operation count: 44 mul, 16 add, 1 div (total 61).
     const double _tmp0 = 1.0/n1[0];
     const double _tmp1 = _tmp0*x1[0] + n1[1];
     const double _tmp2 = _tmp0*x1[1] + n1[2];
-    const double _tmp3 = R0[0]*_tmp1 + R0[1]*_tmp2 + R0[2];
-    const double _tmp4 = R0[3]*_tmp1 + R0[4]*_tmp2 + R0[5];
-    const double _tmp5 = R0[6]*_tmp1 + R0[7]*_tmp2 + R0[8];
+    const double _tmp3 = R12[0]*_tmp1 + R12[1]*_tmp2 + R12[2];
+    const double _tmp4 = R12[3]*_tmp1 + R12[4]*_tmp2 + R12[5];
+    const double _tmp5 = R12[6]*_tmp1 + R12[7]*_tmp2 + R12[8];
     const double _tmp6 = -n2[0]*n2[1] - x2[0];
     const double _tmp7 = -n2[0]*n2[2] - x2[1];
     const double _tmp8 = -n3[0]*n3[1] - x3[0];
     const double _tmp9 = -n3[0]*n3[2] - x3[1];
     const double _tmp10 = _tmp3*n2[0] + _tmp5*_tmp6;
     const double _tmp11 = _tmp10*n3[0];
-    const double _tmp12 = _tmp6*t0[2] + n2[0]*t0[0];
+    const double _tmp12 = _tmp6*t12[2] + n2[0]*t12[0];
     const double _tmp13 = _tmp12*n3[0];
     const double _tmp14 = -_tmp1*_tmp13;
     const double _tmp15 = _tmp12*_tmp8;
@@ -40,7 +40,7 @@ void pointRows(const double* x1, const double* x2, const double* x3, const doubl
     const double _tmp18 = _tmp12*_tmp9;
     const double _tmp19 = _tmp4*n2[0] + _tmp5*_tmp7;
     const double _tmp20 = _tmp19*n3[0];
-    const double _tmp21 = _tmp7*t0[2] + n2[0]*t0[1];
+    const double _tmp21 = _tmp7*t12[2] + n2[0]*t12[1];
     const double _tmp22 = _tmp21*n3[0];
     const double _tmp23 = -_tmp1*_tmp22;
     const double _tmp24 = _tmp21*_tmp8;

@@ -15,14 +15,14 @@ namespace cv {
 namespace tripose {
 namespace generated {
 
-void rigLineRows(const double* qa, const double* qb, const double* l4, const double* R0,
-        const double* t0, double* rows, double* b)
+void rigLineRows(const double* qa, const double* qb, const double* l4, const double* R12,
+        const double* t12, double* rows, double* b)
 {
     // Operation count: 38 mul, 8 add, 0 div (total 46).
-    const double _tmp0 = R0[0]*l4[0] + R0[3]*l4[1] + R0[6]*l4[2];
-    const double _tmp1 = R0[1]*l4[0] + R0[4]*l4[1] + R0[7]*l4[2];
-    const double _tmp2 = R0[2]*l4[0] + R0[5]*l4[1] + R0[8]*l4[2];
-    const double _tmp3 = l4[0]*t0[0] + l4[1]*t0[1] + l4[2]*t0[2];
+    const double _tmp0 = R12[0]*l4[0] + R12[3]*l4[1] + R12[6]*l4[2];
+    const double _tmp1 = R12[1]*l4[0] + R12[4]*l4[1] + R12[7]*l4[2];
+    const double _tmp2 = R12[2]*l4[0] + R12[5]*l4[1] + R12[8]*l4[2];
+    const double _tmp3 = l4[0]*t12[0] + l4[1]*t12[1] + l4[2]*t12[2];
     rows[0] = _tmp0*qa[0];
     rows[1] = _tmp1*qa[0];
     rows[2] = _tmp2*qa[0];
@@ -52,30 +52,30 @@ void rigLineRows(const double* qa, const double* qb, const double* l4, const dou
 }
 
 void rigPointRows(const double* x1, const double* x2, const double* x4, const double* n1,
-        const double* n2, const double* n4, const double* R0, const double* t0, double* rows,
+        const double* n2, const double* n4, const double* R12, const double* t12, double* rows,
         double* b)
 {
     // Operation count: 88 mul, 24 add, 1 div (total 113).
     const double _tmp0 = 1.0/n1[0];
     const double _tmp1 = _tmp0*x1[0] + n1[1];
     const double _tmp2 = _tmp0*x1[1] + n1[2];
-    const double _tmp3 = R0[0]*_tmp1 + R0[1]*_tmp2 + R0[2];
-    const double _tmp4 = R0[3]*_tmp1 + R0[4]*_tmp2 + R0[5];
-    const double _tmp5 = R0[6]*_tmp1 + R0[7]*_tmp2 + R0[8];
+    const double _tmp3 = R12[0]*_tmp1 + R12[1]*_tmp2 + R12[2];
+    const double _tmp4 = R12[3]*_tmp1 + R12[4]*_tmp2 + R12[5];
+    const double _tmp5 = R12[6]*_tmp1 + R12[7]*_tmp2 + R12[8];
     const double _tmp6 = -n2[0]*n2[1] - x2[0];
     const double _tmp7 = -n2[0]*n2[2] - x2[1];
     const double _tmp8 = -n4[0]*n4[1] - x4[0];
     const double _tmp9 = -n4[0]*n4[2] - x4[1];
-    const double _tmp10 = R0[0]*n4[0] + R0[6]*_tmp8;
-    const double _tmp11 = R0[1]*n4[0] + R0[7]*_tmp8;
-    const double _tmp12 = R0[2]*n4[0] + R0[8]*_tmp8;
-    const double _tmp13 = R0[3]*n4[0] + R0[6]*_tmp9;
-    const double _tmp14 = R0[4]*n4[0] + R0[7]*_tmp9;
-    const double _tmp15 = R0[5]*n4[0] + R0[8]*_tmp9;
-    const double _tmp16 = _tmp8*t0[2] + n4[0]*t0[0];
-    const double _tmp17 = _tmp9*t0[2] + n4[0]*t0[1];
+    const double _tmp10 = R12[0]*n4[0] + R12[6]*_tmp8;
+    const double _tmp11 = R12[1]*n4[0] + R12[7]*_tmp8;
+    const double _tmp12 = R12[2]*n4[0] + R12[8]*_tmp8;
+    const double _tmp13 = R12[3]*n4[0] + R12[6]*_tmp9;
+    const double _tmp14 = R12[4]*n4[0] + R12[7]*_tmp9;
+    const double _tmp15 = R12[5]*n4[0] + R12[8]*_tmp9;
+    const double _tmp16 = _tmp8*t12[2] + n4[0]*t12[0];
+    const double _tmp17 = _tmp9*t12[2] + n4[0]*t12[1];
     const double _tmp18 = _tmp3*n2[0] + _tmp5*_tmp6;
-    const double _tmp19 = _tmp6*t0[2] + n2[0]*t0[0];
+    const double _tmp19 = _tmp6*t12[2] + n2[0]*t12[0];
     const double _tmp20 = _tmp10*_tmp19;
     const double _tmp21 = _tmp11*_tmp19;
     const double _tmp22 = _tmp12*_tmp19;
@@ -83,7 +83,7 @@ void rigPointRows(const double* x1, const double* x2, const double* x4, const do
     const double _tmp24 = _tmp14*_tmp19;
     const double _tmp25 = _tmp15*_tmp19;
     const double _tmp26 = _tmp4*n2[0] + _tmp5*_tmp7;
-    const double _tmp27 = _tmp7*t0[2] + n2[0]*t0[1];
+    const double _tmp27 = _tmp7*t12[2] + n2[0]*t12[1];
     const double _tmp28 = _tmp10*_tmp27;
     const double _tmp29 = _tmp11*_tmp27;
     const double _tmp30 = _tmp12*_tmp27;
