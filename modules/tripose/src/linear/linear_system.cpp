@@ -10,6 +10,7 @@
 #include "../generated/point_rows.hpp"
 #include "../geometry/triangulation.hpp"
 #include "linear_system.hpp"
+#include "point_normalization.hpp"
 
 namespace cv {
 namespace tripose {
@@ -20,28 +21,6 @@ namespace {
 // Sine of the angle between a view-1 end ray and the plane of view 2 below which the lifted end
 // point is too uncertain to weight a row by.
 constexpr double kGrazingSine = 1e-6;
-
-//! Hartley normalisation of one view: x̂ = s (x - c), centroid at the origin, mean distance √2.
-Eigen::Vector3d normalizingSimilarity(const std::vector<Eigen::Vector2d>& points, const std::vector<int>* indices)
-{
-    const int n = indices ? (int)indices->size() : (int)points.size();
-    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (int k = 0; k < n; ++k)
-        centroid += points[indices ? (*indices)[k] : k];
-    centroid /= std::max(n, 1);
-    double meanDistance = 0;
-    for (int k = 0; k < n; ++k)
-        meanDistance += (points[indices ? (*indices)[k] : k] - centroid).norm();
-    meanDistance /= std::max(n, 1);
-    // A single point (or coincident points) keeps unit scale: only the centring is defined.
-    const double scale = meanDistance > 1e-12 ? std::sqrt(2.0) / meanDistance : 1.0;
-    return Eigen::Vector3d(scale, centroid.x(), centroid.y());
-}
-
-Eigen::Vector2d applySimilarity(const Eigen::Vector3d& n, const Eigen::Vector2d& x)
-{
-    return n(0) * (x - n.tail<2>());
-}
 
 /** Two points of the 3D line of views 1-2, as the null-space pair of the line rows: where the rays
 of the view-1 end points meet the plane of view 2, X = lambda [x; 1], written as q = [x; 1; 1/lambda]
