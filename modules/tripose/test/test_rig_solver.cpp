@@ -439,7 +439,7 @@ TEST(Tripose_RigSolver, noise_one_pixel_ten_points_ten_lines)
     std::nth_element(translation.begin(), translation.begin() + scenes / 2, translation.end());
     std::cout << "[ rig noise] 10P+10L both, 1 px: median rotation error " << rotation[scenes / 2]
               << " deg, median relative translation error " << translation[scenes / 2] << std::endl;
-    EXPECT_LT(rotation[scenes / 2], 5.0);
+    EXPECT_LT(rotation[scenes / 2], 2.0);
 }
 
 } // namespace

@@ -21,7 +21,8 @@ The kernel dimension d and the number of poses that fit exact data come from the
 or fewer than six constraints): no candidate. v = v0 + sum_k c_k e_k with v0 the least-squares
 solution over the leading 12 - d singular directions of A and e_k the last d right singular
 vectors; d = 0 takes v0, d = 1..6 solveAffineKernel(). Each solution's R part is projected onto
-the nearest rotation and t re-estimated by least squares with R fixed. Candidates are ordered by
+the nearest rotation, polished by Gauss-Newton on |A v - b| over SO(3) with t eliminated, and t
+re-estimated by least squares with R fixed. Candidates are ordered by
 their algebraic residual |A v - b|, smallest first; one where exactly one pose fits, up to 2, 4 or 8
 where several do (only reprojection with cheirality can choose among those).
 
