@@ -8,76 +8,13 @@
 
 #include "../generated/line_rows.hpp"
 #include "../generated/point_rows.hpp"
-#include "../geometry/triangulation.hpp"
+#include "line_end_points.hpp"
 #include "linear_system.hpp"
+#include "point_normalization.hpp"
 
 namespace cv {
 namespace tripose {
 namespace detail {
-
-namespace {
-
-// Sine of the angle between a view-1 end ray and the plane of view 2 below which the lifted end
-// point is too uncertain to weight a row by.
-constexpr double kGrazingSine = 1e-6;
-
-//! Hartley normalisation of one view: x̂ = s (x - c), centroid at the origin, mean distance √2.
-Eigen::Vector3d normalizingSimilarity(const std::vector<Eigen::Vector2d>& points, const std::vector<int>* indices)
-{
-    const int n = indices ? (int)indices->size() : (int)points.size();
-    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (int k = 0; k < n; ++k)
-        centroid += points[indices ? (*indices)[k] : k];
-    centroid /= std::max(n, 1);
-    double meanDistance = 0;
-    for (int k = 0; k < n; ++k)
-        meanDistance += (points[indices ? (*indices)[k] : k] - centroid).norm();
-    meanDistance /= std::max(n, 1);
-    // A single point (or coincident points) keeps unit scale: only the centring is defined.
-    const double scale = meanDistance > 1e-12 ? std::sqrt(2.0) / meanDistance : 1.0;
-    return Eigen::Vector3d(scale, centroid.x(), centroid.y());
-}
-
-Eigen::Vector2d applySimilarity(const Eigen::Vector3d& n, const Eigen::Vector2d& x)
-{
-    return n(0) * (x - n.tail<2>());
-}
-
-/** Two points of the 3D line of views 1-2, as the null-space pair of the line rows: where the rays
-of the view-1 end points meet the plane of view 2, X = lambda [x; 1], written as q = [x; 1; 1/lambda]
-(X / lambda). Any two points of the line span the same null space, so exact data gives the same
-rows; this pair makes each row (R x + t / lambda) . l3 = (depth in view 3 / lambda) times the
-distance of the projected end point to l3 (calibrated units), close to a geometric residual.
-
-The depth lambda inherits the noise of l2 amplified by 1 / sin(beta), beta the angle between the
-ray and the plane of view 2, and a depth error moves the projection in view 3 by about sin(alpha)
-times as much, alpha the triangulation angle at X (views 1-2 stand in for views 1-3, unknown
-here). Against the floor of the noise of l3 itself, the row's standard deviation is therefore
-proportional to sqrt(1 + (sin alpha / sin beta)^2): @p weights receives its inverse per row.
-Returns false when a ray is nearly parallel to the plane or meets it behind view 1.
-*/
-bool lineEndPoints(const ViewSet& set, int line, const CameraPose& pose12, Eigen::Vector4d& qa, Eigen::Vector4d& qb,
-                   double weights[2])
-{
-    const Eigen::Vector4d plane2 = backProjectLine(pose12, 1.0, set.views[ViewSet::kView2].calibratedLines[line]);
-    const Eigen::Vector3d centre2 = pose12.centre();
-    Eigen::Vector4d* q[2] = { &qa, &qb };
-    for (int end = 0; end < 2; ++end)
-    {
-        const Eigen::Vector3d ray = set.views[ViewSet::kView1].calibratedLineEnd(line, end).homogeneous();
-        Eigen::Vector3d X;
-        double lambda;
-        if (!intersectRayPlane(Eigen::Vector3d::Zero(), ray, plane2, kGrazingSine, X, lambda))
-            return false;
-        const double sinBeta = std::abs(plane2.head<3>().dot(ray)) / (plane2.head<3>().norm() * ray.norm());
-        *q[end] << ray, 1.0 / lambda;
-        const double sinAlpha = ray.normalized().cross((X - centre2).normalized()).norm();
-        weights[end] = sinBeta / std::sqrt(sinBeta * sinBeta + sinAlpha * sinAlpha);
-    }
-    return true;
-}
-
-} // namespace
 
 bool lineNullSpace(const Eigen::Vector3d& l1, const Eigen::Vector3d& l2, const CameraPose& pose12,
                    Eigen::Vector4d& qa, Eigen::Vector4d& qb)

@@ -1,0 +1,446 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The stereo-rig linear solver (src/linear/rig_solver.hpp) on scenes built here: the support
+// library's generator makes three-view scenes, and the rig needs a fourth view and per-feature
+// visibility at time B. The scenes follow codegen/prototypes/stereo_rig.py, the solver's
+// specification: baseline 0.1-0.5 m roughly along x, cameras within 3 degrees of parallel, features
+// 5-30 m in front of view 1 and inside all four 640x480 images (f = 800 px), the rig moving 0.3-3 m
+// and turning up to 20 degrees between times A and B.
+
+#include "test_precomp.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include "../src/linear/rig_pose_solver.hpp"
+#include "../src/linear/rig_solver.hpp"
+#include "../src/linear/rig_system.hpp"
+
+namespace opencv_test {
+namespace {
+
+using cv::tripose::detail::CameraPose;
+using cv::tripose::detail::FeatureSubset;
+using cv::tripose::detail::Intrinsics;
+using cv::tripose::detail::RigPoseSolver;
+using cv::tripose::detail::View;
+using cv::tripose::detail::ViewSet;
+using cv::tripose::detail::kRigView4;
+using cv::tripose::detail::rigPoseCandidates;
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+const double kFocal = 800, kWidth = 640, kHeight = 480;
+
+//! A success: rotation within 1e-6 rad and translation within 1e-6 of its length.
+const double kTolerance = 1e-6;
+
+enum Kind
+{
+    POINT,
+    LINE
+};
+
+//! A feature of a mix: its kind and the time-B views that see it (views 1 and 2 see every one).
+struct FeatureSpec
+{
+    Kind kind;
+    bool in3, in4;
+};
+
+struct RigMix
+{
+    std::string name;
+    std::vector<FeatureSpec> features;
+    int posesThatFit; //!< 1: the first candidate must be the true pose; more: any candidate.
+};
+
+std::ostream& operator<<(std::ostream& os, const RigMix& m)
+{
+    return os << m.name;
+}
+
+struct SceneRanges
+{
+    double baselineMin = 0.1, baselineMax = 0.5;
+    double depthMin = 5, depthMax = 30;
+    double motionMin = 0.3, motionMax = 3;
+    double turnDegrees = 20;
+};
+
+Vector3d gaussianVector(RNG& rng)
+{
+    return Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
+}
+
+Matrix3d randomTurn(RNG& rng, double maxRadians)
+{
+    return Eigen::AngleAxisd(rng.uniform(0.0, maxRadians), gaussianVector(rng).normalized()).toRotationMatrix();
+}
+
+struct RigScene
+{
+    ViewSet set;
+    CameraPose truth; //!< Pose of view 3.
+    std::vector<CameraPose> cameras; //!< Poses of views 1-4.
+};
+
+bool inAllViews(const RigScene& scene, const Vector3d& X)
+{
+    const Intrinsics& K = scene.set.views[0].camera;
+    for (const CameraPose& camera : scene.cameras)
+    {
+        const Vector3d Xc = camera.toCamera(X);
+        if (Xc.z() < 1.0)
+            return false;
+        const Vector2d x = K.project(Xc);
+        if (!(x.x() >= 0 && x.x() < kWidth && x.y() >= 0 && x.y() < kHeight))
+            return false;
+    }
+    return true;
+}
+
+Vector3d visiblePoint(RNG& rng, const RigScene& scene, const SceneRanges& ranges)
+{
+    for (int attempt = 0; attempt < 100000; ++attempt)
+    {
+        const double u = rng.uniform(0.0, kWidth), v = rng.uniform(0.0, kHeight);
+        const Vector3d X = rng.uniform(ranges.depthMin, ranges.depthMax) *
+                           Vector3d((u - kWidth / 2) / kFocal, (v - kHeight / 2) / kFocal, 1.0);
+        if (inAllViews(scene, X))
+            return X;
+    }
+    CV_Error(Error::StsError, "the four views share no field of view");
+}
+
+Vector2d observePixel(RNG& rng, const Intrinsics& K, const CameraPose& camera, const Vector3d& X, double noise)
+{
+    return K.project(camera.toCamera(X)) + noise * Vector2d(rng.gaussian(1.0), rng.gaussian(1.0));
+}
+
+/** A random rig scene with the features of @p features, observed with Gaussian noise of @p noise px
+on points and segment end points. The ViewSet has the layout of rig_system.hpp.
+*/
+RigScene makeRigScene(const std::vector<FeatureSpec>& features, uint64 seed, double noise = 0,
+                      const SceneRanges& ranges = SceneRanges())
+{
+    RNG rng(seed);
+    RigScene scene;
+    const double baseline = rng.uniform(ranges.baselineMin, ranges.baselineMax);
+    const Vector3d centre2 = baseline * Vector3d(1.0, 0.05 * rng.gaussian(1.0), 0.05 * rng.gaussian(1.0));
+    CameraPose rig;
+    rig.R = randomTurn(rng, 3 * CV_PI / 180);
+    rig.t = -rig.R * centre2;
+    const Vector3d centre3 = rng.uniform(ranges.motionMin, ranges.motionMax) * gaussianVector(rng).normalized();
+    scene.truth.R = randomTurn(rng, ranges.turnDegrees * CV_PI / 180);
+    scene.truth.t = -scene.truth.R * centre3;
+    scene.cameras = { CameraPose(), rig, scene.truth, cv::tripose::detail::composePose(rig, scene.truth) };
+
+    Matrix3d K;
+    K << kFocal, 0, kWidth / 2, 0, kFocal, kHeight / 2, 0, 0, 1;
+    ViewSet& set = scene.set;
+    set.views.resize(4);
+    for (View& view : set.views)
+        view.camera = Intrinsics(K);
+    set.views[ViewSet::kView2].pose = rig;
+    set.views[ViewSet::kView3].estimated = true;
+    set.views[kRigView4].estimated = true;
+    set.views[kRigView4].pose = rig;
+
+    for (const FeatureSpec& f : features)
+    {
+        const bool seen[4] = { true, true, f.in3, f.in4 };
+        if (f.kind == POINT)
+        {
+            const Vector3d X = visiblePoint(rng, scene, ranges);
+            for (int v = 0; v < 4; ++v)
+            {
+                View& view = set.views[v];
+                view.points.push_back(observePixel(rng, view.camera, scene.cameras[v], X, noise));
+                view.calibratedPoints.push_back(view.camera.calibrate(view.points.back()));
+                view.pointSeen.push_back(seen[v] ? 1 : 0);
+            }
+            ++set.numPoints;
+        }
+        else
+        {
+            Vector3d A, B;
+            do
+            {
+                A = visiblePoint(rng, scene, ranges);
+                B = visiblePoint(rng, scene, ranges);
+            } while ((A - B).norm() <= 0.5);
+            for (int v = 0; v < 4; ++v)
+            {
+                View& view = set.views[v];
+                view.lineEnds.push_back(observePixel(rng, view.camera, scene.cameras[v], A, noise));
+                view.lineEnds.push_back(observePixel(rng, view.camera, scene.cameras[v], B, noise));
+                const int line = set.numLines;
+                const Vector3d l = view.calibratedLineEnd(line, 0).homogeneous().cross(
+                    view.calibratedLineEnd(line, 1).homogeneous());
+                view.calibratedLines.push_back(l / l.head<2>().norm());
+                view.lineSeen.push_back(seen[v] ? 1 : 0);
+            }
+            ++set.numLines;
+        }
+    }
+    return scene;
+}
+
+struct Error2
+{
+    double rotation;    //!< rad
+    double translation; //!< relative to |t|
+};
+
+Error2 poseErrorOf(const CameraPose& truth, const CameraPose& pose)
+{
+    // Angle from |R - I|_F = 2 sqrt(2) sin(angle / 2): accurate near 0, unlike the trace.
+    const double chord = (pose.R * truth.R.transpose() - Matrix3d::Identity()).norm();
+    Error2 e;
+    e.rotation = 2 * std::asin(std::min(1.0, chord / (2 * std::sqrt(2.0))));
+    e.translation = (pose.t - truth.t).norm() / truth.t.norm();
+    return e;
+}
+
+bool isTruePose(const CameraPose& truth, const CameraPose& pose)
+{
+    const Error2 e = poseErrorOf(truth, pose);
+    return e.rotation < kTolerance && e.translation < kTolerance;
+}
+
+std::vector<FeatureSpec> repeat(const FeatureSpec& f, int n)
+{
+    return std::vector<FeatureSpec>(n, f);
+}
+
+std::vector<FeatureSpec> operator+(std::vector<FeatureSpec> a, const std::vector<FeatureSpec>& b)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+const FeatureSpec kPointBoth = { POINT, true, true }, kPointOnly3 = { POINT, true, false },
+                  kPointOnly4 = { POINT, false, true }, kLineBoth = { LINE, true, true },
+                  kLineOnly3 = { LINE, true, false }, kLineOnly4 = { LINE, false, true };
+
+std::vector<FeatureSpec> alternate(const FeatureSpec& a, const FeatureSpec& b, int pairs)
+{
+    std::vector<FeatureSpec> out;
+    for (int i = 0; i < pairs; ++i)
+    {
+        out.push_back(a);
+        out.push_back(b);
+    }
+    return out;
+}
+
+//! The mixes of the prototype's noise-free suite that determine the pose.
+std::vector<RigMix> exactMixes()
+{
+    return {
+        // Three features, all seen in both time-B views.
+        { "3P_both", repeat(kPointBoth, 3), 1 },
+        { "2P1L_both", repeat(kPointBoth, 2) + repeat(kLineBoth, 1), 1 },
+        { "1P2L_both", repeat(kPointBoth, 1) + repeat(kLineBoth, 2), 1 },
+        { "3L_both", repeat(kLineBoth, 3), 1 },
+        // Larger sets.
+        { "4P4L_both", repeat(kPointBoth, 4) + repeat(kLineBoth, 4), 1 },
+        { "10P10L_both", repeat(kPointBoth, 10) + repeat(kLineBoth, 10), 1 },
+        { "10P10L_half_only3_only4", alternate(kPointOnly3, kPointOnly4, 5) + alternate(kLineOnly3, kLineOnly4, 5), 1 },
+        { "3P3L_view4_only", repeat(kPointOnly4, 3) + repeat(kLineOnly4, 3), 1 },
+        { "3P3L_view3_only", repeat(kPointOnly3, 3) + repeat(kLineOnly3, 3), 1 },
+        { "2P2L_view3_only", repeat(kPointOnly3, 2) + repeat(kLineOnly3, 2), 1 },
+        // Some features missing a time-B view.
+        { "2P_both_1P_only3", repeat(kPointBoth, 2) + repeat(kPointOnly3, 1), 1 },
+        { "2P_both_1L_only4", repeat(kPointBoth, 2) + repeat(kLineOnly4, 1), 1 },
+        { "1P1L_both_1L_only4", { kPointBoth, kLineBoth, kLineOnly4 }, 1 },
+        { "1P_both_2L_single", { kPointBoth, kLineOnly3, kLineOnly4 }, 1 },
+        { "2L_both_1P_only3", { kLineBoth, kLineBoth, kPointOnly3 }, 1 },
+        { "4_single", { kPointOnly3, kPointOnly3, kLineOnly4, kLineOnly4 }, 1 },
+        { "5_single", { kPointOnly3, kLineOnly3, kPointOnly3, kLineOnly4, kPointOnly4 }, 1 },
+        // Two features seen in both views: the half turn about their common perpendicular fits too.
+        { "1P1L_both", { kPointBoth, kLineBoth }, 2 },
+        { "2L_both", repeat(kLineBoth, 2), 2 },
+        // Minimal (kernel dimension 6): 8 or 4 poses fit.
+        { "3_single_2P_only3_1P_only4", { kPointOnly3, kPointOnly3, kPointOnly4 }, 8 },
+        { "3_single_1P2L_mixed", { kPointOnly4, kLineOnly3, kLineOnly4 }, 8 },
+        { "3_single_2P1L_mixed", { kPointOnly3, kPointOnly4, kLineOnly4 }, 4 },
+        { "3_single_3L_mixed", { kLineOnly3, kLineOnly4, kLineOnly3 }, 8 },
+        { "1L_both_1P_only3", { kLineBoth, kPointOnly3 }, 4 },
+        { "1L_both_1L_only4", { kLineBoth, kLineOnly4 }, 4 },
+        { "3_view3_only_2P1L", { kPointOnly3, kPointOnly3, kLineOnly3 }, 4 },
+        { "3_view3_only_3P", repeat(kPointOnly3, 3), 8 },
+        { "3_view3_only_1P2L", { kPointOnly3, kLineOnly3, kLineOnly3 }, 8 },
+        { "3_view4_only_3L", repeat(kLineOnly4, 3), 8 },
+    };
+}
+
+typedef testing::TestWithParam<RigMix> Tripose_RigSolverExact;
+
+TEST_P(Tripose_RigSolverExact, true_pose_among_candidates_in_999_of_1000_scenes)
+{
+    const RigMix& mix = GetParam();
+    const int scenes = 1000;
+    int found = 0, candidates = 0;
+    double worstRotation = 0, worstTranslation = 0;
+    std::vector<int> failures;
+    for (int s = 0; s < scenes; ++s)
+    {
+        const RigScene scene = makeRigScene(mix.features, 0x5eed0000u + (uint64)s);
+        std::vector<CameraPose> poses;
+        const int n = rigPoseCandidates(scene.set, poses);
+        ASSERT_EQ(n, (int)poses.size());
+        ASSERT_LE(n, mix.posesThatFit) << "seed " << s;
+        candidates += n;
+        bool ok = false;
+        Error2 best = { HUGE_VAL, HUGE_VAL };
+        for (int i = 0; i < (mix.posesThatFit == 1 ? std::min(n, 1) : n); ++i)
+        {
+            ASSERT_TRUE(poses[i].allFinite());
+            const Error2 e = poseErrorOf(scene.truth, poses[i]);
+            if (std::max(e.rotation, e.translation) < std::max(best.rotation, best.translation))
+                best = e;
+            ok = ok || isTruePose(scene.truth, poses[i]);
+        }
+        if (ok)
+        {
+            ++found;
+            worstRotation = std::max(worstRotation, best.rotation);
+            worstTranslation = std::max(worstTranslation, best.translation);
+        }
+        else
+            failures.push_back(s);
+    }
+    std::cout << "[ rig mix  ] " << mix.name << ": " << found << "/" << scenes << " found, max errors "
+              << worstRotation << " rad, " << worstTranslation << " relative, mean candidates "
+              << (double)candidates / scenes << std::endl;
+    EXPECT_GE(found, 999) << "failed seeds: " << testing::PrintToString(failures);
+}
+
+INSTANTIATE_TEST_CASE_P(/**/, Tripose_RigSolverExact, testing::ValuesIn(exactMixes()),
+                        [](const testing::TestParamInfo<RigMix>& info) { return info.param.name; });
+
+TEST(Tripose_RigSolver, candidates_of_a_feature_subset_ignore_the_other_features)
+{
+    // Features outside the subset carry wrong observations at time B: they must not count.
+    RigScene scene = makeRigScene(repeat(kPointBoth, 6) + repeat(kLineBoth, 4), 7);
+    for (int i : { 1, 4 })
+        scene.set.views[ViewSet::kView3].calibratedPoints[i] += Vector2d(0.01, -0.02);
+    scene.set.views[kRigView4].calibratedLines[2] = Vector3d(1, 0, -0.1);
+    const std::vector<int> points = { 0, 2, 3, 5 }, lines = { 0, 1, 3 };
+    std::vector<CameraPose> poses;
+    ASSERT_EQ(rigPoseCandidates(scene.set, poses, &points, &lines), 1);
+    EXPECT_TRUE(isTruePose(scene.truth, poses[0]));
+
+    // The adapter draws samples of three features and passes them on unchanged.
+    const RigPoseSolver solver(scene.set);
+    EXPECT_EQ(solver.sampleSize(), 3);
+    FeatureSubset sample;
+    sample.points = { 0, 3 };
+    sample.lines = { 1 };
+    std::vector<CameraPose> models;
+    ASSERT_EQ(solver.estimateMinimal(sample, false, models), 1);
+    EXPECT_TRUE(isTruePose(scene.truth, models[0]));
+    FeatureSubset all;
+    all.points = points;
+    all.lines = lines;
+    ASSERT_GE(all.size(), solver.nonMinimalSize());
+    models.clear();
+    ASSERT_EQ(solver.estimateNonMinimal(all, models), 1);
+    EXPECT_TRUE(isTruePose(scene.truth, models[0]));
+}
+
+TEST(Tripose_RigSolver, translation_units_do_not_matter)
+{
+    // The system is balanced by the baseline: the same scene in millimetres gives the same pose.
+    const RigScene scene = makeRigScene(repeat(kPointBoth, 2) + repeat(kLineOnly4, 1), 11);
+    RigScene scaled = scene;
+    scaled.set.views[ViewSet::kView2].pose.t *= 1000;
+    scaled.set.views[kRigView4].pose.t *= 1000;
+    std::vector<CameraPose> poses;
+    ASSERT_EQ(rigPoseCandidates(scaled.set, poses), 1);
+    EXPECT_LT(poseErrorOf(scene.truth, poses[0]).rotation, kTolerance);
+    EXPECT_LT((poses[0].t / 1000 - scene.truth.t).norm() / scene.truth.t.norm(), kTolerance);
+}
+
+TEST(Tripose_RigSolver, features_that_do_not_fix_the_pose_give_no_candidate)
+{
+    std::vector<CameraPose> poses;
+    // Two points seen in both time-B views: a turn about the line through them is free.
+    EXPECT_EQ(rigPoseCandidates(makeRigScene(repeat(kPointBoth, 2), 1).set, poses), 0);
+    // Features seen in view 3 only, too few: fewer than six constraints.
+    EXPECT_EQ(rigPoseCandidates(makeRigScene({ kPointOnly3, kLineOnly3 }, 2).set, poses), 0);
+    EXPECT_EQ(rigPoseCandidates(makeRigScene(repeat(kPointOnly3, 2), 3).set, poses), 0);
+    // A single feature, or none.
+    EXPECT_EQ(rigPoseCandidates(makeRigScene(repeat(kLineBoth, 1), 4).set, poses), 0);
+    EXPECT_EQ(rigPoseCandidates(makeRigScene({}, 5).set, poses), 0);
+    // Features seen at time A only contribute nothing.
+    EXPECT_EQ(rigPoseCandidates(makeRigScene({ { POINT, false, false }, { LINE, false, false }, kPointBoth }, 6).set,
+                                poses), 0);
+    EXPECT_TRUE(poses.empty());
+}
+
+TEST(Tripose_RigSolver, degenerate_geometry_gives_no_candidate_and_never_nan)
+{
+    // Three collinear points seen in both time-B views leave a turn about their line free.
+    RigScene scene = makeRigScene(repeat(kPointBoth, 3), 21);
+    std::vector<CameraPose> poses;
+    {
+        // Rebuild the observations with the third point on the line of the first two.
+        const Vector3d X0(0.5, -0.3, 12), X1(-1.0, 0.4, 15);
+        const Vector3d X[3] = { X0, X1, X0 + 0.37 * (X1 - X0) };
+        for (int v = 0; v < 4; ++v)
+            for (int i = 0; i < 3; ++i)
+            {
+                View& view = scene.set.views[v];
+                view.points[i] = view.camera.project(scene.cameras[v].toCamera(X[i]));
+                view.calibratedPoints[i] = view.camera.calibrate(view.points[i]);
+            }
+    }
+    EXPECT_EQ(rigPoseCandidates(scene.set, poses), 0);
+
+    // Coincident observations and a rig without baseline: nothing finite to solve.
+    RigScene same = makeRigScene(repeat(kPointBoth, 4), 22);
+    for (View& view : same.set.views)
+        for (Vector2d& x : view.calibratedPoints)
+            x = view.calibratedPoints[0];
+    poses.clear();
+    rigPoseCandidates(same.set, poses);
+    for (const CameraPose& pose : poses)
+        EXPECT_TRUE(pose.allFinite());
+    RigScene noBaseline = makeRigScene(repeat(kPointBoth, 4), 23);
+    noBaseline.set.views[ViewSet::kView2].pose.t.setZero();
+    noBaseline.set.views[kRigView4].pose.t.setZero();
+    poses.clear();
+    EXPECT_EQ(rigPoseCandidates(noBaseline.set, poses), 0);
+}
+
+TEST(Tripose_RigSolver, noise_one_pixel_ten_points_ten_lines)
+{
+    // A hypothesis for the robust loop and the refinement, not a final pose: with baselines of
+    // 0.1-0.5 m at depths up to 30 m, stereo depth at time B is weak, lines most of all.
+    const int scenes = 200;
+    std::vector<double> rotation, translation;
+    for (int s = 0; s < scenes; ++s)
+    {
+        const RigScene scene = makeRigScene(repeat(kPointBoth, 10) + repeat(kLineBoth, 10), 0xa0000u + (uint64)s, 1.0);
+        std::vector<CameraPose> poses;
+        ASSERT_EQ(rigPoseCandidates(scene.set, poses), 1);
+        ASSERT_TRUE(poses[0].allFinite());
+        const Error2 e = poseErrorOf(scene.truth, poses[0]);
+        rotation.push_back(e.rotation * 180 / CV_PI);
+        translation.push_back(e.translation);
+    }
+    std::nth_element(rotation.begin(), rotation.begin() + scenes / 2, rotation.end());
+    std::nth_element(translation.begin(), translation.begin() + scenes / 2, translation.end());
+    std::cout << "[ rig noise] 10P+10L both, 1 px: median rotation error " << rotation[scenes / 2]
+              << " deg, median relative translation error " << translation[scenes / 2] << std::endl;
+    EXPECT_LT(rotation[scenes / 2], 2.0);
+}
+
+} // namespace
+} // namespace opencv_test
