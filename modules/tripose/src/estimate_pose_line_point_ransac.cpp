@@ -4,11 +4,9 @@
 
 #include "precomp.hpp"
 
-#include "input/pose_conversion.hpp"
 #include "input/problem_input.hpp"
 #include "linear/linear_pose_solver.hpp"
-#include "refine/structure_refiner.hpp"
-#include "robust/robust_estimator.hpp"
+#include "pipeline/pose_pipelines.hpp"
 
 namespace cv {
 namespace tripose {
@@ -17,28 +15,6 @@ RansacParams::RansacParams()
     : threshold(2.0), confidence(0.999), maxIterations(10000), localOptimization(true), refine(true), seed(0)
 {}
 
-namespace {
-
-void validate(const RansacParams& p)
-{
-    if (!(p.threshold > 0) || !std::isfinite(p.threshold))
-        CV_Error_(Error::StsBadArg, ("params.threshold must be a positive number of pixels, got %g", p.threshold));
-    if (!(p.confidence > 0 && p.confidence < 1))
-        CV_Error_(Error::StsBadArg, ("params.confidence must be in (0, 1), got %g", p.confidence));
-    if (p.maxIterations <= 0)
-        CV_Error_(Error::StsBadArg, ("params.maxIterations must be positive, got %d", p.maxIterations));
-    if (p.refine)
-        detail::checkRefineParams(p.refineParams, "params.refineParams");
-}
-
-void writeMask(const std::vector<unsigned char>& mask, OutputArray out)
-{
-    if (out.needed())
-        Mat((int)mask.size(), 1, CV_8U, (void*)mask.data()).copyTo(out);
-}
-
-} // namespace
-
 int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArray points3,
                                 InputArray lines1, InputArray lines2, InputArray lines3,
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
@@ -46,25 +22,10 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
 {
     CV_INSTRUMENT_REGION();
-    validate(params);
     const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                              cameraMatrix, distCoeffs, R12, t12);
     const detail::LinearPoseSolver solver(views);
-    const detail::PoseScorer scorer(views);
-    const detail::StructureRefiner refiner(views, params.refineParams);
-    detail::RobustEstimate estimate;
-    if (!detail::estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
-    {
-        R.release();
-        t.release();
-        writeMask(std::vector<unsigned char>(views.numPoints, 0), pointInliers);
-        writeMask(std::vector<unsigned char>(views.numLines, 0), lineInliers);
-        return 0;
-    }
-    detail::writePose(estimate.pose.R, estimate.pose.t, R, t);
-    writeMask(estimate.pointInliers, pointInliers);
-    writeMask(estimate.lineInliers, lineInliers);
-    return estimate.numInliers;
+    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
 }
 
 } // namespace tripose

@@ -27,7 +27,7 @@ using cv::tripose::detail::Intrinsics;
 using cv::tripose::detail::RigPoseSolver;
 using cv::tripose::detail::View;
 using cv::tripose::detail::ViewSet;
-using cv::tripose::detail::kRigView4;
+const int kRigView4 = cv::tripose::detail::ViewSet::kRigRightB;
 using cv::tripose::detail::rigPoseCandidates;
 using Eigen::Matrix3d;
 using Eigen::Vector2d;

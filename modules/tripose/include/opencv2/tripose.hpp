@@ -8,6 +8,7 @@
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"
+#include "opencv2/tripose/stereo.hpp"
 
 /**
 @defgroup tripose Camera pose from point and line triplets in three views

@@ -61,11 +61,14 @@ pose being estimated.
 
 The three-view problem of estimatePoseLinePoint() is the case views = {view 1 at [I|0], view 2 at
 [R12|t12], view 3 estimated}, every feature seen in all three; the linear solver works on that case
-(kView1, kView2, kView3). Scoring, triangulation and refinement take any list.
+(kView1, kView2, kView3). The stereo rig adds view 4, mounted on view 3 at [R12|t12], and lets
+features be missing in view 3 or 4 (kRigLeftB, kRigRightB). Scoring, triangulation and refinement
+take any list.
 */
 struct ViewSet
 {
     static const int kView1 = 0, kView2 = 1, kView3 = 2;
+    static const int kRigLeftB = 2, kRigRightB = 3;
 
     std::vector<View> views;
     int numPoints = 0, numLines = 0;

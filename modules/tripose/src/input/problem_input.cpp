@@ -57,10 +57,46 @@ std::string viewArgumentName(const char* base, bool shared, int view)
     return shared ? std::string(base) : format("%s[%d]", base, view);
 }
 
-//! Nx2 points (row-major x y); an empty array means no points.
-void readPoints(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& out)
+/** Marks the rows of @p values (@p width values each) that are entirely NaN as not seen (0 in
+@p seen, the row set to @p placeholder) and rejects any other non-finite value. @p seen is left
+empty when every row is seen.
+*/
+void readMissingRows(double* values, int rows, int width, const double* placeholder, const char* name,
+                     const char* what, std::vector<unsigned char>& seen)
+{
+    seen.assign(rows, 1);
+    bool anyMissing = false;
+    for (int r = 0; r < rows; ++r)
+    {
+        double* row = values + (size_t)r * width;
+        int nan = 0, finite = 0;
+        for (int c = 0; c < width; ++c)
+        {
+            nan += std::isnan(row[c]) ? 1 : 0;
+            finite += std::isfinite(row[c]) ? 1 : 0;
+        }
+        if (finite == width)
+            continue;
+        if (nan != width)
+            CV_Error_(Error::StsBadArg, ("%s: %s %d has NaN or Inf values; mark a %s that this view does not see "
+                                         "with NaN in all its values", name, what, r, what));
+        seen[r] = 0;
+        anyMissing = true;
+        std::copy(placeholder, placeholder + width, row);
+    }
+    if (!anyMissing)
+        seen.clear();
+}
+
+/** Nx2 points (row-major x y); an empty array means no points. With @p seen, a row of two NaN is a
+point the view does not see (readMissingRows()); without, any NaN or Inf is an error.
+*/
+void readPoints(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& out,
+                std::vector<unsigned char>* seen = nullptr)
 {
     out.clear();
+    if (seen)
+        seen->clear();
     if (arr.empty())
         return;
     const Mat m = arr.getMat();
@@ -70,20 +106,33 @@ void readPoints(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& 
                                      "(got %dx%d, %d channel(s), depth %d)",
                                      name, m.rows, m.cols, m.channels(), m.depth()));
     out.resize(n);
-    if (n > 0)
+    if (n == 0)
+        return;
+    if (!seen)
+    {
         copyFiniteOrThrow(m, out[0].data(), name); // Eigen::Vector2d is two packed doubles
+        return;
+    }
+    if (!copyFinite(m, out[0].data()))
+    {
+        const double placeholder[2] = { 0, 0 };
+        readMissingRows(out[0].data(), n, 2, placeholder, name, "point", *seen);
+    }
 }
 
 /** Mx4 segments (into @p ends, two points per segment: the layout is the same, x0 y0 x1 y1) or
 Mx3 homogeneous lines (row-major into @p homogeneous); returns the width (4 or 3) and sets
-@p count. An empty array means no lines (width 4).
+@p count. An empty array means no lines (width 4). With @p seen, a row of NaN is a line the view
+does not see (readMissingRows()).
 */
 int readLines(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& ends, std::vector<double>& homogeneous,
-              int& count)
+              int& count, std::vector<unsigned char>* seen = nullptr)
 {
     ends.clear();
     homogeneous.clear();
     count = 0;
+    if (seen)
+        seen->clear();
     if (arr.empty())
         return 4;
     const Mat m = arr.getMat();
@@ -102,41 +151,54 @@ int readLines(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& en
     count = n;
     if (n == 0)
         return width;
+    double* values;
     if (width == 4)
     {
         ends.resize(2 * (size_t)n);
-        copyFiniteOrThrow(m, ends[0].data(), name);
+        values = ends[0].data();
     }
     else
     {
         homogeneous.resize(3 * (size_t)n);
-        copyFiniteOrThrow(m, homogeneous.data(), name);
+        values = homogeneous.data();
+    }
+    if (!seen)
+        copyFiniteOrThrow(m, values, name);
+    else if (!copyFinite(m, values))
+    {
+        // A placeholder that converts like any line: never read for a view that does not see it.
+        const double placeholder[4] = { 0, 0, 1, 0 };
+        const double homogeneousPlaceholder[3] = { 0, 1, 0 };
+        readMissingRows(values, n, width, width == 4 ? placeholder : homogeneousPlaceholder, name, "line", *seen);
     }
     return width;
 }
 
-//! The arrays of a per-view argument: none, one shared by the three views, or three. Element
+//! The arrays of a per-view argument: none, one shared by every view, or one per view. Element
 //! headers are taken one by one (getMat(i)): a vector of headers would cost an allocation per call.
 struct PerViewArrays
 {
-    Mat mats[3];
+    static const int kMaxViews = 4;
+    Mat mats[kMaxViews];
     int count = 0;
 
     const Mat& forView(int v) const { return mats[count == 1 ? 0 : v]; }
     bool shared() const { return count == 1; }
 };
 
-PerViewArrays readPerView(InputArrayOfArrays arr, const char* name)
+PerViewArrays readPerView(InputArrayOfArrays arr, const char* name, int numViews)
 {
+    CV_Assert(numViews <= PerViewArrays::kMaxViews);
+    static const char* const counts[] = { "zero", "one", "two", "three", "four" };
     PerViewArrays out;
     if (arr.empty())
         return out;
     if (arr.isMatVector() || arr.isUMatVector() || arr.kind() == _InputArray::STD_VECTOR_VECTOR)
     {
         const int n = (int)arr.total();
-        if (n != 1 && n != 3)
-            CV_Error_(Error::StsBadArg, ("%s must be one array shared by the three views or a vector of three (got %d)",
-                                         name, n));
+        if (n != 1 && n != numViews)
+            CV_Error_(Error::StsBadArg, ("%s must be one array shared by the %s views or a vector of %s (got %d)",
+                                         name, counts[numViews], counts[numViews], n));
         for (int i = 0; i < n; ++i)
             out.mats[i] = arr.getMat(i);
         out.count = n;
@@ -228,8 +290,8 @@ Eigen::Vector3d normalizedLine(const Eigen::Vector3d& l)
 //! Calibrated lines of one view; @p pixelEnds holds the segments' end points (width 4, undistorted
 //! here) or receives two points on each homogeneous line (width 3).
 void convertLines(const std::vector<double>& homogeneous, int width, int count, const Intrinsics& camera, const Eigen::Matrix3d& K,
-                  const Mat& dist, const char* name, std::vector<Eigen::Vector3d>& calibrated,
-                  std::vector<Eigen::Vector2d>& pixelEnds)
+                  const Mat& dist, const char* name, const std::vector<unsigned char>& seen,
+                  std::vector<Eigen::Vector3d>& calibrated, std::vector<Eigen::Vector2d>& pixelEnds)
 {
     calibrated.resize(count);
     pixelEnds.resize(2 * count);
@@ -238,6 +300,8 @@ void convertLines(const std::vector<double>& homogeneous, int width, int count, 
         undistortPixels(pixelEnds, K, dist);
         for (int i = 0; i < count; ++i)
         {
+            if (!seen.empty() && !seen[i])
+                continue; // the placeholder converts to a line, but nothing reads it
             const Eigen::Vector2d& a = pixelEnds[2 * i];
             const Eigen::Vector2d& b = pixelEnds[2 * i + 1];
             if (!((a - b).norm() > 1e-6))
@@ -289,69 +353,150 @@ Eigen::Matrix3d readRotation(InputArray arr, const char* name)
     return nearestRotation(E);
 }
 
-ViewSet readThreeViewInput(InputArray points1, InputArray points2, InputArray points3,
-                           InputArray lines1, InputArray lines2, InputArray lines3,
-                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
-                           InputArray R12, InputArray t12, int minFeatures)
+namespace {
+
+//! The observation arguments of one view.
+struct ViewArguments
 {
-    ViewSet set;
-    set.views.resize(3);
-    View* pixels = set.views.data();
-    readPoints(points1, "points1", pixels[0].points);
-    readPoints(points2, "points2", pixels[1].points);
-    readPoints(points3, "points3", pixels[2].points);
-    std::vector<double> L[3]; // homogeneous lines only; segments go straight to the line ends
-    int lineCount[3];
-    const int lineWidth[3] = { readLines(lines1, "lines1", pixels[0].lineEnds, L[0], lineCount[0]),
-                               readLines(lines2, "lines2", pixels[1].lineEnds, L[1], lineCount[1]),
-                               readLines(lines3, "lines3", pixels[2].lineEnds, L[2], lineCount[2]) };
-    const int numPoints = (int)pixels[0].points.size();
-    for (int v = 1; v < 3; ++v)
+    const _InputArray* points;
+    const _InputArray* lines;
+    const char* pointsName;
+    const char* linesName;
+    bool mayMiss; //!< Rows of NaN mark features this view does not see (else every feature is seen).
+};
+
+/** Reads, validates, undistorts and calibrates the observations of @p numViews views into
+@p set.views (poses left to the caller). Every view holds the same number of points and of lines
+(the first view's); a view that may miss features may also pass an empty array: it sees none.
+*/
+void readViews(const ViewArguments* args, int numViews, InputArrayOfArrays cameraMatrix,
+               InputArrayOfArrays distCoeffs, ViewSet& set)
+{
+    set.views.resize(numViews);
+    std::vector<std::vector<double>> homogeneous(numViews); // homogeneous lines only; segments go straight to the line ends
+    std::vector<int> lineCount(numViews), lineWidth(numViews);
+    for (int v = 0; v < numViews; ++v)
     {
-        if ((int)pixels[v].points.size() != numPoints)
-            CV_Error_(Error::StsBadSize, ("points%d has %d points but points1 has %d: every view needs the same points",
-                                          v + 1, (int)pixels[v].points.size(), numPoints));
-        if (lineCount[v] != lineCount[0])
-            CV_Error_(Error::StsBadSize, ("lines%d has %d lines but lines1 has %d: every view needs the same lines",
-                                          v + 1, lineCount[v], lineCount[0]));
-        if (lineCount[v] > 0 && lineWidth[v] != lineWidth[0])
-            CV_Error_(Error::StsBadArg, ("lines%d are %s but lines1 are %s: use one kind in all views", v + 1,
+        View& view = set.views[v];
+        readPoints(*args[v].points, args[v].pointsName, view.points, args[v].mayMiss ? &view.pointSeen : nullptr);
+        lineWidth[v] = readLines(*args[v].lines, args[v].linesName, view.lineEnds, homogeneous[v], lineCount[v],
+                                 args[v].mayMiss ? &view.lineSeen : nullptr);
+    }
+    const int numPoints = (int)set.views[0].points.size();
+    const int numLines = lineCount[0];
+    for (int v = 1; v < numViews; ++v)
+    {
+        View& view = set.views[v];
+        const int points = (int)view.points.size();
+        if (args[v].mayMiss && points == 0 && numPoints > 0)
+        {
+            view.points.assign(numPoints, Eigen::Vector2d::Zero());
+            view.pointSeen.assign(numPoints, 0);
+        }
+        else if (points != numPoints)
+            CV_Error_(Error::StsBadSize, ("%s has %d points but %s has %d: every view needs the same points",
+                                          args[v].pointsName, points, args[0].pointsName, numPoints));
+        if (args[v].mayMiss && lineCount[v] == 0 && numLines > 0)
+        {
+            lineCount[v] = numLines;
+            lineWidth[v] = 4;
+            view.lineEnds.assign(2 * (size_t)numLines, Eigen::Vector2d::Zero());
+            for (int i = 0; i < numLines; ++i)
+                view.lineEnds[2 * i + 1] = Eigen::Vector2d(1, 0);
+            view.lineSeen.assign(numLines, 0);
+            continue; // no lines given: nothing to compare the kind with
+        }
+        if (lineCount[v] != numLines)
+            CV_Error_(Error::StsBadSize, ("%s has %d lines but %s has %d: every view needs the same lines",
+                                          args[v].linesName, lineCount[v], args[0].linesName, numLines));
+        if (numLines > 0 && lineWidth[v] != lineWidth[0])
+            CV_Error_(Error::StsBadArg, ("%s are %s but %s are %s: use one kind in all views", args[v].linesName,
                                          lineWidth[v] == 4 ? "segments (Mx4)" : "homogeneous lines (Mx3)",
+                                         args[0].linesName,
                                          lineWidth[0] == 4 ? "segments (Mx4)" : "homogeneous lines (Mx3)"));
     }
-    if (numPoints + lineCount[0] < minFeatures)
-        CV_Error_(Error::StsBadArg, ("at least %d features (points + lines) are required, got %d points and %d lines",
-                                     minFeatures, numPoints, lineCount[0]));
-
-    const PerViewArrays Ks = readPerView(cameraMatrix, "cameraMatrix");
-    if (Ks.count == 0)
-        CV_Error(Error::StsBadArg, "cameraMatrix must be one 3x3 matrix or a vector of three");
-    const PerViewArrays Ds = readPerView(distCoeffs, "distCoeffs");
-
     set.numPoints = numPoints;
-    set.numLines = lineCount[0];
-    set.views[ViewSet::kView2].pose.R = readRotation(R12, "R12");
-    set.views[ViewSet::kView2].pose.t = readTranslation(t12, "t12", true);
-    set.views[ViewSet::kView3].estimated = true; // mounted at the identity: it is the estimated camera
+    set.numLines = numLines;
 
-    static const char* lineNames[3] = { "lines1", "lines2", "lines3" };
-    for (int v = 0; v < 3; ++v)
+    const PerViewArrays Ks = readPerView(cameraMatrix, "cameraMatrix", numViews);
+    if (Ks.count == 0)
+        CV_Error_(Error::StsBadArg, ("cameraMatrix must be one 3x3 matrix or a vector of %d", numViews));
+    const PerViewArrays Ds = readPerView(distCoeffs, "distCoeffs", numViews);
+
+    for (int v = 0; v < numViews; ++v)
     {
         const Eigen::Matrix3d K = readCameraMatrix(Ks.forView(v), Ks.shared(), v);
         const Mat dist = Ds.count == 0 ? Mat() : readDistortion(Ds.forView(v), Ds.shared(), v);
         if (!dist.empty() && lineCount[v] > 0 && lineWidth[v] == 3)
             CV_Error_(Error::StsBadArg, ("%s are homogeneous lines (Mx3), which cannot be undistorted: "
-                                         "pass segments (Mx4) or empty %s", lineNames[v],
+                                         "pass segments (Mx4) or empty %s", args[v].linesName,
                                          viewArgumentName("distCoeffs", Ds.shared(), v).c_str()));
-        View& view = pixels[v];
+        View& view = set.views[v];
         view.camera = Intrinsics(K);
         undistortPixels(view.points, K, dist);
         view.calibratedPoints.resize(numPoints);
         for (int i = 0; i < numPoints; ++i)
             view.calibratedPoints[i] = view.camera.calibrate(view.points[i]);
-        convertLines(L[v], lineWidth[v], lineCount[v], view.camera, K, dist, lineNames[v], view.calibratedLines,
-                     view.lineEnds);
+        convertLines(homogeneous[v], lineWidth[v], lineCount[v], view.camera, K, dist, args[v].linesName,
+                     view.lineSeen, view.calibratedLines, view.lineEnds);
     }
+}
+
+void requireFeatures(int numPoints, int numLines, int minFeatures)
+{
+    if (numPoints + numLines < minFeatures)
+        CV_Error_(Error::StsBadArg, ("at least %d features (points + lines) are required, got %d points and %d lines",
+                                     minFeatures, numPoints, numLines));
+}
+
+} // namespace
+
+ViewSet readThreeViewInput(InputArray points1, InputArray points2, InputArray points3,
+                           InputArray lines1, InputArray lines2, InputArray lines3,
+                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                           InputArray R12, InputArray t12, int minFeatures)
+{
+    const ViewArguments args[3] = { { &points1, &lines1, "points1", "lines1", false },
+                                    { &points2, &lines2, "points2", "lines2", false },
+                                    { &points3, &lines3, "points3", "lines3", false } };
+    ViewSet set;
+    readViews(args, 3, cameraMatrix, distCoeffs, set);
+    requireFeatures(set.numPoints, set.numLines, minFeatures);
+    set.views[ViewSet::kView2].pose.R = readRotation(R12, "R12");
+    set.views[ViewSet::kView2].pose.t = readTranslation(t12, "t12", true);
+    set.views[ViewSet::kView3].estimated = true; // mounted at the identity: it is the estimated camera
+    return set;
+}
+
+ViewSet readStereoRigInput(InputArray points1, InputArray points2, InputArray points3, InputArray points4,
+                           InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
+                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                           InputArray R12, InputArray t12, int minFeatures)
+{
+    const ViewArguments args[4] = { { &points1, &lines1, "points1", "lines1", false },
+                                    { &points2, &lines2, "points2", "lines2", false },
+                                    { &points3, &lines3, "points3", "lines3", true },
+                                    { &points4, &lines4, "points4", "lines4", true } };
+    ViewSet set;
+    readViews(args, 4, cameraMatrix, distCoeffs, set);
+    requireFeatures(set.numPoints, set.numLines, minFeatures);
+    const View& left = set.views[ViewSet::kRigLeftB];
+    const View& right = set.views[ViewSet::kRigRightB];
+    for (int i = 0; i < set.numPoints; ++i)
+        if (!left.seesPoint(i) && !right.seesPoint(i))
+            CV_Error_(Error::StsBadArg, ("point %d is missing (NaN) in both points3 and points4: every feature must "
+                                         "be seen in view 3 or view 4", i));
+    for (int i = 0; i < set.numLines; ++i)
+        if (!left.seesLine(i) && !right.seesLine(i))
+            CV_Error_(Error::StsBadArg, ("line %d is missing (NaN) in both lines3 and lines4: every feature must "
+                                         "be seen in view 3 or view 4", i));
+    CameraPose rig;
+    rig.R = readRotation(R12, "R12");
+    rig.t = readTranslation(t12, "t12", true);
+    set.views[ViewSet::kView2].pose = rig;
+    set.views[ViewSet::kRigLeftB].estimated = true;  // the estimated camera itself
+    set.views[ViewSet::kRigRightB].estimated = true; // mounted on it as the right camera on the left
+    set.views[ViewSet::kRigRightB].pose = rig;
     return set;
 }
 

@@ -27,6 +27,18 @@ ViewSet readThreeViewInput(InputArray points1, InputArray points2, InputArray po
                              InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                              InputArray R12, InputArray t12, int minFeatures = 4);
 
+/** The stereo-rig problem: views = {left camera at time A at [I|0], right camera at time A at the
+rig [R12|t12], left camera at time B (estimated), right camera at time B (mounted on it at
+[R12|t12])}. Points and lines are seen in views 1 and 2 and in view 3, view 4 or both: in points3,
+points4, lines3 and lines4 a row of NaN marks a feature that view does not see, and an empty array
+a view that sees none of that kind. Validation as readThreeViewInput(); additionally every feature
+must be seen in view 3 or 4.
+*/
+ViewSet readStereoRigInput(InputArray points1, InputArray points2, InputArray points3, InputArray points4,
+                           InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
+                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                           InputArray R12, InputArray t12, int minFeatures);
+
 constexpr double kHomogeneousLineHalfLength = 50.0;
 
 /** A rotation given as a 3x3 matrix or a Rodrigues vector (CV_32F/CV_64F), checked (finite,

@@ -64,7 +64,7 @@ bool buildRigSystem(const ViewSet& set, const std::vector<int>* pointIndices, co
     const View& view1 = set.views[ViewSet::kView1];
     const View& view2 = set.views[ViewSet::kView2];
     const View& view3 = set.views[ViewSet::kView3];
-    const View& view4 = set.views[kRigView4];
+    const View& view4 = set.views[ViewSet::kRigRightB];
     system.counts = RigFeatureCounts();
     system.translationScale = set.pose12().t.norm();
     if (!(system.translationScale > 0) || !std::isfinite(system.translationScale))

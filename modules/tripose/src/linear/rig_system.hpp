@@ -19,11 +19,10 @@ namespace detail {
 
 /** Views of a stereo rig seen at two times, as a ViewSet: view 1 (index kView1) the left camera at
 time A at [I|0], view 2 (kView2) the right camera at time A at the rig pose [R12|t12], both known;
-view 3 (kView3) the left camera at time B, estimated, mounted at the identity; view 4 (kRigView4)
+view 3 (kView3) the left camera at time B, estimated, mounted at the identity; view 4 (ViewSet::kRigRightB)
 the right camera at time B, estimated, mounted at the rig pose (R12, t12) again. Every feature is
 seen in views 1 and 2 and in view 3, view 4 or both.
 */
-const int kRigView4 = 3;
 
 /** The stereo-rig linear system A v = b in v = [r1; r2; r3; t] (the pose of view 3; r_i the
 columns of R). A line gets the two points of its 3D line from views 1-2 (lineNullSpace()); in
