@@ -66,6 +66,28 @@ CameraPose moved(const CameraPose& pose, const Vector6d& delta)
     return p;
 }
 
+/** Central differences of @p residual (a function of the estimated pose and the view at that pose,
+returning false when undefined) with respect to the left increment of the estimated pose.
+*/
+template <typename Residual>
+Matrix26d numericPoseJacobian(const View& view, const CameraPose& estimated, Residual residual)
+{
+    Matrix26d numeric;
+    for (int k = 0; k < 6; ++k)
+    {
+        const Vector6d h = kStep * Vector6d::Unit(k);
+        const CameraPose plusPose = moved(estimated, h), minusPose = moved(estimated, -h);
+        ViewAtPose plusView, minusView;
+        plusView.set(view, plusPose);
+        minusView.set(view, minusPose);
+        Eigen::Vector2d plus, minus;
+        EXPECT_TRUE(residual(plusView, plusPose, plus));
+        EXPECT_TRUE(residual(minusView, minusPose, minus));
+        numeric.col(k) = (plus - minus) / (2 * kStep);
+    }
+    return numeric;
+}
+
 //! Max |analytic - numeric| relative to the largest entry of the numeric Jacobian.
 template <typename A, typename B>
 double relativeError(const A& analytic, const B& numeric)
@@ -192,19 +214,10 @@ TEST_P(Tripose_ObservationJacobians, point_matches_finite_differences)
             EXPECT_TRUE(dPose.hasNaN()) << "a known view has no pose Jacobian";
             continue;
         }
-        Matrix26d numericPose;
-        for (int k = 0; k < 6; ++k)
-        {
-            const Vector6d h = kStep * Vector6d::Unit(k);
-            ViewAtPose vp, vm;
-            const CameraPose plusPose = moved(s.estimated, h), minusPose = moved(s.estimated, -h);
-            vp.set(s.view, plusPose);
-            vm.set(s.view, minusPose);
-            Eigen::Vector2d plus, minus;
-            ASSERT_TRUE(pointObservation(vp, plusPose, s.X, s.view.points[0], 0.0, plus));
-            ASSERT_TRUE(pointObservation(vm, minusPose, s.X, s.view.points[0], 0.0, minus));
-            numericPose.col(k) = (plus - minus) / (2 * kStep);
-        }
+        const Matrix26d numericPose =
+            numericPoseJacobian(s.view, s.estimated, [&](const ViewAtPose& v, const CameraPose& pose, Eigen::Vector2d& r) {
+                return pointObservation(v, pose, s.X, s.view.points[0], 0.0, r);
+            });
         EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
     }
 }
@@ -244,19 +257,10 @@ TEST_P(Tripose_ObservationJacobians, line_matches_finite_differences)
             EXPECT_TRUE(dPose.hasNaN()) << "a known view has no pose Jacobian";
             continue;
         }
-        Matrix26d numericPose;
-        for (int k = 0; k < 6; ++k)
-        {
-            const Vector6d h = kStep * Vector6d::Unit(k);
-            ViewAtPose vp, vm;
-            const CameraPose plusPose = moved(s.estimated, h), minusPose = moved(s.estimated, -h);
-            vp.set(s.view, plusPose);
-            vm.set(s.view, minusPose);
-            Eigen::Vector2d plus, minus;
-            ASSERT_TRUE(lineObservation(vp, plusPose, L, end0, end1, plus));
-            ASSERT_TRUE(lineObservation(vm, minusPose, L, end0, end1, minus));
-            numericPose.col(k) = (plus - minus) / (2 * kStep);
-        }
+        const Matrix26d numericPose =
+            numericPoseJacobian(s.view, s.estimated, [&](const ViewAtPose& v, const CameraPose& pose, Eigen::Vector2d& r) {
+                return lineObservation(v, pose, L, end0, end1, r);
+            });
         EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
     }
 }

@@ -77,6 +77,23 @@ struct ViewSet
 
     //! Pose of view 2 relative to view 1 in the three-view problem.
     const CameraPose& pose12() const { return views[kView2].pose; }
+
+    //! Distance between the centres of the first two known views (1 when there are fewer): the
+    //! problem's length scale, against which "at a camera centre" and "behind a camera" are judged.
+    double knownBaseline() const
+    {
+        const CameraPose* first = nullptr;
+        for (const View& view : views)
+        {
+            if (view.estimated)
+                continue;
+            if (!first)
+                first = &view.pose;
+            else
+                return (view.pose.centre() - first->centre()).norm();
+        }
+        return 1.0;
+    }
 };
 
 } // namespace detail

@@ -59,22 +59,6 @@ struct SelectedFeature
     bool initialized = false; //!< Has a finite structure estimate (for the output).
 };
 
-//! Distance between the centres of the first two known views: the scale of "at a camera centre".
-double knownBaseline(const ViewSet& set)
-{
-    const CameraPose* first = nullptr;
-    for (const View& view : set.views)
-    {
-        if (view.estimated)
-            continue;
-        if (!first)
-            first = &view.pose;
-        else
-            return (view.pose.centre() - first->centre()).norm();
-    }
-    return 1.0;
-}
-
 /** Levenberg-Marquardt over the estimated camera's pose and the structure of the selected features,
 every view of the ViewSet contributing the observations it has (observation_model.hpp), the known
 views fixed. The normal equations are solved with the structure eliminated (schur_system.hpp).
@@ -85,7 +69,7 @@ public:
     Refiner(const ViewSet& set, const RefineParams& params, const std::vector<int>* pointIndices,
             const std::vector<int>* lineIndices)
         : set_(set), loss_(params.loss, params.lossScale), maxIterations_(params.maxIterations),
-          tolerance_(params.tolerance), minDepth_(1e-6 * knownBaseline(set)), views_(set.views.size())
+          tolerance_(params.tolerance), minDepth_(1e-6 * set.knownBaseline()), views_(set.views.size())
     {
         select(pointIndices, set.numPoints, points_);
         select(lineIndices, set.numLines, lines_);

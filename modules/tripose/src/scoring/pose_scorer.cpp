@@ -22,22 +22,6 @@ constexpr double kGrazingSine = 1e-9;
 // Ratio of the planes' singular values below which known views do not pin a line down.
 constexpr double kLineConditioning = 1e-5;
 
-//! Distance between the centres of the first two known views: the scale of "at a camera centre".
-double knownBaseline(const ViewSet& set)
-{
-    const CameraPose* first = nullptr;
-    for (const View& view : set.views)
-    {
-        if (view.estimated)
-            continue;
-        if (!first)
-            first = &view.pose;
-        else
-            return (view.pose.centre() - first->centre()).norm();
-    }
-    return 1.0;
-}
-
 } // namespace
 
 double PoseScore::rms() const
@@ -45,7 +29,7 @@ double PoseScore::rms() const
     return residuals > 0 ? std::sqrt(sumSquares / residuals) : std::numeric_limits<double>::infinity();
 }
 
-PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * knownBaseline(set))
+PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * set.knownBaseline())
 {
     triangulateKnown();
     for (int v = 0; v < (int)set.views.size(); ++v)
