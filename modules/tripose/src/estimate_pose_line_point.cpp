@@ -6,7 +6,7 @@
 
 #include "input/pose_conversion.hpp"
 #include "input/problem_input.hpp"
-#include "refine/ml_refinement.hpp"
+#include "refine/multi_start_refinement.hpp"
 #include "linear/linear_solver.hpp"
 #include "scoring/pose_scorer.hpp"
 
@@ -15,22 +15,47 @@ namespace tripose {
 
 namespace {
 
-//! Refines every candidate over the three views and ranks them by the refined RMS error; candidates
-//! whose refinement has no usable feature are dropped.
+// Refined candidates closer than this (rotation in radians, translation relative to its norm) are
+// one local minimum reached twice.
+constexpr double kSameMinimum = 1e-7;
+
+bool sameMinimum(const detail::CameraPose& a, const detail::CameraPose& b)
+{
+    const double scale = std::max(1e-300, std::max(a.t.norm(), b.t.norm()));
+    return (a.R - b.R).norm() <= kSameMinimum && (a.t - b.t).norm() <= kSameMinimum * scale;
+}
+
+/** Refines every candidate over the three views, and from the 26 starts around the best-ranked one
+that keep its rotation and move the centre of view 3 (refine/multi_start_refinement.hpp); each is
+re-triangulated until it settles. Returns the distinct minima that use as many features as the
+best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
+known pair or planar structure the linear candidates alone lead refinement to another minimum in
+most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
 void refineCandidates(const detail::ViewSet& views, std::vector<detail::ScoredPose>& candidates)
 {
     const RefineParams params;
+    std::vector<detail::CameraPose> starts;
+    for (const detail::ScoredPose& candidate : candidates)
+        starts.push_back(candidate.pose);
+    if (!candidates.empty())
+        detail::centreDirectionStarts(views, candidates.front().pose, starts);
+    std::vector<detail::LocalMinimum> minima;
+    detail::refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
+    std::stable_sort(minima.begin(), minima.end(),
+                     [](const detail::LocalMinimum& a, const detail::LocalMinimum& b) { return a.betterThan(b); });
     std::vector<detail::ScoredPose> refined;
-    for (detail::ScoredPose candidate : candidates)
+    for (const detail::LocalMinimum& m : minima)
     {
-        const detail::RefinementSummary summary = detail::refinePoseAndStructure(views, candidate.pose, params);
-        if (!std::isfinite(summary.finalRms) || !candidate.pose.allFinite())
+        bool repeated = false;
+        for (const detail::ScoredPose& r : refined)
+            repeated = repeated || sameMinimum(r.pose, m.pose);
+        if (repeated || m.used < minima.front().used)
             continue;
-        candidate.rms = summary.finalRms;
-        refined.push_back(candidate);
+        detail::ScoredPose p;
+        p.pose = m.pose;
+        p.rms = m.rms;
+        refined.push_back(p);
     }
-    std::stable_sort(refined.begin(), refined.end(),
-                     [](const detail::ScoredPose& a, const detail::ScoredPose& b) { return a.rms < b.rms; });
     candidates.swap(refined);
 }
 

@@ -7,7 +7,7 @@
 #include "input/pose_conversion.hpp"
 #include "input/problem_input.hpp"
 #include "linear/linear_pose_solver.hpp"
-#include "refine/structure_refiner.hpp"
+#include "refine/multi_start_refiner.hpp"
 #include "robust/robust_estimator.hpp"
 
 namespace cv {
@@ -51,7 +51,7 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                                              cameraMatrix, distCoeffs, R12, t12);
     const detail::LinearPoseSolver solver(views);
     const detail::PoseScorer scorer(views);
-    const detail::StructureRefiner refiner(views, params.refineParams);
+    const detail::MultiStartRefiner refiner(views, params.refineParams, &solver);
     detail::RobustEstimate estimate;
     if (!detail::estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {
