@@ -43,7 +43,7 @@ const char* kUsage =
     "  --confidence ransac confidence, in (0, 1) (default 0.999)\n"
     "  --max-iterations  ransac upper bound on the number of samples (default 10000)\n"
     "  --refine     1: finish with maximum-likelihood refinement over the three views (linear: every\n"
-    "               candidate refined, the best kept; ransac: on the inliers); 0: no refinement.\n"
+    "               candidate and further starts refined, the lowest cost kept; ransac: on the inliers); 0: none.\n"
     "               Default: 0 with linear, 1 with ransac\n"
     "  --seed       ransac sampler seed (default 0)\n";
 

@@ -11,7 +11,8 @@
 #include "../input/problem_input.hpp"
 #include "../linear/linear_solver.hpp"
 #include "../refine/ml_refinement.hpp"
-#include "../refine/structure_refiner.hpp"
+#include "../refine/multi_start_refinement.hpp"
+#include "../refine/multi_start_refiner.hpp"
 #include "../robust/robust_estimator.hpp"
 #include "../scoring/pose_scorer.hpp"
 #include "pose_pipelines.hpp"
@@ -22,22 +23,47 @@ namespace detail {
 
 namespace {
 
-//! Refines every candidate over every view and ranks them by the refined RMS error; candidates
-//! whose refinement has no usable feature are dropped.
+// Refined candidates closer than this (rotation in radians, translation relative to its norm) are
+// one local minimum reached twice.
+constexpr double kSameMinimum = 1e-7;
+
+bool sameMinimum(const CameraPose& a, const CameraPose& b)
+{
+    const double scale = std::max(1e-300, std::max(a.t.norm(), b.t.norm()));
+    return (a.R - b.R).norm() <= kSameMinimum && (a.t - b.t).norm() <= kSameMinimum * scale;
+}
+
+/** Refines every candidate over every view, and from the 26 starts around the best-ranked one
+that keep its rotation and move the centre of the estimated camera (refine/multi_start_refinement.hpp);
+each is re-triangulated until it settles. Returns the distinct minima that use as many features as
+the best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
+known pair or planar structure the linear candidates alone lead refinement to another minimum in
+most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
 void refineCandidates(const ViewSet& views, std::vector<ScoredPose>& candidates)
 {
     const RefineParams params;
+    std::vector<CameraPose> starts;
+    for (const ScoredPose& candidate : candidates)
+        starts.push_back(candidate.pose);
+    if (!candidates.empty())
+        centreDirectionStarts(views, candidates.front().pose, starts);
+    std::vector<LocalMinimum> minima;
+    refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
+    std::stable_sort(minima.begin(), minima.end(),
+                     [](const LocalMinimum& a, const LocalMinimum& b) { return a.betterThan(b); });
     std::vector<ScoredPose> refined;
-    for (ScoredPose candidate : candidates)
+    for (const LocalMinimum& m : minima)
     {
-        const RefinementSummary summary = refinePoseAndStructure(views, candidate.pose, params);
-        if (!std::isfinite(summary.finalRms) || !candidate.pose.allFinite())
+        bool repeated = false;
+        for (const ScoredPose& r : refined)
+            repeated = repeated || sameMinimum(r.pose, m.pose);
+        if (repeated || m.used < minima.front().used)
             continue;
-        candidate.rms = summary.finalRms;
-        refined.push_back(candidate);
+        ScoredPose p;
+        p.pose = m.pose;
+        p.rms = m.rms;
+        refined.push_back(p);
     }
-    std::stable_sort(refined.begin(), refined.end(),
-                     [](const ScoredPose& a, const ScoredPose& b) { return a.rms < b.rms; });
     candidates.swap(refined);
 }
 
@@ -159,7 +185,7 @@ int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacP
 {
     validate(params);
     const PoseScorer scorer(views);
-    const StructureRefiner refiner(views, params.refineParams);
+    const MultiStartRefiner refiner(views, params.refineParams, &solver);
     RobustEstimate estimate;
     if (!estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {

@@ -15,6 +15,10 @@ namespace detail {
 namespace {
 
 constexpr int kLocalOptimizationRounds = 3;
+// Rounds of refinement and inlier re-classification at the end; they settle in one or two.
+constexpr int kSettleRounds = 3;
+// Problems up to this many features are also settled from all of them (run()).
+constexpr int kMaxSettleFromAll = 60;
 // Hypotheses are scored against structure triangulated from the known views alone, which carries
 // the triangulation error of those views on top of the image noise: their residuals are tested
 // against this multiple of the user's threshold. The final inliers use residuals with the feature
@@ -66,9 +70,36 @@ public:
 
         estimate.iterations = iteration;
         estimate.pose = bestPose_;
-        // Refinement on the inliers may change their classification; one more round settles it.
-        estimate.numInliers = inlierMasks(estimate.pose, estimate.pointInliers, estimate.lineInliers);
-        for (int round = 0; round < 2 && refiner_; ++round)
+        double cost = settleInliers(estimate);
+        // A small problem's hypotheses come from four features scored against the known views'
+        // structure alone, which with a narrow known pair leaves true inliers out; refined on that
+        // subset the pose can stay in another basin. Settling from every feature as well, and
+        // keeping the lower truncated cost of residuals re-triangulated in all views, repairs it.
+        if (refiner_ && numFeatures_ <= kMaxSettleFromAll)
+        {
+            RobustEstimate fromAll = estimate;
+            std::fill(fromAll.pointInliers.begin(), fromAll.pointInliers.end(), 1);
+            std::fill(fromAll.lineInliers.begin(), fromAll.lineInliers.end(), 1);
+            const double allCost = settleInliers(fromAll, false);
+            if (allCost < cost)
+            {
+                estimate = fromAll;
+                cost = allCost;
+            }
+        }
+        return estimate.numInliers > 0;
+    }
+
+private:
+    /** Refinement on the inliers and their re-classification until they settle (at most a few rounds):
+    refinement on the inliers may change their classification. @p classify: start from the inliers
+    of the estimate's pose, else from the masks it holds. Returns the truncated cost of the final
+    pose: the sum over features of min(r^2, threshold^2), r re-triangulated from every view. */
+    double settleInliers(RobustEstimate& estimate, bool classify = true)
+    {
+        if (classify)
+            estimate.numInliers = inlierMasks(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+        for (int round = 0; round < kSettleRounds && refiner_; ++round)
         {
             refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers);
             std::vector<unsigned char> points, lines;
@@ -79,10 +110,14 @@ public:
             if (settled)
                 break;
         }
-        return estimate.numInliers > 0;
+        const double t2 = params_.threshold * params_.threshold;
+        double cost = 0;
+        for (const std::vector<double>* r : { &pointResiduals_, &lineResiduals_ })
+            for (double e : *r)
+                cost += std::min(e * e, t2);
+        return cost;
     }
 
-private:
     bool adoptAllFeatureEstimate()
     {
         FeatureSubset all;

@@ -17,7 +17,8 @@ namespace support {
 
 SyntheticSceneParams::SyntheticSceneParams()
     : numPoints(4), numLines(4), motion(MOTION_LARGE), noiseSigma(0.0), outlierRatio(0.0),
-      cubeSize(10.0), cameraDistance(20.0), smallMotionRadius(5.0), imageSize(640, 480), seed(0)
+      cubeSize(10.0), cameraDistance(20.0), smallMotionRadius(5.0), baseline12(0.0),
+      baseline12Fraction(0.0), planar(false), planeTilt(30.0), imageSize(640, 480), seed(0)
 {
 }
 
@@ -41,7 +42,8 @@ enum Stream
     STREAM_POINTS,
     STREAM_LINES,
     STREAM_OUTLIERS,
-    STREAM_NOISE
+    STREAM_NOISE,
+    STREAM_PLANE
 };
 
 //! Seed of one stream: a splitmix64 mix of the user seed and the stream id (cv::RNG needs a
@@ -190,6 +192,19 @@ void validate(const SyntheticSceneParams& p)
         badParam("smallMotionRadius", format("views 2 and 3 could enter the cube: expected cameraDistance - "
                                              "smallMotionRadius > %g (the cube's half diagonal), got %g - %g",
                                              halfDiagonal, p.cameraDistance, p.smallMotionRadius));
+    if (!(p.baseline12 >= 0) || !std::isfinite(p.baseline12))
+        badParam("baseline12", format("expected a finite value >= 0, got %g", p.baseline12));
+    if (!(p.baseline12Fraction >= 0) || !std::isfinite(p.baseline12Fraction))
+        badParam("baseline12Fraction", format("expected a finite value >= 0, got %g", p.baseline12Fraction));
+    if (p.baseline12 > 0 && p.baseline12Fraction > 0)
+        badParam("baseline12Fraction", "expected 0 when baseline12 is set (one baseline, absolute or relative)");
+    const double baseline = p.baseline12 > 0 ? p.baseline12 : p.baseline12Fraction * p.cameraDistance;
+    if (!(p.cameraDistance - baseline > halfDiagonal))
+        badParam(p.baseline12 > 0 ? "baseline12" : "baseline12Fraction",
+                 format("view 2 could enter the cube: expected cameraDistance - baseline > %g (the cube's half "
+                        "diagonal), got %g - %g", halfDiagonal, p.cameraDistance, baseline));
+    if (p.planar && !(p.planeTilt >= 0 && p.planeTilt < 90))
+        badParam("planeTilt", format("expected degrees in [0, 90), got %g", p.planeTilt));
     const int minSide = (int)(2 * kImageMarginPx) + 2;
     if (p.imageSize.width < minSide || p.imageSize.height < minSide)
         badParam("imageSize", format("expected both sides >= %d px, got %dx%d", minSide,
@@ -211,6 +226,12 @@ void placeCameras(const SyntheticSceneParams& p, const Matx33d K[3], ViewGeometr
         else // uniform in the ball of radius smallMotionRadius around view 1
             centres[v] = centres[0] + p.smallMotionRadius * std::cbrt(rng.uniform(0.0, 1.0)) * randomUnitVector(rng);
     }
+    const double baseline = p.baseline12 > 0 ? p.baseline12 : p.baseline12Fraction * p.cameraDistance;
+    if (baseline > 0)
+    {
+        // Drawn after the regime's centres, so that view 3 of a seed stays where it was.
+        centres[1] = centres[0] + baseline * randomUnitVector(rng);
+    }
     for (int v = 0; v < 3; ++v)
         rotations[v] = lookAtOrigin(centres[v], rng.uniform(0.0, 2.0 * CV_PI));
 
@@ -227,10 +248,52 @@ void placeCameras(const SyntheticSceneParams& p, const Matx33d K[3], ViewGeometr
     views[0].t = Vec3d(0, 0, 0);
 }
 
-Vec3d randomCubePoint(RNG& rng, double halfSize, const Matx33d& R, const Vec3d& t)
+/** Where the structure is drawn, in the frame of view 1: the cube, or a square on a plane through
+its centre spanned by the orthonormal axes u, v. */
+struct StructureRegion
 {
-    const Vec3d Xw(rng.uniform(-halfSize, halfSize), rng.uniform(-halfSize, halfSize), rng.uniform(-halfSize, halfSize));
-    return R * Xw + t;
+    double halfSize = 0;
+    Matx33d R;  //!< world to view 1
+    Vec3d t;
+    bool planar = false;
+    Vec3d centre, u, v;
+};
+
+StructureRegion makeRegion(const SyntheticSceneParams& p, const Matx33d& toView1R, const Vec3d& toView1t)
+{
+    StructureRegion region;
+    region.halfSize = 0.5 * p.cubeSize;
+    region.R = toView1R;
+    region.t = toView1t;
+    region.planar = p.planar;
+    if (!p.planar)
+        return region;
+    // In view 1's frame the cube centre is at toView1t on the optical axis. The normal starts on
+    // the axis (facing view 1) and is turned by the tilt about a random axis across it.
+    RNG rng = makeStream(p.seed, STREAM_PLANE);
+    const double phi = rng.uniform(0.0, 2.0 * CV_PI);
+    const Vec3d across(std::cos(phi), std::sin(phi), 0.0);
+    const double tilt = p.planeTilt * CV_PI / 180.0;
+    const Vec3d normal = std::cos(tilt) * Vec3d(0, 0, -1) + std::sin(tilt) * across;
+    Vec3d u = normal.cross(Vec3d(0, 0, 1)).cross(normal);
+    if (norm(u) < 1e-9) // facing view 1 exactly: any in-plane axis
+        u = Vec3d(1, 0, 0);
+    u *= 1.0 / norm(u);
+    const double psi = rng.uniform(0.0, 2.0 * CV_PI); // random in-plane orientation of the square
+    const Vec3d w = normal.cross(u);
+    region.u = std::cos(psi) * u + std::sin(psi) * w;
+    region.v = normal.cross(region.u);
+    region.centre = toView1t;
+    return region;
+}
+
+Vec3d randomStructurePoint(RNG& rng, const StructureRegion& region)
+{
+    const double h = region.halfSize;
+    if (region.planar)
+        return region.centre + rng.uniform(-h, h) * region.u + rng.uniform(-h, h) * region.v;
+    const Vec3d Xw(rng.uniform(-h, h), rng.uniform(-h, h), rng.uniform(-h, h));
+    return region.R * Xw + region.t;
 }
 
 } // namespace
@@ -248,7 +311,7 @@ SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
 
     const int N = params.numPoints, M = params.numLines;
     const Size size = params.imageSize;
-    const double halfSize = 0.5 * params.cubeSize;
+    const StructureRegion region = makeRegion(params, toView1R, toView1t);
 
     SyntheticScene scene;
     scene.points3d.create(N, 3, CV_64F);
@@ -272,7 +335,7 @@ SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
         {
             if (attempt == kMaxAttemptsPerFeature)
                 infeasible("point projecting inside all three images");
-            X = randomCubePoint(pointRng, halfSize, toView1R, toView1t);
+            X = randomStructurePoint(pointRng, region);
             bool ok = true;
             for (int v = 0; v < 3 && ok; ++v)
                 ok = project(views[v], X, x[v]) && insideImage(x[v], size);
@@ -300,8 +363,8 @@ SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
             if (attempt == kMaxAttemptsPerFeature)
                 infeasible(format("segment inside all three images and at least %g px long in each",
                                   kMinSegmentLengthPx).c_str());
-            A = randomCubePoint(lineRng, halfSize, toView1R, toView1t);
-            B = randomCubePoint(lineRng, halfSize, toView1R, toView1t);
+            A = randomStructurePoint(lineRng, region);
+            B = randomStructurePoint(lineRng, region);
             bool ok = true;
             for (int v = 0; v < 3 && ok; ++v)
                 ok = project(views[v], A, a[v]) && project(views[v], B, b[v]) && insideImage(a[v], size) &&

@@ -18,9 +18,9 @@ namespace tripose {
 enum PoseMethod
 {
     POSE_LINEAR = 0,        //!< The unified linear solver of @cite QadirNeubert2017 on all features (no outlier rejection).
-    POSE_LINEAR_REFINE = 1, //!< POSE_LINEAR, then every candidate refined by refinePoseLinePoint() (default
-                            //!< RefineParams) and the candidates ranked by their refined reprojection error over
-                            //!< the three views (no outlier rejection).
+    POSE_LINEAR_REFINE = 1, //!< POSE_LINEAR, then maximum-likelihood refinement (default RefineParams) over the
+                            //!< three views from every candidate and from further starts; the distinct minima
+                            //!< ranked by their reprojection error (no outlier rejection).
 };
 
 /** @brief Estimates the pose of a third calibrated view from point and line triplets, the poses of
@@ -41,8 +41,12 @@ put most of it behind view 3 are dropped and the rest are ranked by their RMS re
 view 3 (points: pixel distance; segments: distances of both end points to the projected line).
 Four or five features whose constraints are dependent (e.g. collinear points) give no candidate.
 
-With POSE_LINEAR_REFINE every candidate is then refined by refinePoseLinePoint() and the candidates
-are ranked by their refined RMS reprojection error over the three views.
+With POSE_LINEAR_REFINE every candidate is then refined over the three views, and so are 26 starts
+that keep the best-ranked candidate's rotation and move view 3's centre around view 1 at the same
+distance; each refinement is repeated from its result with the structure triangulated afresh until
+it settles. The distinct minima that use every usable feature are returned, ranked by their RMS
+reprojection error over the three views: with a narrow known baseline or planar structure the
+linear candidates alone lead to another local minimum in many scenes (doc/accuracy.md).
 
 Any mix of at least four features works (4 points, 4 lines, 2 points + 2 lines, 3 + 1, 1 + 3 and
 anything larger).

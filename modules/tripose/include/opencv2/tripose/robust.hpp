@@ -49,8 +49,13 @@ solver of estimatePoseLinePoint() handles), with:
 - with few features (at most 1024 distinct samples, and no more than maxIterations), every distinct
   sample drawn once instead, in an order set by the seed; when none has support, the linear solution
   over all features goes on to the inlier test;
-- final maximum-likelihood refinement (refinePoseLinePoint() with RansacParams::refineParams) on the
-  inliers, the inliers then re-classified and the refinement repeated once if they changed.
+- final maximum-likelihood refinement (as refinePoseLinePoint(), with RansacParams::refineParams) on
+  the inliers, the inliers then re-classified and the refinement repeated until they settle (at most
+  three rounds). With at most 60 inliers the refinement also starts from the linear solution on the
+  inliers and from 26 starts that keep the rotation and move view 3's centre around view 1, each
+  re-triangulated until it settles, and keeps the lowest cost; with at most 60 features the same is
+  done from all features too, and the lower truncated cost of the two wins. A narrow baseline of
+  views 1-2 or planar structure otherwise leaves the pose in another local minimum in many scenes.
 
 Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.

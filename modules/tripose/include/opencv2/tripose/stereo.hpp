@@ -37,7 +37,8 @@ rig's translation enters as a constant), so the system is \f$A v = b\f$ and the 
 1 point + 2 lines) determine the motion; two lines, or one point and one line, seen in both give up
 to a few candidates. Candidates that put most of the structure (triangulated from views 1-2) behind
 view 3 or 4 are dropped and the rest are ranked by their RMS reprojection error in views 3 and 4;
-with POSE_LINEAR_REFINE each is refined by refinePoseLinePointStereo() and ranked by its refined error.
+with POSE_LINEAR_REFINE each is refined over the four views, together with further starts as for
+estimatePoseLinePoint(), and the distinct minima are ranked by their refined error.
 
 @param points1 Points in view 1: Nx2 1-channel or 1xN/Nx1 2-channel, CV_32F or CV_64F, pixels. N may be 0.
 @param points2 The same N points in view 2 (all seen).

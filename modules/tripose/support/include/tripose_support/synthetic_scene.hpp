@@ -38,6 +38,21 @@ struct SyntheticSceneParams
     double cubeSize;          //!< Edge (m) of the cube holding the structure.
     double cameraDistance;    //!< Distance (m) of view 1 (and of views 2, 3 in large motion) from the origin.
     double smallMotionRadius; //!< Radius (m) around view 1 of views 2 and 3 in small motion.
+    /** Distance (m) of view 2 from view 1 (the known pair's baseline), in a uniformly random
+    direction, view 2 looking at the origin; view 3 is still placed by #motion. 0 (default): view 2
+    is placed by #motion like view 3. At most one of baseline12 and baseline12Fraction is non-zero. */
+    double baseline12;
+    //! The same as a fraction of cameraDistance (the depth of the cube centre in view 1): 0.01 is a
+    //! baseline of 1 % of the depth. 0 (default): not used.
+    double baseline12Fraction;
+    /** true: every point and segment end point lies on one plane through the cube centre (the
+    facade case) instead of filling the cube, uniform in the square of side cubeSize on that plane
+    centred at the cube centre. Default false. */
+    bool planar;
+    /** Angle (degrees, [0, 90)) between the plane's normal and the direction from the cube centre
+    to view 1: 0 faces view 1, larger values turn the plane away from it about a random axis
+    perpendicular to view 1's viewing direction. Default 30. Used when planar is true. */
+    double planeTilt;
     Size imageSize;           //!< Image size of every view (px); features are kept inside it in all three views.
     /** Empty: f = 800 px, principal point at the image centre. Else one 3x3 matrix shared by the
     views or three: finite, with last row (0, 0, k) and k != 0 (returned scaled to k = 1). Nothing
@@ -64,11 +79,14 @@ struct SyntheticScene
 /** @brief Generates a random three-view scene of points and line segments following the synthetic
 protocol of Qadir & Neubert (Sec. IV-A).
 
-Points and segment end points are uniform in the cube centred at the world origin. View 1 is at
-cameraDistance from the origin in a uniformly random direction, looking at the origin with a random
-roll; views 2 and 3 are placed the same way (#MOTION_LARGE) or uniformly in the ball of radius
-smallMotionRadius around view 1, looking at the origin (#MOTION_SMALL). Everything is then
-expressed in the frame of view 1, where the cube centre is at (0, 0, cameraDistance).
+Points and segment end points are uniform in the cube centred at the world origin (or, with
+SyntheticSceneParams::planar, in a square on a plane through it). View 1 is at cameraDistance from
+the origin in a uniformly random direction, looking at the origin with a random roll; views 2 and 3
+are placed the same way (#MOTION_LARGE) or uniformly in the ball of radius smallMotionRadius around
+view 1, looking at the origin (#MOTION_SMALL). A non-zero baseline12 (or baseline12Fraction) puts
+view 2 at that distance from view 1 instead: the narrow known pair of a stereo rig or of the start
+of a sequence. Everything is then expressed in the frame of view 1, where the cube centre is at
+(0, 0, cameraDistance).
 
 Features are rejection-sampled: before noise, every point and both end points of every segment
 project at least 2 px inside the image in all three views, in front of every camera, and every
@@ -79,8 +97,8 @@ replaced by a random one in the image that is at least 20 px from consistent (po
 largest end-point distance to the true image line); their mask entry is 0.
 
 Deterministic for a given seed and thread-safe (no global state). The cameras, points, lines,
-outliers and noise use separate random streams, so that e.g. changing noiseSigma or numLines keeps
-the cameras and points of a seed.
+outliers, noise and the plane use separate random streams, so that e.g. changing noiseSigma or
+numLines keeps the cameras and points of a seed.
 @throws cv::Exception naming the parameter when a parameter is out of range, or when no feature can
 be placed inside all three images (e.g. a principal point far outside the image).
 */

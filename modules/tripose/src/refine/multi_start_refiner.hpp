@@ -1,0 +1,63 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_REFINE_MULTI_START_REFINER_HPP
+#define OPENCV_TRIPOSE_REFINE_MULTI_START_REFINER_HPP
+
+#include "../robust/pose_solver.hpp"
+#include "multi_start_refinement.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+/** The robust estimator's final stage: maximum-likelihood refinement
+over every view from the estimator's pose, from the solver's estimates on the inliers (when it has
+one and they are enough) and from the 26 starts of centreDirectionStarts() around the estimator's
+pose, each re-triangulated until it settles, the lowest cost kept (refine/multi_start_refinement.hpp).
+Sets larger than kMaxMultiStartFeatures are refined once from the estimator's pose: there the
+samples and local optimisation already put it in the right basin, and 27 starts would cost more
+than the rest of the estimator.
+*/
+class MultiStartRefiner : public PoseRefiner
+{
+public:
+    static constexpr int kMaxMultiStartFeatures = 60;
+
+    MultiStartRefiner(const ViewSet& set, const RefineParams& params, const PoseSolver* solver = nullptr)
+        : set_(set), params_(params), solver_(solver)
+    {}
+
+    bool refine(const FeatureSubset& inliers, CameraPose& pose) const CV_OVERRIDE
+    {
+        // Fewer than three features leave the pose and structure under-determined.
+        if (inliers.size() < 3)
+            return false;
+        if (inliers.size() > kMaxMultiStartFeatures)
+        {
+            refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
+            return true;
+        }
+        std::vector<CameraPose> starts(1, pose);
+        if (solver_ && inliers.size() >= solver_->nonMinimalSize())
+            solver_->estimateNonMinimal(inliers, starts);
+        centreDirectionStarts(set_, pose, starts);
+        const LocalMinimum best = refineFromStarts(set_, starts, params_, &inliers.points, &inliers.lines);
+        if (!best.finite())
+            return false;
+        pose = best.pose;
+        return true;
+    }
+
+private:
+    const ViewSet& set_;
+    const RefineParams& params_;
+    const PoseSolver* solver_;
+};
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_REFINE_MULTI_START_REFINER_HPP
