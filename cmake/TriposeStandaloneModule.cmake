@@ -15,7 +15,10 @@ function(tripose_add_module_targets)
     EXPORT_NAME tripose
     VERSION ${PROJECT_VERSION}
     SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
-    POSITION_INDEPENDENT_CODE ON)
+    POSITION_INDEPENDENT_CODE ON
+    # As OpenCV builds modules: only what carries CV_EXPORTS (the public API) leaves the library.
+    CXX_VISIBILITY_PRESET hidden
+    VISIBILITY_INLINES_HIDDEN ON)
   target_include_directories(opencv_tripose
     PUBLIC
       $<BUILD_INTERFACE:${module_dir}/include>
