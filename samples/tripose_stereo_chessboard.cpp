@@ -490,7 +490,7 @@ void drawCurve(cv::Mat& image, const cv::Point3d& p, const cv::Point3d& q, const
     std::vector<cv::Point> polyline;
     for (const cv::Point2d& x : pixels)
         polyline.emplace_back(cvRound(x.x * 16), cvRound(x.y * 16));
-    cv::polylines(image, polyline, false, colour, 2, cv::LINE_AA, 4);
+    cv::polylines(image, polyline, false, colour, 1, cv::LINE_AA, 4);
 }
 
 void writeOverlay(const std::string& path, const Frame& b, const std::vector<int>& assignedSegments,
@@ -503,7 +503,7 @@ void writeOverlay(const std::string& path, const Frame& b, const std::vector<int
         cv::line(image, cv::Point2f(s[0], s[1]), cv::Point2f(s[2], s[3]), cv::Scalar(160, 160, 160), 1, cv::LINE_AA);
     for (int s : assignedSegments) // those on a board line, red
         cv::line(image, cv::Point2f(b.segments[0][s][0], b.segments[0][s][1]),
-                 cv::Point2f(b.segments[0][s][2], b.segments[0][s][3]), cv::Scalar(0, 0, 255), 2, cv::LINE_AA);
+                 cv::Point2f(b.segments[0][s][2], b.segments[0][s][3]), cv::Scalar(0, 0, 255), 3, cv::LINE_AA);
     if (e.ok)
     {
         // The board lines, one square beyond the outer corners, placed by the board pose at A and
