@@ -18,7 +18,8 @@
 // the detector's. Distortion is passed to the module, which undistorts the observations itself.
 // Ground truth: the board pose in the left camera at A and at B (cv::solvePnP on the corners with
 // the board's known geometry) gives the motion. Printed per pair: the errors of the stereo RANSAC
-// (with refinement), the stereo linear solver and the three-view RANSAC on views 1-3.
+// (with refinement) and the stereo linear solver, and those of the three-view RANSAC and linear
+// solver on views 1-3 (the right image at B unused).
 // --output writes the calibration and, per pair, the features, ground truth and estimates
 // (FileStorage, YAML or JSON by extension); --overlay (one pair) draws the board lines moved by the
 // estimated motion over the left image at B, with the detected segments.
@@ -614,8 +615,10 @@ int run(const Options& o)
     const std::vector<cv::Mat> dist4 = { rig.dist[0], rig.dist[1], rig.dist[0], rig.dist[1] };
     cv::tripose::RansacParams params;
     params.threshold = o.threshold;
-    std::cout << "pair    frames          points lines(3/4) |  stereo RANSAC   |  stereo linear   | three-view RANSAC\n"
-              << "                                          |  rot deg   t %   |  rot deg   t %   |  rot deg   t %\n";
+    const char* methodKeys[] = { "stereo_ransac", "stereo_linear", "three_view_ransac", "three_view_linear" };
+    std::cout << "Rotation error (deg) and translation error (% of |t|) of each method against the board's ground truth\n"
+              << cv::format("%-6s  %-22s %6s %-12s", "pair", "images (left)", "points", "lines at B")
+              << "|  stereo RANSAC   |  stereo linear   |  3-view RANSAC   |  3-view linear\n";
     for (const auto& ab : pairs)
     {
         const Frame& A = usable[ab.first];
@@ -629,8 +632,10 @@ int run(const Options& o)
         boardPose(B.corners[0], o.board, o.square, rig.K[0], rig.dist[0], RB, tB);
         const cv::Mat Rgt = RB * RA.t(), tgt = tB - Rgt * tA;
 
-        // A method that throws (too few features of the kinds it uses) has failed on this pair.
-        auto attempt = [](Estimate& e, const std::function<void()>& call) {
+        // In methodKeys' order. A method that throws (too few features of the kinds it uses) has
+        // failed on this pair.
+        Estimate estimates[4];
+        auto attempt = [&](Estimate& e, const std::function<void()>& call) {
             try
             {
                 call();
@@ -639,33 +644,40 @@ int run(const Options& o)
             {
                 e = Estimate();
             }
+            score(e, Rgt, tgt);
         };
-        Estimate ransac, linear, threeView;
+        Estimate& ransac = estimates[0];
         attempt(ransac, [&] {
             ransac.inliers = cv::tripose::estimatePoseLinePointStereoRansac(
                 p.points[0], p.points[1], p.points[2], p.points[3], p.lines[0], p.lines[1], p.lines[2], p.lines[3],
                 K4, dist4, rig.R12, rig.t12, ransac.R, ransac.t, params);
             ransac.ok = !ransac.R.empty();
         });
-        attempt(linear, [&] {
-            linear.ok = cv::tripose::estimatePoseLinePointStereo(p.points[0], p.points[1], p.points[2], p.points[3],
-                                                                 p.lines[0], p.lines[1], p.lines[2], p.lines[3], K4,
-                                                                 dist4, rig.R12, rig.t12, linear.R, linear.t) > 0;
+        attempt(estimates[1], [&] {
+            estimates[1].ok = cv::tripose::estimatePoseLinePointStereo(
+                p.points[0], p.points[1], p.points[2], p.points[3], p.lines[0], p.lines[1], p.lines[2], p.lines[3],
+                K4, dist4, rig.R12, rig.t12, estimates[1].R, estimates[1].t) > 0;
         });
         const std::vector<cv::Mat> K3(K4.begin(), K4.begin() + 3), dist3(dist4.begin(), dist4.begin() + 3);
-        attempt(threeView, [&] {
-            threeView.inliers = cv::tripose::estimatePoseLinePointRansac(
+        attempt(estimates[2], [&] {
+            estimates[2].inliers = cv::tripose::estimatePoseLinePointRansac(
                 p.points[0], p.points[1], p.points[2], p.lines3View[0], p.lines3View[1], p.lines3View[2], K3, dist3,
-                rig.R12, rig.t12, threeView.R, threeView.t, params);
-            threeView.ok = !threeView.R.empty();
+                rig.R12, rig.t12, estimates[2].R, estimates[2].t, params);
+            estimates[2].ok = !estimates[2].R.empty();
         });
-        for (Estimate* e : { &ransac, &linear, &threeView })
-            score(*e, Rgt, tgt);
+        attempt(estimates[3], [&] {
+            estimates[3].ok = cv::tripose::estimatePoseLinePoint(p.points[0], p.points[1], p.points[2],
+                                                                 p.lines3View[0], p.lines3View[1], p.lines3View[2],
+                                                                 K3, dist3, rig.R12, rig.t12, estimates[3].R,
+                                                                 estimates[3].t) > 0;
+        });
 
-        const std::string names = A.name[0] + "/" + B.name[0];
-        std::cout << cv::format("%2d,%-3d  %-22s %3d  %3d/%-3d   | %s | %s | %s\n", ab.first, ab.second, names.c_str(),
-                                p.points[0].rows, p.linesSeenBy3, p.linesSeenBy4, formatError(ransac).c_str(),
-                                formatError(linear).c_str(), formatError(threeView).c_str());
+        const std::string names = A.name[0] + " " + B.name[0];
+        std::cout << cv::format("%2d,%-3d  %-22s %6d %3d/%-8d", ab.first, ab.second, names.c_str(),
+                                p.points[0].rows, p.linesSeenBy3, p.linesSeenBy4);
+        for (const Estimate& e : estimates)
+            std::cout << "| " << formatError(e) << " ";
+        std::cout << "\n";
 
         if (out.isOpened())
         {
@@ -675,9 +687,8 @@ int run(const Options& o)
                 out << "points" + std::to_string(v + 1) << (p.points[v].empty() ? cv::Mat(0, 2, CV_64F) : p.points[v])
                     << "lines" + std::to_string(v + 1) << p.lines[v];
             out << "R_gt" << Rgt << "t_gt" << tgt;
-            writeEstimate(out, "stereo_ransac", ransac);
-            writeEstimate(out, "stereo_linear", linear);
-            writeEstimate(out, "three_view_ransac", threeView);
+            for (int m = 0; m < 4; ++m)
+                writeEstimate(out, methodKeys[m], estimates[m]);
             out << "}";
         }
         if (!o.overlay.empty())

@@ -43,8 +43,10 @@ METHODS = {
     "stereo_ransac": "stereo RANSAC + refine (ours)",
     "stereo_linear": "stereo linear (ours)",
     "three_view_ransac": "three-view RANSAC + refine, views 1-3 (ours)",
+    "three_view_linear": "three-view linear, views 1-3 (ours)",
     "stereo_ransac_lines": "stereo RANSAC + refine, lines only (ours)",
     "stereo_linear_lines": "stereo linear, lines only (ours)",
+    "three_view_ransac_lines": "three-view RANSAC + refine, lines only (ours)",
     "tri+sqpnp": "triangulate + SQPnP",
     "tri+iterative": "triangulate + solvePnP ITERATIVE",
     "tri+poselib": "triangulate + PoseLib PnPL",
@@ -81,7 +83,7 @@ def run_sample(tool, features, path):
             for v in range(1, 5):
                 m = p.getNode(f"{kind}{v}").mat()
                 pair[f"{kind}{v}"] = np.zeros((0, 2 if kind == "points" else 4)) if m is None else m
-        for key in ("stereo_ransac", "stereo_linear", "three_view_ransac"):
+        for key in ("stereo_ransac", "stereo_linear", "three_view_ransac", "three_view_linear"):
             e = p.getNode(key)
             pair[key] = ({"ok": True, "rot_deg": e.getNode("rot_deg").real(), "t_rel": e.getNode("t_rel").real()}
                          if int(e.getNode("ok").real()) else {"ok": False})
@@ -156,9 +158,10 @@ def evaluate(tool):
         _, lines_only = run_sample(tool, "lines", Path(tmp) / "lines.yml")
     rows = []
     for i, (pair, lp) in enumerate(zip(pairs, lines_only)):
-        methods = {k: pair[k] for k in ("stereo_ransac", "stereo_linear", "three_view_ransac")}
+        methods = {k: pair[k] for k in ("stereo_ransac", "stereo_linear", "three_view_ransac", "three_view_linear")}
         methods["stereo_ransac_lines"] = lp["stereo_ransac"]
         methods["stereo_linear_lines"] = lp["stereo_linear"]
+        methods["three_view_ransac_lines"] = lp["three_view_ransac"]
         methods.update(peers(rig, pair, seed=i))
         rows.append({"frames": [pair["frame_a"], pair["frame_b"]], "images": [pair["left_a"], pair["left_b"]],
                      "points": int(len(pair["points1"])),
