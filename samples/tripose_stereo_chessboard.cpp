@@ -58,8 +58,8 @@ const char* kUsage =
     "               right alternating (default stereo_calib.xml)\n"
     "  --board      inner corners per row x per column (default 9x6)\n"
     "  --square     side of a board square; the unit of every translation (default 1)\n"
-    "  --pairs      frame pairs (A, B), frames numbered from 0 in list order: all (every A < B, default),\n"
-    "               consecutive, or one pair i,j\n"
+    "  --pairs      frame pairs (A, B): all (every A < B, default), consecutive, or one pair i,j; frames are\n"
+    "               numbered from 0 in list order, counting those where both images show the whole board\n"
     "  --features   features given to the estimators: all (default), points (corners) or lines\n"
     "  --threshold  RANSAC inlier threshold in pixels (default 2)\n"
     "  --output     write calibration, features, ground truth and estimates (.yml, .yaml or .json)\n"
@@ -188,7 +188,8 @@ std::vector<Frame> readImageList(const std::string& data, const std::string& lis
         throw std::runtime_error("file " + path + ": cannot be opened");
     const cv::FileNode node = fs["imagelist"];
     if (!node.isSeq() || node.size() == 0 || node.size() % 2 != 0)
-        throw std::runtime_error("file " + path + ": 'imagelist' must be a non-empty sequence of left and right image names");
+        throw std::runtime_error("file " + path +
+                                 ": 'imagelist' must be a non-empty sequence of left and right image names");
     std::vector<Frame> frames(node.size() / 2);
     for (size_t i = 0; i < node.size(); ++i)
     {
@@ -279,7 +280,7 @@ std::vector<cv::Point2d> undistortPixels(const std::vector<cv::Point2d>& pixels,
 // A detected segment belongs to a board line when both its end points lie within this distance of
 // the line through that row's or column's corners (after undistortion): wide enough for the
 // corner and calibration errors (a few tenths of a pixel), narrow against the neighbouring line,
-// which is a square (over 10 px here) away.
+// which is a square away (19 px or more in OpenCV's sample images).
 const double kAssociationPx = 1.5;
 // Shorter segments are mostly texture at the corners; their direction is unreliable.
 const double kMinSegmentPx = 8.0;
@@ -578,7 +579,8 @@ int run(const Options& o)
     }
     if (usable.size() < 2)
         throw std::runtime_error("file " + o.data + "/" + o.list + ": fewer than two frames show the whole " +
-                                 std::to_string(o.board.width) + "x" + std::to_string(o.board.height) + " board in both images");
+                                 std::to_string(o.board.width) + "x" + std::to_string(o.board.height) +
+                                 " board in both images");
     const std::vector<std::pair<int, int>> pairs = framePairs(o.pairs, (int)usable.size());
     if (!o.overlay.empty() && pairs.size() != 1)
         throw argumentError("--overlay", "needs a single pair (--pairs i,j)");
