@@ -416,7 +416,6 @@ struct PairProblem
 {
     cv::Mat points[4], lines[4];   // views: left A, right A, left B, right B
     cv::Mat lines3View[3];         // the lines seen in view 3
-    std::vector<int> lineIndex;    // board line of each row of lines[*]
     int linesSeenBy3 = 0, linesSeenBy4 = 0;
 };
 
@@ -440,7 +439,6 @@ PairProblem buildProblem(const Frame& a, const Frame& b, const cv::Mat observed[
         const bool seen3 = finiteRow(observed[2], l), seen4 = finiteRow(observed[3], l);
         if (!finiteRow(observed[0], l) || !finiteRow(observed[1], l) || !(seen3 || seen4))
             continue;
-        p.lineIndex.push_back(l);
         for (int v = 0; v < 4; ++v)
             p.lines[v].push_back(observed[v].row(l));
         p.linesSeenBy3 += seen3;
