@@ -57,7 +57,7 @@ TEST(Tripose_Concurrency, threads_on_shared_inputs_give_bit_identical_results)
         ASSERT_FALSE(reference.back().R.empty());
     }
 
-    const int numThreads = 8, rounds = 3;
+    const int numThreads = 8, rounds = 1;
     std::vector<int> mismatches(numThreads, 0);
     std::vector<std::thread> threads;
     for (int k = 0; k < numThreads; ++k)
