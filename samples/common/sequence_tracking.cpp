@@ -1,0 +1,115 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "sequence_tracking.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace tripose_samples {
+
+namespace {
+
+// The linear method needs four features; with fewer shared with the window the frame is lost.
+const int kMinFeatures = 4;
+
+bool seen(const cv::Mat& rows, int i)
+{
+    return !rows.empty() && !std::isnan(rows.at<double>(i, 0));
+}
+
+//! The rows @p keep of @p rows (CV_64F), as a new matrix; empty when none are kept.
+cv::Mat selectRows(const cv::Mat& rows, const std::vector<int>& keep)
+{
+    if (keep.empty())
+        return cv::Mat();
+    cv::Mat out((int)keep.size(), rows.cols, CV_64F);
+    for (size_t k = 0; k < keep.size(); ++k)
+        rows.row(keep[k]).copyTo(out.row((int)k));
+    return out;
+}
+
+//! Features of kind @p rows (one Mat per frame) seen by @p frame and at least two of @p window.
+std::vector<int> sharedFeatures(const std::vector<cv::Mat>& rows, int frame, const std::vector<int>& window)
+{
+    std::vector<int> shared;
+    const int n = rows[frame].empty() ? 0 : rows[frame].rows;
+    for (int i = 0; i < n; ++i)
+    {
+        if (!seen(rows[frame], i))
+            continue;
+        int count = 0;
+        for (int w : window)
+            count += seen(rows[w], i) ? 1 : 0;
+        if (count >= 2)
+            shared.push_back(i);
+    }
+    return shared;
+}
+
+} // namespace
+
+std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options)
+{
+    CV_Assert(options.window >= 2);
+    const int F = (int)sequence.cameraMatrices.size();
+    CV_Assert(F >= 2 && (int)sequence.points.size() == F && (int)sequence.lines.size() == F);
+    std::vector<TrackedFrame> frames(F);
+    frames[0].status = frames[1].status = FRAME_GIVEN;
+    sequence.R0.convertTo(frames[0].R, CV_64F);
+    sequence.t0.convertTo(frames[0].t, CV_64F);
+    sequence.R1.convertTo(frames[1].R, CV_64F);
+    sequence.t1.convertTo(frames[1].t, CV_64F);
+
+    for (int k = 2; k < F; ++k)
+    {
+        TrackedFrame& frame = frames[k];
+        const int64 start = cv::getTickCount();
+        std::vector<int> window;
+        for (int j = k - 1; j >= 0 && (int)window.size() < options.window; --j)
+            if (frames[j].status != FRAME_LOST)
+                window.insert(window.begin(), j);
+        const std::vector<int> points = sharedFeatures(sequence.points, k, window);
+        const std::vector<int> lines = sharedFeatures(sequence.lines, k, window);
+        frame.features = (int)(points.size() + lines.size());
+        frame.knownViews = (int)window.size();
+        if (frame.features < kMinFeatures)
+        {
+            frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
+            continue; // lost: nothing to register against
+        }
+
+        std::vector<cv::Mat> p, l, K, Rs, ts;
+        for (int w : window)
+        {
+            p.push_back(selectRows(sequence.points[w], points));
+            l.push_back(selectRows(sequence.lines[w], lines));
+            K.push_back(sequence.cameraMatrices[w]);
+            Rs.push_back(frames[w].R);
+            ts.push_back(frames[w].t);
+        }
+        p.push_back(selectRows(sequence.points[k], points));
+        l.push_back(selectRows(sequence.lines[k], lines));
+        K.push_back(sequence.cameraMatrices[k]);
+        if (points.empty())
+            p.clear();
+        if (lines.empty())
+            l.clear();
+
+        cv::Mat R, t;
+        if (options.robust)
+            frame.inliers = cv::tripose::estimatePoseMultiViewRansac(p, l, K, cv::noArray(), Rs, ts, R, t, options.ransac);
+        else
+            frame.inliers = cv::tripose::estimatePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t) > 0 ? frame.features : 0;
+        frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
+        if (frame.inliers == 0 || R.empty())
+            continue; // lost: no pose
+        frame.status = FRAME_REGISTERED;
+        frame.R = R;
+        frame.t = t;
+    }
+    return frames;
+}
+
+} // namespace tripose_samples
