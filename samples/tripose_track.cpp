@@ -32,10 +32,12 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
-    "                     [--method ransac|linear] [--threshold px] [--seed n]\n"
+    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine sweeps]\n"
     "  --window N     register each frame against the last N frames with a pose (default 3, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
+    "  --local-refine after each registration, refine every registered frame of the window in turn against\n"
+    "                 all other frames (this many sweeps; default 0: off)\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
     "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
@@ -50,7 +52,8 @@ Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
-    const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed" };
+    const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
+                                             "--local-refine" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known))
     {
         const std::string& arg = option.first;
@@ -63,6 +66,8 @@ Options parseArguments(int argc, char** argv)
             o.plot = value;
         else if (arg == "--method")
             o.method = value;
+        else if (arg == "--local-refine")
+            o.track.refinementSweeps = parseInteger(arg, value, 0.0);
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--threshold")
@@ -261,7 +266,8 @@ int main(int argc, char** argv)
     try
     {
         tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
-            fs << "sequence" << options.data << "window" << options.track.window << "method" << options.method;
+            fs << "sequence" << options.data << "window" << options.track.window << "method" << options.method
+               << "local_refine_sweeps" << options.track.refinementSweeps;
             fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
             fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
             fs << "path_length" << pathLength << "drift_percent" << drift;

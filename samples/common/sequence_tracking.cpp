@@ -48,6 +48,78 @@ std::vector<int> sharedFeatures(const std::vector<cv::Mat>& rows, int frame, con
     return shared;
 }
 
+/** Registration data of frame @p frame against the frames @p known: the features it shares with at
+least two of them, one array per known frame, then the frame's own. False when fewer than four.
+*/
+bool gatherViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
+                 const std::vector<int>& known, std::vector<cv::Mat>& p, std::vector<cv::Mat>& l,
+                 std::vector<cv::Mat>& K, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts, int& features)
+{
+    const std::vector<int> points = sharedFeatures(sequence.points, frame, known);
+    const std::vector<int> lines = sharedFeatures(sequence.lines, frame, known);
+    features = (int)(points.size() + lines.size());
+    if (features < kMinFeatures)
+        return false;
+    p.clear();
+    l.clear();
+    K.clear();
+    Rs.clear();
+    ts.clear();
+    for (int w : known)
+    {
+        p.push_back(selectRows(sequence.points[w], points));
+        l.push_back(selectRows(sequence.lines[w], lines));
+        K.push_back(sequence.cameraMatrices[w]);
+        Rs.push_back(frames[w].R);
+        ts.push_back(frames[w].t);
+    }
+    p.push_back(selectRows(sequence.points[frame], points));
+    l.push_back(selectRows(sequence.lines[frame], lines));
+    K.push_back(sequence.cameraMatrices[frame]);
+    if (points.empty())
+        p.clear();
+    if (lines.empty())
+        l.clear();
+    return true;
+}
+
+//! The alternating local refinement of TrackOptions::refinementSweeps after frame @p k is registered.
+void refineWindow(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, const std::vector<int>& window,
+                  int k, const TrackOptions& options)
+{
+    std::vector<int> posed;
+    for (int j = 0; j <= k; ++j)
+        if (frames[j].status != FRAME_LOST)
+            posed.push_back(j);
+    std::vector<int> free;
+    for (int j : window)
+        if (frames[j].status == FRAME_REGISTERED)
+            free.push_back(j);
+    free.push_back(k);
+    cv::tripose::RefineParams params;
+    params.loss = cv::tripose::LOSS_HUBER;
+    params.lossScale = options.ransac.threshold;
+    std::vector<cv::Mat> p, l, K, Rs, ts;
+    for (int sweep = 0; sweep < options.refinementSweeps; ++sweep)
+        for (int j : free)
+        {
+            std::vector<int> others;
+            for (int o : posed)
+                if (o != j)
+                    others.push_back(o);
+            int features = 0;
+            if (!gatherViews(sequence, frames, j, others, p, l, K, Rs, ts, features))
+                continue;
+            cv::Mat R = frames[j].R.clone(), t = frames[j].t.clone();
+            const double rms = cv::tripose::refinePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t, params);
+            if (std::isfinite(rms) && cv::checkRange(R) && cv::checkRange(t))
+            {
+                frames[j].R = R;
+                frames[j].t = t;
+            }
+        }
+}
+
 } // namespace
 
 std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options)
@@ -70,44 +142,30 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
         for (int j = k - 1; j >= 0 && (int)window.size() < options.window; --j)
             if (frames[j].status != FRAME_LOST)
                 window.insert(window.begin(), j);
-        const std::vector<int> points = sharedFeatures(sequence.points, k, window);
-        const std::vector<int> lines = sharedFeatures(sequence.lines, k, window);
-        frame.features = (int)(points.size() + lines.size());
+        std::vector<cv::Mat> p, l, K, Rs, ts;
         frame.knownViews = (int)window.size();
-        if (frame.features < kMinFeatures)
+        if (!gatherViews(sequence, frames, k, window, p, l, K, Rs, ts, frame.features))
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
-            continue; // lost: nothing to register against
+            continue; // lost: fewer than four features shared with the window
         }
-
-        std::vector<cv::Mat> p, l, K, Rs, ts;
-        for (int w : window)
-        {
-            p.push_back(selectRows(sequence.points[w], points));
-            l.push_back(selectRows(sequence.lines[w], lines));
-            K.push_back(sequence.cameraMatrices[w]);
-            Rs.push_back(frames[w].R);
-            ts.push_back(frames[w].t);
-        }
-        p.push_back(selectRows(sequence.points[k], points));
-        l.push_back(selectRows(sequence.lines[k], lines));
-        K.push_back(sequence.cameraMatrices[k]);
-        if (points.empty())
-            p.clear();
-        if (lines.empty())
-            l.clear();
 
         cv::Mat R, t;
         if (options.robust)
             frame.inliers = cv::tripose::estimatePoseMultiViewRansac(p, l, K, cv::noArray(), Rs, ts, R, t, options.ransac);
         else
             frame.inliers = cv::tripose::estimatePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t) > 0 ? frame.features : 0;
-        frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
         if (frame.inliers == 0 || R.empty())
+        {
+            frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
             continue; // lost: no pose
+        }
         frame.status = FRAME_REGISTERED;
         frame.R = R;
         frame.t = t;
+        if (options.refinementSweeps > 0)
+            refineWindow(sequence, frames, window, k, options);
+        frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     }
     return frames;
 }

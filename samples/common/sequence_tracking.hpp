@@ -28,6 +28,12 @@ struct TrackOptions
     int window = 3;                      //!< Registered frames a new frame is registered against (>= 2).
     bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
+    /** Local refinement after each registration, in sweeps (0: none): each registered frame of the
+    window, the new one included, is refined in turn (refinePoseMultiView, Huber loss at the RANSAC
+    threshold) against every other frame with a pose that sees its features, the others held fixed.
+    Alternating single-frame refinements: a block-coordinate bundle adjustment of the window's
+    poses, the structure eliminated in each step; frames 0 and 1 stay as given. */
+    int refinementSweeps = 0;
 };
 
 enum FrameStatus

@@ -8,7 +8,10 @@
 
 #include "test_precomp.hpp"
 
+#include <functional>
 #include <limits>
+
+#include "opencv2/calib3d.hpp"
 
 namespace opencv_test {
 namespace {
@@ -21,7 +24,7 @@ void lookAt(const Vec3d& centre, double roll, Matx33d& R, Vec3d& t)
     const Vec3d z = normalize(-centre);
     Vec3d up(std::cos(roll), std::sin(roll), 0.3);
     Vec3d x = normalize(up.cross(z));
-    if (!(norm(x) > 0.5))
+    if (!(cv::norm(x) > 0.5))
         x = normalize(Vec3d(0, 0, 1).cross(z));
     const Vec3d y = z.cross(x);
     R = Matx33d(x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2]);
@@ -188,8 +191,8 @@ TEST(Tripose_MultiView, two_known_views_are_the_three_view_problem)
         const std::vector<Mat> points = { s.points1, s.points2, s.points3 }, lines = { s.lines1, s.lines2, s.lines3 };
         const std::vector<Mat> Rs = { Mat::eye(3, 3, CV_64F), s.R12 }, ts = { Mat::zeros(3, 1, CV_64F), s.t12 };
         ASSERT_GT(tripose::estimatePoseMultiView(points, lines, s.cameraMatrices, noArray(), Rs, ts, R, t), 0);
-        EXPECT_LT(cvtest::norm(R, R3, NORM_INF), 1e-9);
-        EXPECT_LT(cvtest::norm(t, t3, NORM_INF), 1e-9 * cvtest::norm(s.t12, NORM_L2));
+        EXPECT_LT(cv::norm(R, R3, NORM_INF), 1e-9);
+        EXPECT_LT(cv::norm(t, t3, NORM_INF), 1e-9 * cv::norm(s.t12, NORM_L2));
     }
 }
 
@@ -210,8 +213,8 @@ TEST(Tripose_MultiView, the_world_frame_is_arbitrary)
     }
     Mat R2, t2;
     ASSERT_GT(tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R2, t2), 0);
-    EXPECT_LT(cvtest::norm(R2, R * G.t(), NORM_INF), 1e-7);
-    EXPECT_LT(cvtest::norm(t2, Mat(t - R * G.t() * g), NORM_INF), 1e-6 * cvtest::norm(g, NORM_L2));
+    EXPECT_LT(cv::norm(R2, R * G.t(), NORM_INF), 1e-7);
+    EXPECT_LT(cv::norm(t2, Mat(t - R * G.t() * g), NORM_INF), 1e-6 * cv::norm(g, NORM_L2));
 }
 
 void expectNamed(const std::function<void()>& call, const std::string& name)
@@ -272,7 +275,7 @@ TEST(Tripose_MultiView, bad_input_is_named)
     expectNamed(run(s.points, s.lines, s.Rs, sameCentre), "ts");
     // A rotation that is not one.
     std::vector<Mat> badR = s.Rs;
-    badR[1] = 2 * badR[1];
+    badR[1] = Mat(2 * s.Rs[1]); // a new header: the vector shares the scene's data
     expectNamed(run(s.points, s.lines, badR, s.ts), "Rs[1]");
     // Too few features.
     std::vector<Mat> p3, l0;
@@ -348,9 +351,9 @@ double trackingDrift(const std::string& name, int window)
     }
     double path = 0;
     for (int k = 1; k < F; ++k)
-        path += cvtest::norm(Mat(-seq.Rs[k].t() * seq.ts[k]), Mat(-seq.Rs[k - 1].t() * seq.ts[k - 1]), NORM_L2);
+        path += cv::norm(Mat(-seq.Rs[k].t() * seq.ts[k]), Mat(-seq.Rs[k - 1].t() * seq.ts[k - 1]), NORM_L2);
     const Mat estimated = -Rs[F - 1].t() * ts[F - 1], reference = -seq.Rs[F - 1].t() * seq.ts[F - 1];
-    return 100 * cvtest::norm(estimated, reference, NORM_L2) / path;
+    return 100 * cv::norm(estimated, reference, NORM_L2) / path;
 }
 
 TEST(Tripose_MultiView, tracks_model_house)

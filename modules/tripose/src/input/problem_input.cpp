@@ -586,10 +586,14 @@ ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, 
         set.views[k].pose.t = readTranslation(ts.getMat(k), tName.c_str(), false);
     }
     set.views[numKnown].estimated = true; // mounted at the identity: it is the estimated camera
-    double spread = 0;
+    // Centres that differ by rounding only (relative to their distance from the origin) coincide.
+    double spread = 0, size = set.views[0].pose.centre().norm();
     for (int k = 1; k < numKnown; ++k)
+    {
         spread = std::max(spread, (set.views[k].pose.centre() - set.views[0].pose.centre()).norm());
-    if (!(spread > 0))
+        size = std::max(size, set.views[k].pose.centre().norm());
+    }
+    if (!(spread > 1e-12 * size))
         CV_Error(Error::StsBadArg, "ts: every known view has the same centre: no baseline fixes the scale");
 
     const View& target = set.views[numKnown];

@@ -25,9 +25,10 @@ each mapping a world point \f$X\f$ to \f$x \sim K(RX + t)\f$. A feature (point o
 new view and by at least two known views; it need not be seen by all of them. The known poses fix
 the world frame and the metric scale, so their centres must not all coincide.
 
-Each feature contributes the rows of @cite QadirNeubert2017 from one pair (a, b) of known views that
-see it, the pair with the widest angle between its rays (points) or back-projected planes (lines):
-written in the frame of view a, with view b at \f$[R_b R_a^T | t_b - R_b R_a^T t_a]\f$, the unknown
+Each feature contributes the rows of @cite QadirNeubert2017 from every pair (a, b) of known views
+that see it (in a minimal sample of four or five features: from the pair with the widest angle
+between its rays, for a point, or back-projected planes, for a line), each written in the frame of
+view a, with view b at \f$[R_b R_a^T | t_b - R_b R_a^T t_a]\f$, the unknown
 camera's pose relative to view a is linear in the unknown world pose, so the rows of every pair act
 on one vector \f$v = [r_1; r_2; r_3; t]\f$. The rest is estimatePoseLinePoint(): kernel,
 orthonormality of \f$R\f$, nearest rotation, polish. Candidates that put most of the structure
