@@ -11,6 +11,7 @@
 //   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
 //                 [--method ransac|linear] [--threshold px] [--seed n]
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -33,7 +34,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine sweeps]\n"
-    "  --window N     register each frame against the last N frames with a pose (default 3, at least 2;\n"
+    "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
     "  --local-refine after each registration, refine every registered frame of the window in turn against\n"
@@ -101,16 +102,24 @@ std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, c
 {
     const int width = 900, height = 700, margin = 60;
     cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
-    cv::Rect2d box(reference[0], cv::Size2d(0, 0));
+    double xmin = reference[0].x, xmax = xmin, ymin = reference[0].y, ymax = ymin;
+    auto extend = [&](const cv::Point2d& p) {
+        xmin = std::min(xmin, p.x);
+        xmax = std::max(xmax, p.x);
+        ymin = std::min(ymin, p.y);
+        ymax = std::max(ymax, p.y);
+    };
     for (size_t k = 0; k < reference.size(); ++k)
     {
-        box |= cv::Rect2d(reference[k], cv::Size2d(0, 0));
+        extend(reference[k]);
         if (valid[k])
-            box |= cv::Rect2d(estimated[k], cv::Size2d(0, 0));
+            extend(estimated[k]);
     }
-    const double span = std::max(std::max(box.width, box.height), 1e-9);
-    const double scale = std::min((width - 2.0 * margin) / std::max(box.width, 1e-3 * span),
-                                  (height - 2.0 * margin) / std::max(box.height, 1e-3 * span));
+    // One scale for both axes (a top view keeps its shape); a degenerate extent gets a small span.
+    const double span = std::max(std::max(xmax - xmin, ymax - ymin), 1e-9);
+    const double scale = std::min((width - 2.0 * margin) / std::max(xmax - xmin, 1e-3 * span),
+                                  (height - 2.0 * margin) / std::max(ymax - ymin, 1e-3 * span));
+    const cv::Rect2d box(xmin, ymin, xmax - xmin, ymax - ymin);
     auto pixel = [&](const cv::Point2d& p) {
         return cv::Point2d(margin + (p.x - box.x) * scale, height - margin - (p.y - box.y) * scale);
     };

@@ -25,7 +25,7 @@ struct SequenceObservations
 
 struct TrackOptions
 {
-    int window = 3;                      //!< Registered frames a new frame is registered against (>= 2).
+    int window = 5;                      //!< Registered frames a new frame is registered against (>= 2).
     bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
     /** Local refinement after each registration, in sweeps (0: none): each registered frame of the

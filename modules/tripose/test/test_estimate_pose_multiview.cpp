@@ -358,11 +358,11 @@ double trackingDrift(const std::string& name, int window)
 
 TEST(Tripose_MultiView, tracks_model_house)
 {
-    // Measured (doc/tracking.md): see kModelHouseDrift; the bound leaves room for rounding and
-    // library differences, and stays well under the 0.3 % goal.
-    const double drift = trackingDrift("Model-House", 3);
-    EXPECT_LT(drift, 0.3);
-    std::cout << "Model House drift (window 3): " << drift << " % of the path" << std::endl;
+    // Measured with tripose_track's default window of 5 (doc/tracking.md): 0.169 % of the path. The
+    // bound leaves half as much again for other OpenCV versions' rounding in RANSAC and refinement,
+    // and stays under the 0.3 % the tracker is meant to reach on this sequence.
+    const double drift = trackingDrift("Model-House", 5);
+    EXPECT_LT(drift, 0.25);
 }
 
 } // namespace
