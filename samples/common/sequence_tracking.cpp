@@ -48,10 +48,9 @@ std::vector<int> sharedFeatures(const std::vector<cv::Mat>& rows, int frame, con
     return shared;
 }
 
-/** Registration data of frame @p frame against the frames @p known: the features it shares with at
-least two of them, one array per known frame, then the frame's own. False when fewer than four.
-*/
-bool gatherViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
+} // namespace
+
+bool registrationViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
                  const std::vector<int>& known, std::vector<cv::Mat>& p, std::vector<cv::Mat>& l,
                  std::vector<cv::Mat>& K, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts, int& features)
 {
@@ -83,6 +82,24 @@ bool gatherViews(const SequenceObservations& sequence, const std::vector<Tracked
     return true;
 }
 
+bool refineAgainst(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, int frame,
+                   const std::vector<int>& known, const cv::tripose::RefineParams& params)
+{
+    std::vector<cv::Mat> p, l, K, Rs, ts;
+    int features = 0;
+    if (!registrationViews(sequence, frames, frame, known, p, l, K, Rs, ts, features))
+        return false;
+    cv::Mat R = frames[frame].R.clone(), t = frames[frame].t.clone();
+    const double rms = cv::tripose::refinePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t, params);
+    if (!(std::isfinite(rms) && cv::checkRange(R) && cv::checkRange(t)))
+        return false;
+    frames[frame].R = R;
+    frames[frame].t = t;
+    return true;
+}
+
+namespace {
+
 //! The alternating local refinement of TrackOptions::refinementSweeps after frame @p k is registered.
 void refineWindow(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, const std::vector<int>& window,
                   int k, const TrackOptions& options)
@@ -99,7 +116,6 @@ void refineWindow(const SequenceObservations& sequence, std::vector<TrackedFrame
     cv::tripose::RefineParams params;
     params.loss = cv::tripose::LOSS_HUBER;
     params.lossScale = options.ransac.threshold;
-    std::vector<cv::Mat> p, l, K, Rs, ts;
     for (int sweep = 0; sweep < options.refinementSweeps; ++sweep)
         for (int j : free)
         {
@@ -107,16 +123,7 @@ void refineWindow(const SequenceObservations& sequence, std::vector<TrackedFrame
             for (int o : posed)
                 if (o != j)
                     others.push_back(o);
-            int features = 0;
-            if (!gatherViews(sequence, frames, j, others, p, l, K, Rs, ts, features))
-                continue;
-            cv::Mat R = frames[j].R.clone(), t = frames[j].t.clone();
-            const double rms = cv::tripose::refinePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t, params);
-            if (std::isfinite(rms) && cv::checkRange(R) && cv::checkRange(t))
-            {
-                frames[j].R = R;
-                frames[j].t = t;
-            }
+            refineAgainst(sequence, frames, j, others, params);
         }
 }
 
@@ -144,7 +151,7 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
                 window.insert(window.begin(), j);
         std::vector<cv::Mat> p, l, K, Rs, ts;
         frame.knownViews = (int)window.size();
-        if (!gatherViews(sequence, frames, k, window, p, l, K, Rs, ts, frame.features))
+        if (!registrationViews(sequence, frames, k, window, p, l, K, Rs, ts, frame.features))
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
             continue; // lost: fewer than four features shared with the window

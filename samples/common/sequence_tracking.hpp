@@ -53,6 +53,20 @@ struct TrackedFrame
     double milliseconds = 0; //!< Time of the registration (selection of features included).
 };
 
+/** Registration data of frame @p frame against the frames @p known (which must have poses): the
+features it sees with at least two of them, as estimatePoseMultiView() takes them (one array per
+known frame, then the frame's own; their K and poses). False when they are fewer than four.
+*/
+bool registrationViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
+                       const std::vector<int>& known, std::vector<cv::Mat>& points, std::vector<cv::Mat>& lines,
+                       std::vector<cv::Mat>& cameraMatrices, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts,
+                       int& features);
+
+//! Refines the pose of frame @p frame (refinePoseMultiView) against the frames @p known, held fixed;
+//! false (pose unchanged) when they share too few features or the refinement fails.
+bool refineAgainst(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, int frame,
+                   const std::vector<int>& known, const cv::tripose::RefineParams& params);
+
 /** Tracks the whole sequence. A lost frame gets no pose and is left out of later windows: the window
 holds the last @p options.window frames that have a pose, so tracking resumes as soon as a frame
 shares four features with them. Frames 0 and 1 are given.

@@ -67,13 +67,17 @@ MultiViewSystem::MultiViewSystem(const ViewSet& set, PairSelection selection) : 
 {
     std::vector<int> known;
     for (int v = 0; v < (int)set.views.size(); ++v)
+    {
         if (!set.views[v].estimated)
             known.push_back(v);
+        else if (estimated_ < 0)
+            estimated_ = v;
+    }
     bestPointPair_.assign(set.numPoints, -1);
     bestLinePair_.assign(set.numLines, -1);
     allPointPairs_.assign(set.numPoints, std::vector<int>());
     allLinePairs_.assign(set.numLines, std::vector<int>());
-    if (known.size() < 2)
+    if (known.size() < 2 || estimated_ < 0)
         return;
     reference_ = set.views[known[0]].pose;
     for (int v : known)
@@ -152,10 +156,7 @@ int MultiViewSystem::pairFor(int a, int b)
     va.camera = set_.views[a].camera;
     vb.camera = set_.views[b].camera;
     vb.pose = relativePose(set_.views[b].pose, set_.views[a].pose);
-    int estimated = 0;
-    while (!set_.views[estimated].estimated)
-        ++estimated;
-    vn.camera = set_.views[estimated].camera;
+    vn.camera = set_.views[estimated_].camera;
     vn.estimated = true;
     pair.M = pairTransform(relativePose(set_.views[a].pose, reference_), scale_);
     pair.pointLocal.assign(set_.numPoints, -1);
@@ -167,10 +168,7 @@ int MultiViewSystem::pairFor(int a, int b)
 void MultiViewSystem::addFeature(int p, bool point, int feature)
 {
     Pair& pair = pairs_[p];
-    int estimated = 0;
-    while (!set_.views[estimated].estimated)
-        ++estimated;
-    const int source[3] = { pair.a, pair.b, estimated };
+    const int source[3] = { pair.a, pair.b, estimated_ };
     if (point)
     {
         pair.pointLocal[feature] = pair.views.numPoints++;

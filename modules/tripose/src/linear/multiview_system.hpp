@@ -68,6 +68,7 @@ private:
 
     const ViewSet& set_;
     PairSelection selection_;
+    int estimated_ = -1; //!< The estimated view (mounted at the identity).
     CameraPose reference_;
     double scale_ = 0;
     std::vector<Pair> pairs_;
