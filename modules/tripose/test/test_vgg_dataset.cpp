@@ -286,6 +286,57 @@ std::string expectThrowMessage(const std::function<void()>& call)
     return std::string();
 }
 
+// The whole sequence says what its triplets say: the same observations of the features seen in all
+// three views, and the same relative poses and intrinsics.
+TEST(Tripose_VggDataset, sequence_agrees_with_its_triplets)
+{
+    for (const char* name : { "Corridor", "Model-House", "Wadham-College" })
+    {
+        const std::string dir = findDataDirectory(std::string("vgg/") + name);
+        const tripose::support::VggSequence seq = tripose::support::loadVggSequence(dir);
+        ASSERT_EQ(vggSequenceViewCount(dir), (int)seq.Rs.size()) << name;
+        const int views[3] = { 0, 2, 4 };
+        const VggTriplet triplet = loadVggTriplet(dir, views[0], views[1], views[2]);
+        const Mat* points[3] = { &triplet.points1, &triplet.points2, &triplet.points3 };
+        const Mat* lines[3] = { &triplet.lines1, &triplet.lines2, &triplet.lines3 };
+        for (int k = 0; k < 3; ++k)
+        {
+            EXPECT_LT(cv::norm(seq.cameraMatrices[views[k]], triplet.cameraMatrices[k], NORM_INF), 1e-12) << name;
+            for (int i = 0; i < triplet.pointIds.rows; ++i)
+                EXPECT_EQ(0, cv::norm(seq.points[views[k]].row(triplet.pointIds.at<int>(i)), points[k]->row(i), NORM_INF))
+                    << name << " view " << views[k] << " point " << i;
+            for (int i = 0; i < triplet.lineIds.rows; ++i)
+                EXPECT_EQ(0, cv::norm(seq.lines[views[k]].row(triplet.lineIds.at<int>(i)), lines[k]->row(i), NORM_INF))
+                    << name << " view " << views[k] << " line " << i;
+        }
+        // Features not seen in a view are NaN rows there; the triplet keeps those seen in all three.
+        int seenInAll = 0;
+        for (int i = 0; i < seq.points3d.rows; ++i)
+        {
+            bool all = true;
+            for (int k = 0; k < 3; ++k)
+                all = all && !std::isnan(seq.points[views[k]].at<double>(i, 0));
+            seenInAll += all ? 1 : 0;
+        }
+        EXPECT_EQ(triplet.pointIds.rows, seenInAll) << name;
+        // Poses relative to view 0 of the sequence, those of the triplet relative to its first view.
+        const Matx33d R0 = toMatx33(seq.Rs[views[0]]), R1 = toMatx33(seq.Rs[views[1]]), R2 = toMatx33(seq.Rs[views[2]]);
+        const Vec3d t0 = toVec3(seq.ts[views[0]]), t1 = toVec3(seq.ts[views[1]]), t2 = toVec3(seq.ts[views[2]]);
+        EXPECT_LT(cv::norm(R0 - Matx33d::eye(), NORM_INF), 1e-12) << name;
+        EXPECT_LT(cv::norm(t0), 1e-12) << name;
+        EXPECT_LT(cv::norm(R1 - toMatx33(triplet.R12), NORM_INF), 1e-9) << name;
+        EXPECT_LT(cv::norm(t1 - toVec3(triplet.t12)), 1e-9 * (1 + cv::norm(t1))) << name;
+        EXPECT_LT(cv::norm(R2 - toMatx33(triplet.R), NORM_INF), 1e-9) << name;
+        EXPECT_LT(cv::norm(t2 - toVec3(triplet.t)), 1e-9 * (1 + cv::norm(t2))) << name;
+    }
+}
+
+TEST(Tripose_VggDataset, sequence_folder_errors_are_named)
+{
+    const std::string message = expectThrowMessage([] { tripose::support::loadVggSequence("/nonexistent-sequence"); });
+    EXPECT_NE(std::string::npos, message.find("/nonexistent-sequence")) << message;
+}
+
 TEST(Tripose_VggDataset, bad_arguments_are_named)
 {
     const std::string dir = findDataDirectory("vgg/Merton-College-III");

@@ -8,6 +8,7 @@
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"
+#include "opencv2/tripose/multiview.hpp"
 #include "opencv2/tripose/stereo.hpp"
 
 /**

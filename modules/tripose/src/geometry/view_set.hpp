@@ -62,8 +62,9 @@ pose being estimated.
 The three-view problem of estimatePoseLinePoint() is the case views = {view 1 at [I|0], view 2 at
 [R12|t12], view 3 estimated}, every feature seen in all three; the linear solver works on that case
 (kView1, kView2, kView3). The stereo rig adds view 4, mounted on view 3 at [R12|t12], and lets
-features be missing in view 3 or 4 (kRigLeftB, kRigRightB). Scoring, triangulation and refinement
-take any list.
+features be missing in view 3 or 4 (kRigLeftB, kRigRightB). Registration against several known
+views (estimatePoseMultiView()) lists the known views at their world poses, then the estimated one,
+each feature seen by any subset. Scoring, triangulation and refinement take any list.
 */
 struct ViewSet
 {

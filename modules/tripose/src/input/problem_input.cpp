@@ -175,21 +175,31 @@ int readLines(InputArray arr, const char* name, std::vector<Eigen::Vector2d>& en
 }
 
 //! The arrays of a per-view argument: none, one shared by every view, or one per view. Element
-//! headers are taken one by one (getMat(i)): a vector of headers would cost an allocation per call.
+//! headers are taken one by one (getMat(i)) into a fixed array for the usual few views: a vector of
+//! headers would cost an allocation per call. Registration against many known views uses @p extra.
 struct PerViewArrays
 {
-    static const int kMaxViews = 4;
-    Mat mats[kMaxViews];
+    static const int kFixedViews = 4;
+    Mat mats[kFixedViews];
+    std::vector<Mat> extra; //!< Views kFixedViews and on.
     int count = 0;
 
-    const Mat& forView(int v) const { return mats[count == 1 ? 0 : v]; }
+    const Mat& forView(int v) const
+    {
+        const int i = count == 1 ? 0 : v;
+        return i < kFixedViews ? mats[i] : extra[i - kFixedViews];
+    }
     bool shared() const { return count == 1; }
 };
 
+std::string viewCount(int n)
+{
+    static const char* const counts[] = { "zero", "one", "two", "three", "four" };
+    return n <= 4 ? std::string(counts[n]) : format("%d", n);
+}
+
 PerViewArrays readPerView(InputArrayOfArrays arr, const char* name, int numViews)
 {
-    CV_Assert(numViews <= PerViewArrays::kMaxViews);
-    static const char* const counts[] = { "zero", "one", "two", "three", "four" };
     PerViewArrays out;
     if (arr.empty())
         return out;
@@ -198,9 +208,14 @@ PerViewArrays readPerView(InputArrayOfArrays arr, const char* name, int numViews
         const int n = (int)arr.total();
         if (n != 1 && n != numViews)
             CV_Error_(Error::StsBadArg, ("%s must be one array shared by the %s views or a vector of %s (got %d)",
-                                         name, counts[numViews], counts[numViews], n));
+                                         name, viewCount(numViews).c_str(), viewCount(numViews).c_str(), n));
         for (int i = 0; i < n; ++i)
-            out.mats[i] = arr.getMat(i);
+        {
+            if (i < PerViewArrays::kFixedViews)
+                out.mats[i] = arr.getMat(i);
+            else
+                out.extra.push_back(arr.getMat(i));
+        }
         out.count = n;
     }
     else
@@ -382,9 +397,16 @@ void readViews(const ViewArguments* args, int numViews, InputArrayOfArrays camer
         lineWidth[v] = readLines(*args[v].lines, args[v].linesName, view.lineEnds, homogeneous[v], lineCount[v],
                                  args[v].mayMiss ? &view.lineSeen : nullptr);
     }
-    const int numPoints = (int)set.views[0].points.size();
-    const int numLines = lineCount[0];
-    for (int v = 1; v < numViews; ++v)
+    // The counts come from the first view; where every view may miss features, from the first
+    // view that gives any (an empty array is a view that sees none).
+    int pointSource = 0, lineSource = 0;
+    while (args[pointSource].mayMiss && set.views[pointSource].points.empty() && pointSource + 1 < numViews)
+        ++pointSource;
+    while (args[lineSource].mayMiss && lineCount[lineSource] == 0 && lineSource + 1 < numViews)
+        ++lineSource;
+    const int numPoints = (int)set.views[pointSource].points.size();
+    const int numLines = lineCount[lineSource];
+    for (int v = 0; v < numViews; ++v)
     {
         View& view = set.views[v];
         const int points = (int)view.points.size();
@@ -395,7 +417,7 @@ void readViews(const ViewArguments* args, int numViews, InputArrayOfArrays camer
         }
         else if (points != numPoints)
             CV_Error_(Error::StsBadSize, ("%s has %d points but %s has %d: every view needs the same points",
-                                          args[v].pointsName, points, args[0].pointsName, numPoints));
+                                          args[v].pointsName, points, args[pointSource].pointsName, numPoints));
         if (args[v].mayMiss && lineCount[v] == 0 && numLines > 0)
         {
             lineCount[v] = numLines;
@@ -408,12 +430,12 @@ void readViews(const ViewArguments* args, int numViews, InputArrayOfArrays camer
         }
         if (lineCount[v] != numLines)
             CV_Error_(Error::StsBadSize, ("%s has %d lines but %s has %d: every view needs the same lines",
-                                          args[v].linesName, lineCount[v], args[0].linesName, numLines));
-        if (numLines > 0 && lineWidth[v] != lineWidth[0])
+                                          args[v].linesName, lineCount[v], args[lineSource].linesName, numLines));
+        if (numLines > 0 && lineWidth[v] != lineWidth[lineSource])
             CV_Error_(Error::StsBadArg, ("%s are %s but %s are %s: use one kind in all views", args[v].linesName,
                                          lineWidth[v] == 4 ? "segments (Mx4)" : "homogeneous lines (Mx3)",
-                                         args[0].linesName,
-                                         lineWidth[0] == 4 ? "segments (Mx4)" : "homogeneous lines (Mx3)"));
+                                         args[lineSource].linesName,
+                                         lineWidth[lineSource] == 4 ? "segments (Mx4)" : "homogeneous lines (Mx3)"));
     }
     set.numPoints = numPoints;
     set.numLines = numLines;
@@ -497,6 +519,103 @@ ViewSet readStereoRigInput(InputArray points1, InputArray points2, InputArray po
     set.views[ViewSet::kRigLeftB].estimated = true;  // the estimated camera itself
     set.views[ViewSet::kRigRightB].estimated = true; // mounted on it as the right camera on the left
     set.views[ViewSet::kRigRightB].pose = rig;
+    return set;
+}
+
+namespace {
+
+//! The arrays of a vector argument with one entry per view (the known views, then the new view).
+std::vector<Mat> readViewVector(InputArrayOfArrays arr, const char* name, int numViews, const char* what)
+{
+    std::vector<Mat> out(numViews);
+    if (arr.empty())
+        return out; // every view sees none of this kind
+    if (!(arr.isMatVector() || arr.isUMatVector() || arr.kind() == _InputArray::STD_VECTOR_VECTOR))
+        CV_Error_(Error::StsBadArg, ("%s must be a vector of %s arrays, one per view: the %d known views, then the new view",
+                                     name, what, numViews - 1));
+    const int n = (int)arr.total();
+    if (n != numViews)
+        CV_Error_(Error::StsBadArg, ("%s must hold %d arrays (the %d known views, then the new view), got %d", name,
+                                     numViews, numViews - 1, n));
+    for (int i = 0; i < n; ++i)
+        out[i] = arr.getMat(i);
+    return out;
+}
+
+} // namespace
+
+ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                           InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int minFeatures)
+{
+    if (!(Rs.isMatVector() || Rs.kind() == _InputArray::STD_VECTOR_VECTOR || Rs.isUMatVector()) || Rs.total() < 2)
+        CV_Error(Error::StsBadArg, "Rs must be a vector of at least two rotations, the world poses of the known views");
+    const int numKnown = (int)Rs.total();
+    if (!(ts.isMatVector() || ts.kind() == _InputArray::STD_VECTOR_VECTOR || ts.isUMatVector()) ||
+        (int)ts.total() != numKnown)
+        CV_Error_(Error::StsBadArg, ("ts must be a vector of %d translations, one per rotation in Rs", numKnown));
+    const int numViews = numKnown + 1;
+    if (points.empty() && lines.empty())
+        CV_Error(Error::StsBadArg, "points and lines are both empty: at least four features are required");
+
+    const std::vector<Mat> pointMats = readViewVector(points, "points", numViews, "Nx2 point");
+    const std::vector<Mat> lineMats = readViewVector(lines, "lines", numViews, "Mx4 segment or Mx3 line");
+    std::vector<_InputArray> pointArrays, lineArrays;
+    std::vector<std::string> pointNames(numViews), lineNames(numViews);
+    std::vector<ViewArguments> args(numViews);
+    pointArrays.reserve(numViews);
+    lineArrays.reserve(numViews);
+    for (int v = 0; v < numViews; ++v)
+    {
+        pointArrays.push_back(_InputArray(pointMats[v]));
+        lineArrays.push_back(_InputArray(lineMats[v]));
+        pointNames[v] = format("points[%d]", v);
+        lineNames[v] = format("lines[%d]", v);
+    }
+    for (int v = 0; v < numViews; ++v)
+    {
+        ViewArguments a = { &pointArrays[v], &lineArrays[v], pointNames[v].c_str(), lineNames[v].c_str(), true };
+        args[v] = a;
+    }
+    ViewSet set;
+    readViews(args.data(), numViews, cameraMatrix, distCoeffs, set);
+
+    for (int k = 0; k < numKnown; ++k)
+    {
+        const std::string rName = format("Rs[%d]", k), tName = format("ts[%d]", k);
+        set.views[k].pose.R = readRotation(Rs.getMat(k), rName.c_str());
+        set.views[k].pose.t = readTranslation(ts.getMat(k), tName.c_str(), false);
+    }
+    set.views[numKnown].estimated = true; // mounted at the identity: it is the estimated camera
+    // Centres that differ by rounding only (relative to their distance from the origin) coincide.
+    double spread = 0, size = set.views[0].pose.centre().norm();
+    for (int k = 1; k < numKnown; ++k)
+    {
+        spread = std::max(spread, (set.views[k].pose.centre() - set.views[0].pose.centre()).norm());
+        size = std::max(size, set.views[k].pose.centre().norm());
+    }
+    if (!(spread > 1e-12 * size))
+        CV_Error(Error::StsBadArg, "ts: every known view has the same centre: no baseline fixes the scale");
+
+    const View& target = set.views[numKnown];
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const bool point = kind == 0;
+        for (int i = 0; i < (point ? set.numPoints : set.numLines); ++i)
+        {
+            if (!(point ? target.seesPoint(i) : target.seesLine(i)))
+                CV_Error_(Error::StsBadArg, ("%s[%d] (the new view) does not see %s %d: every feature must be seen "
+                                             "in the new view", point ? "points" : "lines", numKnown,
+                                             point ? "point" : "line", i));
+            int seen = 0;
+            for (int k = 0; k < numKnown; ++k)
+                seen += (point ? set.views[k].seesPoint(i) : set.views[k].seesLine(i)) ? 1 : 0;
+            if (seen < 2)
+                CV_Error_(Error::StsBadArg, ("%s %d is seen in %d known view(s) of %s: every feature must be seen in "
+                                             "at least two known views", point ? "point" : "line", i, seen,
+                                             point ? "points" : "lines"));
+        }
+    }
+    requireFeatures(set.numPoints, set.numLines, minFeatures);
     return set;
 }
 

@@ -39,6 +39,15 @@ ViewSet readStereoRigInput(InputArray points1, InputArray points2, InputArray po
                            InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                            InputArray R12, InputArray t12, int minFeatures);
 
+/** Registration against several known views: views = {known view 0, ..., known view V-1 at their
+world poses Rs[k], ts[k], the new view (estimated)}. @p points and @p lines hold one array per view
+(the known views, then the new view), a row of NaN where a view does not see the feature, an empty
+array where it sees none of that kind. Validation as readThreeViewInput(), plus: at least two known
+views, not all at one centre; every feature seen in the new view and in at least two known views.
+*/
+ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                           InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int minFeatures);
+
 constexpr double kHomogeneousLineHalfLength = 50.0;
 
 /** A rotation given as a 3x3 matrix or a Rodrigues vector (CV_32F/CV_64F), checked (finite,

@@ -129,7 +129,12 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
     const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : set.numLines);
     const double translationScale = set.pose12().t.norm();
     const ConstraintMatrix A = buildConstraintMatrix(set, translationScale, pointIndices, lineIndices);
+    return poseCandidatesFromRows(A, numPoints, numFeatures, translationScale, poses, options);
+}
 
+int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
+                           std::vector<CameraPose>& poses, const CandidateOptions& options)
+{
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
     // A^T A from one triangle (symmetric rank update), mirrored.

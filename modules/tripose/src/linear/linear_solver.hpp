@@ -9,6 +9,7 @@
 
 #include "../geometry/view_set.hpp"
 #include "../scoring/pose_scorer.hpp"
+#include "linear_system.hpp"
 
 namespace cv {
 namespace tripose {
@@ -45,6 +46,15 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
                          const std::vector<int>* pointIndices = nullptr,
                          const std::vector<int>* lineIndices = nullptr,
                          const CandidateOptions& options = CandidateOptions());
+
+/** The candidates of linearPoseCandidates() from a constraint matrix built elsewhere (another
+arrangement of views whose rows share the unknown v = [r1; r2; r3; t / translationScale]): rows laid
+out as buildConstraintMatrix() lays them, the four rows of each of the @p numPoints points first,
+then two rows per line, @p numFeatures features in all (at least four). The candidates' t is
+multiplied by @p translationScale. Appends to @p poses and returns how many were appended.
+*/
+int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
+                           std::vector<CameraPose>& poses, const CandidateOptions& options = CandidateOptions());
 
 struct ScoredPose
 {

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "opencv2/core/utils/filesystem.hpp"
@@ -47,7 +48,7 @@ enum class Columns
 
 [[noreturn]] void fileError(cv::Error::Code code, const std::string& path, const std::string& what)
 {
-    CV_Error(code, format("loadVggTriplet: %s: %s", path.c_str(), what.c_str()));
+    CV_Error(code, format("VGG reader: %s: %s", path.c_str(), what.c_str()));
 }
 
 Table readTable(const std::string& path, int cols, Columns rule, bool allowMissing)
@@ -210,6 +211,79 @@ int vggSequenceViewCount(const String& sequenceDir)
     return (int)findLayout(sequenceDir, "vggSequenceViewCount").viewStems.size();
 }
 
+namespace {
+
+//! What the files of a sequence say about some of its views, cameras decomposed in the (possibly
+//! Z-flipped) world frame of the sequence.
+struct LoadedViews
+{
+    Table p3d, l3d, nviewCorners, nviewLines;
+    std::vector<Table> corners, segments;
+    std::vector<Matx33d> K, Rw;
+    std::vector<Vec3d> tw;
+    double flip = 1; //!< -1 where the sequence's world frame is mirrored (Z flipped on reading)
+};
+
+LoadedViews loadViews(const SequenceLayout& layout, const std::vector<int>& views)
+{
+    const int numViews = (int)layout.viewStems.size();
+    LoadedViews out;
+    out.p3d = readTable(layout.prefix + "p3d", 3, Columns::EXACT, false);
+    out.l3d = readTable(layout.prefix + "l3d", 6, Columns::EXACT, false);
+    out.nviewCorners = readTable(layout.prefix + "nview-corners", numViews, Columns::EXACT, true);
+    out.nviewLines = readTable(layout.prefix + "nview-lines", numViews, Columns::EXACT, true);
+    if (out.nviewCorners.rows() != out.p3d.rows())
+        fileError(Error::StsBadSize, out.nviewCorners.path, format("has %d rows but %s has %d (one per 3D point)",
+                                                                   out.nviewCorners.rows(), out.p3d.path.c_str(), out.p3d.rows()));
+    if (out.nviewLines.rows() != out.l3d.rows())
+        fileError(Error::StsBadSize, out.nviewLines.path, format("has %d rows but %s has %d (one per 3D line)",
+                                                                 out.nviewLines.rows(), out.l3d.path.c_str(), out.l3d.rows()));
+
+    const int n = (int)views.size();
+    out.corners.resize(n);
+    out.segments.resize(n);
+    std::vector<Matx34d> P(n);
+    bool mirrored = false;
+    for (int k = 0; k < n; ++k)
+    {
+        const std::string& stem = layout.viewStems[views[k]];
+        out.corners[k] = readTable(stem + ".corners", 2, Columns::AT_LEAST, false);
+        out.segments[k] = readTable(stem + ".lines", 4, Columns::AT_LEAST, false);
+        checkCorrespondences(out.nviewCorners, views[k], out.corners[k].rows(), out.corners[k].path);
+        checkCorrespondences(out.nviewLines, views[k], out.segments[k].rows(), out.segments[k].path);
+
+        const Table camera = readTable(stem + ".P", 4, Columns::EXACT, false);
+        if (camera.rows() != 3)
+            fileError(Error::StsParseError, camera.path, format("expected 3 rows of 4 values, got %d rows", camera.rows()));
+        P[k] = Matx34d(camera.row(0));
+        orientTowardsStructure(P[k], views[k], out.p3d, out.nviewCorners, out.l3d, out.nviewLines);
+        // With the structure in front, a negative determinant means a mirrored (left-handed) world frame.
+        const bool left = determinant(P[k].get_minor<3, 3>(0, 0)) < 0;
+        if (k == 0)
+            mirrored = left;
+        else if (left != mirrored)
+            fileError(Error::StsBadArg, camera.path,
+                      format("its world frame is %s-handed but that of %s.P is %s-handed", left ? "left" : "right",
+                             layout.viewStems[views[0]].c_str(), mirrored ? "left" : "right"));
+    }
+
+    // Mirrored sequences (Model House, Corridor) are read in a world frame with Z flipped:
+    // X' = S X and P' = P S with S = diag(1, 1, -1), so that P' X' = P X.
+    out.flip = mirrored ? -1.0 : 1.0;
+    out.K.resize(n);
+    out.Rw.resize(n);
+    out.tw.resize(n);
+    for (int k = 0; k < n; ++k)
+    {
+        for (int r = 0; r < 3; ++r)
+            P[k](r, 2) *= out.flip;
+        decomposeCamera(P[k], layout.viewStems[views[k]] + ".P", out.K[k], out.Rw[k], out.tw[k]);
+    }
+    return out;
+}
+
+} // namespace
+
 VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3)
 {
     const SequenceLayout layout = findLayout(sequenceDir, "loadVggTriplet");
@@ -226,54 +300,17 @@ VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int v
                                                   j + 1, k + 1, views[k]));
     }
 
-    const Table p3d = readTable(layout.prefix + "p3d", 3, Columns::EXACT, false);
-    const Table l3d = readTable(layout.prefix + "l3d", 6, Columns::EXACT, false);
-    const Table nviewCorners = readTable(layout.prefix + "nview-corners", numViews, Columns::EXACT, true);
-    const Table nviewLines = readTable(layout.prefix + "nview-lines", numViews, Columns::EXACT, true);
-    if (nviewCorners.rows() != p3d.rows())
-        fileError(Error::StsBadSize, nviewCorners.path, format("has %d rows but %s has %d (one per 3D point)",
-                                                               nviewCorners.rows(), p3d.path.c_str(), p3d.rows()));
-    if (nviewLines.rows() != l3d.rows())
-        fileError(Error::StsBadSize, nviewLines.path, format("has %d rows but %s has %d (one per 3D line)",
-                                                             nviewLines.rows(), l3d.path.c_str(), l3d.rows()));
-
-    Table corners[3], segments[3];
-    Matx34d P[3];
-    bool mirrored = false;
-    for (int k = 0; k < 3; ++k)
-    {
-        const std::string& stem = layout.viewStems[views[k]];
-        corners[k] = readTable(stem + ".corners", 2, Columns::AT_LEAST, false);
-        segments[k] = readTable(stem + ".lines", 4, Columns::AT_LEAST, false);
-        checkCorrespondences(nviewCorners, views[k], corners[k].rows(), corners[k].path);
-        checkCorrespondences(nviewLines, views[k], segments[k].rows(), segments[k].path);
-
-        const Table camera = readTable(stem + ".P", 4, Columns::EXACT, false);
-        if (camera.rows() != 3)
-            fileError(Error::StsParseError, camera.path, format("expected 3 rows of 4 values, got %d rows", camera.rows()));
-        P[k] = Matx34d(camera.row(0));
-        orientTowardsStructure(P[k], views[k], p3d, nviewCorners, l3d, nviewLines);
-        // With the structure in front, a negative determinant means a mirrored (left-handed) world frame.
-        const bool left = determinant(P[k].get_minor<3, 3>(0, 0)) < 0;
-        if (k == 0)
-            mirrored = left;
-        else if (left != mirrored)
-            fileError(Error::StsBadArg, camera.path,
-                      format("its world frame is %s-handed but that of %s.P is %s-handed", left ? "left" : "right",
-                             layout.viewStems[views[0]].c_str(), mirrored ? "left" : "right"));
-    }
-
-    // Mirrored sequences (Model House, Corridor) are read in a world frame with Z flipped:
-    // X' = S X and P' = P S with S = diag(1, 1, -1), so that P' X' = P X.
-    const double flip = mirrored ? -1.0 : 1.0;
-    Matx33d K[3], Rw[3];
-    Vec3d tw[3];
-    for (int k = 0; k < 3; ++k)
-    {
-        for (int r = 0; r < 3; ++r)
-            P[k](r, 2) *= flip;
-        decomposeCamera(P[k], layout.viewStems[views[k]] + ".P", K[k], Rw[k], tw[k]);
-    }
+    const LoadedViews loaded = loadViews(layout, std::vector<int>(views, views + 3));
+    const Table& p3d = loaded.p3d;
+    const Table& l3d = loaded.l3d;
+    const Table& nviewCorners = loaded.nviewCorners;
+    const Table& nviewLines = loaded.nviewLines;
+    const std::vector<Table>& corners = loaded.corners;
+    const std::vector<Table>& segments = loaded.segments;
+    const std::vector<Matx33d>& K = loaded.K;
+    const std::vector<Matx33d>& Rw = loaded.Rw;
+    const std::vector<Vec3d>& tw = loaded.tw;
+    const double flip = loaded.flip;
 
     // Everything in the frame of the first chosen view: X1 = R1 S X + t1, R_k1 = R_k R1^T, t_k1 = t_k - R_k1 t1.
     auto toView1 = [&](const double* X) { return Rw[0] * Vec3d(X[0], X[1], flip * X[2]) + tw[0]; };
@@ -340,6 +377,66 @@ VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int v
         }
     }
     return triplet;
+}
+
+
+VggSequence loadVggSequence(const String& sequenceDir)
+{
+    const SequenceLayout layout = findLayout(sequenceDir, "loadVggSequence");
+    const int F = (int)layout.viewStems.size();
+    std::vector<int> all(F);
+    for (int k = 0; k < F; ++k)
+        all[k] = k;
+    const LoadedViews loaded = loadViews(layout, all);
+
+    VggSequence sequence;
+    sequence.stems = std::vector<String>(layout.viewStems.begin(), layout.viewStems.end());
+    const double flip = loaded.flip;
+    auto toView0 = [&](const double* X) { return loaded.Rw[0] * Vec3d(X[0], X[1], flip * X[2]) + loaded.tw[0]; };
+    const int N = loaded.p3d.rows(), M = loaded.l3d.rows();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (int k = 0; k < F; ++k)
+    {
+        sequence.cameraMatrices.push_back(toMat(loaded.K[k]));
+        const Matx33d R = loaded.Rw[k] * loaded.Rw[0].t();
+        sequence.Rs.push_back(toMat(R));
+        sequence.ts.push_back(toMat(Vec3d(loaded.tw[k] - R * loaded.tw[0])));
+        Mat points(N, 2, CV_64F, Scalar::all(nan)), lines(M, 4, CV_64F, Scalar::all(nan));
+        for (int i = 0; i < N; ++i)
+        {
+            const double index = loaded.nviewCorners.row(i)[k];
+            if (index >= 0)
+            {
+                const double* x = loaded.corners[k].row((int)index);
+                std::copy(x, x + 2, points.ptr<double>(i));
+            }
+        }
+        for (int i = 0; i < M; ++i)
+        {
+            const double index = loaded.nviewLines.row(i)[k];
+            if (index >= 0)
+            {
+                const double* x = loaded.segments[k].row((int)index);
+                std::copy(x, x + 4, lines.ptr<double>(i));
+            }
+        }
+        sequence.points.push_back(points);
+        sequence.lines.push_back(lines);
+    }
+    sequence.points3d.create(N, 3, CV_64F);
+    sequence.lines3d.create(M, 6, CV_64F);
+    for (int i = 0; i < N; ++i)
+    {
+        const Vec3d X = toView0(loaded.p3d.row(i));
+        std::copy(X.val, X.val + 3, sequence.points3d.ptr<double>(i));
+    }
+    for (int i = 0; i < M; ++i)
+    {
+        const Vec3d A = toView0(loaded.l3d.row(i)), B = toView0(loaded.l3d.row(i) + 3);
+        std::copy(A.val, A.val + 3, sequence.lines3d.ptr<double>(i));
+        std::copy(B.val, B.val + 3, sequence.lines3d.ptr<double>(i) + 3);
+    }
+    return sequence;
 }
 
 } // namespace support

@@ -34,6 +34,21 @@ struct VggTriplet
     Mat R, t;                        //!< Pose of the third view (3x3, 3x1).
 };
 
+/** @brief Every view of a sequence in the Oxford VGG multi-view format, with each feature's
+visibility: the whole track of each 3D point and line of p3d / l3d. Ground truth relative to the
+first view (x ~ K_k (R_k X + t_k), X in the first view's frame). All matrices CV_64F.
+*/
+struct VggSequence
+{
+    std::vector<String> stems;        //!< Per view, the file stem (<folder>/<name> without .P).
+    std::vector<Mat> cameraMatrices;  //!< Per view, 3x3 K.
+    std::vector<Mat> Rs, ts;          //!< Per view, pose (3x3, 3x1) relative to view 0.
+    std::vector<Mat> points;          //!< Per view, Nx2 corners (px) of the N features of p3d, NaN rows where unseen.
+    std::vector<Mat> lines;           //!< Per view, Mx4 segments of the M features of l3d, NaN rows where unseen.
+    Mat points3d;                     //!< Nx3 points of p3d in the frame of view 0.
+    Mat lines3d;                      //!< Mx6 segments of l3d in the frame of view 0.
+};
+
 /** @brief Number of views of a VGG multi-view sequence stored in a folder. */
 int vggSequenceViewCount(const String& sequenceDir);
 
@@ -54,6 +69,12 @@ that every rotation is proper. Features are returned in p3d / l3d order.
 it is out of range.
 */
 VggTriplet loadVggTriplet(const String& sequenceDir, int view1, int view2, int view3);
+
+/** @brief Loads every view of a VGG multi-view sequence (files and conventions as loadVggTriplet()).
+@throws cv::Exception naming the folder when it holds no sequence, or the file when one is missing
+or malformed.
+*/
+VggSequence loadVggSequence(const String& sequenceDir);
 
 } // namespace support
 } // namespace tripose

@@ -1,0 +1,125 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_MULTIVIEW_HPP
+#define OPENCV_TRIPOSE_MULTIVIEW_HPP
+
+#include "opencv2/core.hpp"
+#include "opencv2/tripose/compat.hpp"
+#include "opencv2/tripose/pose.hpp"
+#include "opencv2/tripose/refine.hpp"
+#include "opencv2/tripose/robust.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_pose
+//! @{
+
+/** @brief Registers a calibrated camera against any number of views with known poses from the
+points and lines they share (the general form of estimatePoseLinePoint()).
+
+V >= 2 known views at world poses \f$[R_k | t_k]\f$ (k = 0..V-1) and one new view \f$[R | t]\f$,
+each mapping a world point \f$X\f$ to \f$x \sim K(RX + t)\f$. A feature (point or line) is seen by the
+new view and by at least two known views; it need not be seen by all of them. The known poses fix
+the world frame and the metric scale, so their centres must not all coincide.
+
+Each feature contributes the rows of @cite QadirNeubert2017 from every pair (a, b) of known views
+that see it (in a minimal sample of four or five features: from the pair with the widest angle
+between its rays, for a point, or back-projected planes, for a line), each written in the frame of
+view a, with view b at \f$[R_b R_a^T | t_b - R_b R_a^T t_a]\f$, the unknown
+camera's pose relative to view a is linear in the unknown world pose, so the rows of every pair act
+on one vector \f$v = [r_1; r_2; r_3; t]\f$. The rest is estimatePoseLinePoint(): kernel,
+orthonormality of \f$R\f$, nearest rotation, polish. Candidates that put most of the structure
+(triangulated from every known view that sees it) behind the new view are dropped, the rest ranked
+by their RMS reprojection error in the new view; with POSE_LINEAR_REFINE each is refined by
+refinePoseMultiView() and ranked by its refined error. With the views {[I|0], [R12|t12]} this is the
+problem of estimatePoseLinePoint().
+
+@param points One array per view, the V known views then the new view: Nx2 1-channel or 1xN/Nx1
+2-channel, CV_32F or CV_64F, pixels, the same N rows in every view; a row of NaN where the view does
+not see the point, an empty array where it sees none. An empty vector means no points.
+@param lines One array per view likewise: Mx4 segments \f$(x_0, y_0, x_1, y_1)\f$ or Mx3 homogeneous
+lines \f$(a, b, c)\f$ (one kind in all views), pixels, NaN rows where unseen. An empty vector: no lines.
+@param cameraMatrix One 3x3 intrinsic matrix shared by every view, or a vector of V + 1 (the known
+views, then the new view).
+@param distCoeffs Distortion coefficients (4, 5, 8, 12 or 14 values), one vector or V + 1; empty for none.
+@param Rs The known views' world rotations: a vector of V 3x3 matrices or Rodrigues vectors, CV_32F/CV_64F.
+@param ts The known views' world translations: a vector of V 3-element vectors.
+@param R Output rotation of the new view (3x3, CV_64F): the best candidate; empty when there is none.
+@param t Output translation of the new view (3x1, CV_64F), in the units of @p ts.
+@param method POSE_LINEAR or POSE_LINEAR_REFINE.
+@param candidateRs Optional output: every candidate rotation, best first.
+@param candidateTs Optional output: the matching translations.
+@param reprojectionErrors Optional output: per candidate, the RMS reprojection error (px) in the new
+view (POSE_LINEAR) or over every view (POSE_LINEAR_REFINE).
+@return The number of candidate poses (0 when the features do not determine the pose).
+@throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), for fewer
+than two known views, known views all at one centre, a feature the new view does not see or that
+fewer than two known views see, or fewer than four features.
+*/
+CV_EXPORTS_W int estimatePoseMultiView(
+    InputArrayOfArrays points, InputArrayOfArrays lines,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
+    InputArrayOfArrays Rs, InputArrayOfArrays ts,
+    OutputArray R, OutputArray t,
+    int method = POSE_LINEAR,
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
+    OutputArray reprojectionErrors = noArray());
+
+/** @brief Robust registration against several known views from point and line correspondences with
+outliers.
+
+The problem of estimatePoseMultiView() with RANSAC as in estimatePoseLinePointRansac(): samples of
+four features; hypotheses scored (MSAC) on their residuals in the new view against the structure
+triangulated from the known views that see each feature, truncated at 2 x RansacParams::threshold;
+local optimisation, adaptive stopping; then maximum-likelihood refinement over every view on the
+inliers (known poses fixed). A feature is an inlier when its RMS reprojection error over every view
+that sees it, re-triangulated from all of them with the returned pose, is below
+RansacParams::threshold.
+
+Arguments as in estimatePoseMultiView().
+@param params See RansacParams.
+@param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
+@param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
+@return The number of inliers (points + lines); 0 when no pose was found (R and t empty, masks zero).
+*/
+CV_EXPORTS_W int estimatePoseMultiViewRansac(
+    InputArrayOfArrays points, InputArrayOfArrays lines,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
+    InputArrayOfArrays Rs, InputArrayOfArrays ts,
+    OutputArray R, OutputArray t,
+    const RansacParams& params = RansacParams(),
+    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray());
+
+/** @brief Maximum-likelihood refinement of the new view's pose and the structure over every view.
+
+As refinePoseLinePoint(), over the views of estimatePoseMultiView(): the new view's pose and the
+structure are estimated, the known views are fixed; each feature contributes its residuals in every
+view that sees it.
+
+Arguments as in estimatePoseMultiView() and refinePoseLinePoint().
+@param R Input: initial rotation of the new view (3x3 or Rodrigues). Output: refined, in the same form, CV_64F.
+@param t Input: initial translation of the new view. Output: 3x1 CV_64F.
+@param params See RefineParams.
+@param points3d Optional output: Nx3 CV_64F refined points in the world frame.
+@param lines3d Optional output: Mx6 CV_64F, two points of each refined line: those closest to the
+rays of the end points in the first view that sees it.
+@return The RMS reprojection error (px) at the refined estimate over every residual of the
+features that enter the cost; +inf when none does (R, t then unchanged).
+*/
+CV_EXPORTS_W double refinePoseMultiView(
+    InputArrayOfArrays points, InputArrayOfArrays lines,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
+    InputArrayOfArrays Rs, InputArrayOfArrays ts,
+    InputOutputArray R, InputOutputArray t,
+    const RefineParams& params = RefineParams(),
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_MULTIVIEW_HPP

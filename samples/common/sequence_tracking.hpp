@@ -1,0 +1,79 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Tracking a camera along a sequence with cv::tripose::estimatePoseMultiView*: the first two frames
+// have given poses (they fix the world frame and the scale); every later frame is registered
+// against the registered frames of a sliding window that see its features.
+
+#ifndef TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
+#define TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
+
+#include <vector>
+
+#include <opencv2/tripose.hpp>
+
+namespace tripose_samples {
+
+//! A sequence's observations: per frame, the same N points (Nx2) and M segments (Mx4), NaN rows where
+//! the frame does not see the feature; per frame K; the given poses of frames 0 and 1.
+struct SequenceObservations
+{
+    std::vector<cv::Mat> cameraMatrices, points, lines;
+    cv::Mat R0, t0, R1, t1;
+};
+
+struct TrackOptions
+{
+    int window = 5;                      //!< Registered frames a new frame is registered against (>= 2).
+    bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
+    cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
+    /** Local refinement after each registration, in sweeps (0: none): each registered frame of the
+    window, the new one included, is refined in turn (refinePoseMultiView, Huber loss at the RANSAC
+    threshold) against every other frame with a pose that sees its features, the others held fixed.
+    Alternating single-frame refinements: a block-coordinate bundle adjustment of the window's
+    poses, the structure eliminated in each step; frames 0 and 1 stay as given. */
+    int refinementSweeps = 0;
+};
+
+enum FrameStatus
+{
+    FRAME_GIVEN = 0,      //!< Frames 0 and 1: the pose came with the sequence.
+    FRAME_REGISTERED = 1, //!< Registered against the window.
+    FRAME_LOST = 2,       //!< Too few features shared with the window, or no pose found: no pose.
+};
+
+struct TrackedFrame
+{
+    FrameStatus status = FRAME_LOST;
+    cv::Mat R, t;           //!< 3x3, 3x1 CV_64F; empty when lost.
+    int features = 0;       //!< Features seen by the frame and at least two window frames.
+    int inliers = 0;        //!< Robust: inlier features; linear: every feature.
+    int knownViews = 0;     //!< Window frames used.
+    double milliseconds = 0; //!< Time of the registration (selection of features included).
+};
+
+/** Registration data of frame @p frame against the frames @p known (which must have poses): the
+features it sees with at least two of them, as estimatePoseMultiView() takes them (one array per
+known frame, then the frame's own; their K and poses). False when they are fewer than four.
+*/
+bool registrationViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
+                       const std::vector<int>& known, std::vector<cv::Mat>& points, std::vector<cv::Mat>& lines,
+                       std::vector<cv::Mat>& cameraMatrices, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts,
+                       int& features);
+
+//! Refines the pose of frame @p frame (refinePoseMultiView) against the frames @p known, held fixed;
+//! false (pose unchanged) when they share too few features or the refinement fails.
+bool refineAgainst(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, int frame,
+                   const std::vector<int>& known, const cv::tripose::RefineParams& params);
+
+/** Tracks the whole sequence. A lost frame gets no pose and is left out of later windows: the window
+holds the last @p options.window frames that have a pose, so tracking resumes as soon as a frame
+shares four features with them. Frames 0 and 1 are given.
+@throws cv::Exception when the observations are inconsistent (from the module, naming the argument).
+*/
+std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options);
+
+} // namespace tripose_samples
+
+#endif // TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP

@@ -1,0 +1,298 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// tripose_track: tracks the camera along a sequence in the Oxford VGG multi-view format. Frames 0 and
+// 1 take their poses from the sequence (they fix the world frame and the scale); every later frame
+// is registered against the frames of a sliding window that see its features, points and lines
+// together (cv::tripose::estimatePoseMultiViewRansac). Writes the poses, prints per-frame errors
+// against the sequence's cameras and, with --plot, draws both trajectories seen from above.
+//
+//   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
+//                 [--method ransac|linear] [--threshold px] [--seed n]
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/tripose.hpp>
+
+#include "arguments.hpp"
+#include "problem_io.hpp"
+#include "sequence_tracking.hpp"
+#include "tripose_support/pose_error.hpp"
+#include "tripose_support/vgg_dataset.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
+    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine sweeps]\n"
+    "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
+    "                 2 is the three-view chain)\n"
+    "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
+    "  --local-refine after each registration, refine every registered frame of the window in turn against\n"
+    "                 all other frames (this many sweeps; default 0: off)\n"
+    "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
+    "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
+    "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
+
+struct Options
+{
+    std::string data, output, plot, method = "ransac";
+    tripose_samples::TrackOptions track;
+};
+
+Options parseArguments(int argc, char** argv)
+{
+    using namespace tripose_samples;
+    Options o;
+    const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
+                                             "--local-refine" };
+    for (const auto& option : optionPairs(argc, argv, kUsage, known))
+    {
+        const std::string& arg = option.first;
+        const std::string& value = option.second;
+        if (arg == "--data")
+            o.data = value;
+        else if (arg == "--output")
+            o.output = value;
+        else if (arg == "--plot")
+            o.plot = value;
+        else if (arg == "--method")
+            o.method = value;
+        else if (arg == "--local-refine")
+            o.track.refinementSweeps = parseInteger(arg, value, 0.0);
+        else if (arg == "--window")
+            o.track.window = parseInteger(arg, value, 2.0);
+        else if (arg == "--threshold")
+        {
+            o.track.ransac.threshold = parseNumber(arg, value);
+            if (!(o.track.ransac.threshold > 0))
+                throw argumentError(arg, "expected a positive number of pixels, got '" + value + "'");
+        }
+        else // --seed
+            o.track.ransac.seed = parseInteger(arg, value, -2147483647.0);
+    }
+    if (o.data.empty())
+        throw std::runtime_error("argument --data is required");
+    if (o.output.empty())
+        throw std::runtime_error("argument --output is required");
+    if (o.method != "ransac" && o.method != "linear")
+        throw argumentError("--method", "expected 'ransac' or 'linear', got '" + o.method + "'");
+    o.track.robust = o.method == "ransac";
+    return o;
+}
+
+cv::Point2d topView(const cv::Mat& R, const cv::Mat& t)
+{
+    const cv::Mat c = -R.t() * t; // camera centre in frame 0; x right, z forward
+    return cv::Point2d(c.at<double>(0), c.at<double>(2));
+}
+
+//! Both trajectories seen from above (x right, z up the image), PNG bytes.
+std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, const std::vector<cv::Point2d>& estimated,
+                                    const std::vector<bool>& valid, const std::string& title)
+{
+    const int width = 900, height = 700, margin = 60;
+    cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+    double xmin = reference[0].x, xmax = xmin, ymin = reference[0].y, ymax = ymin;
+    auto extend = [&](const cv::Point2d& p) {
+        xmin = std::min(xmin, p.x);
+        xmax = std::max(xmax, p.x);
+        ymin = std::min(ymin, p.y);
+        ymax = std::max(ymax, p.y);
+    };
+    for (size_t k = 0; k < reference.size(); ++k)
+    {
+        extend(reference[k]);
+        if (valid[k])
+            extend(estimated[k]);
+    }
+    // One scale for both axes (a top view keeps its shape); a degenerate extent gets a small span.
+    const double span = std::max(std::max(xmax - xmin, ymax - ymin), 1e-9);
+    const double scale = std::min((width - 2.0 * margin) / std::max(xmax - xmin, 1e-3 * span),
+                                  (height - 2.0 * margin) / std::max(ymax - ymin, 1e-3 * span));
+    const cv::Rect2d box(xmin, ymin, xmax - xmin, ymax - ymin);
+    auto pixel = [&](const cv::Point2d& p) {
+        return cv::Point2d(margin + (p.x - box.x) * scale, height - margin - (p.y - box.y) * scale);
+    };
+    const cv::Scalar green(40, 160, 40), red(40, 40, 220);
+    for (size_t k = 0; k < reference.size(); ++k)
+    {
+        if (k > 0)
+            cv::line(image, pixel(reference[k - 1]), pixel(reference[k]), green, 2, cv::LINE_AA);
+        cv::circle(image, pixel(reference[k]), 5, green, 2, cv::LINE_AA);
+        cv::putText(image, std::to_string(k), pixel(reference[k]) + cv::Point2d(7, -7), cv::FONT_HERSHEY_SIMPLEX, 0.45,
+                    cv::Scalar(80, 80, 80), 1, cv::LINE_AA);
+    }
+    for (size_t k = 0; k < estimated.size(); ++k)
+    {
+        if (!valid[k])
+            continue;
+        if (k > 0 && valid[k - 1])
+            cv::line(image, pixel(estimated[k - 1]), pixel(estimated[k]), red, 1, cv::LINE_AA);
+        cv::drawMarker(image, pixel(estimated[k]), red, cv::MARKER_CROSS, 10, 1, cv::LINE_AA);
+    }
+    cv::putText(image, title, cv::Point(margin, 30), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    cv::putText(image, "top view (x right, z forward of frame 0); green: sequence cameras, red: tracked",
+                cv::Point(margin, height - 20), cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    std::vector<uchar> png;
+    cv::imencode(".png", image, png);
+    return png;
+}
+
+void writeFileAtomically(const std::string& path, const std::vector<uchar>& bytes)
+{
+    const std::string temporary = tripose_samples::temporaryNameFor(path);
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()), (std::streamsize)bytes.size());
+        if (!out)
+        {
+            out.close();
+            std::remove(temporary.c_str());
+            throw std::runtime_error("cannot write " + path);
+        }
+    }
+    tripose_samples::commitAtomicWrite(temporary, path);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options options;
+    cv::tripose::support::VggSequence sequence;
+    try
+    {
+        options = parseArguments(argc, argv);
+        sequence = cv::tripose::support::loadVggSequence(options.data);
+    }
+    catch (const cv::Exception& e)
+    {
+        std::cerr << "tripose_track: " << e.err << "\n";
+        return 1;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_track: " << e.what() << "\n" << kUsage;
+        return 1;
+    }
+    const int F = (int)sequence.Rs.size();
+    if (F < 3)
+    {
+        std::cerr << "tripose_track: " << options.data << " holds " << F
+                  << " frame(s); tracking needs two given frames and at least one more\n";
+        return 1;
+    }
+
+    tripose_samples::SequenceObservations observations;
+    observations.cameraMatrices = sequence.cameraMatrices;
+    observations.points = sequence.points;
+    observations.lines = sequence.lines;
+    observations.R0 = sequence.Rs[0];
+    observations.t0 = sequence.ts[0];
+    observations.R1 = sequence.Rs[1];
+    observations.t1 = sequence.ts[1];
+    std::vector<tripose_samples::TrackedFrame> frames;
+    try
+    {
+        frames = tripose_samples::trackSequence(observations, options.track);
+    }
+    catch (const cv::Exception& e)
+    {
+        std::cerr << "tripose_track: " << e.err << "\n";
+        return 2;
+    }
+
+    // Errors against the sequence's cameras; drift in % of the reference path length.
+    std::vector<cv::Point2d> reference(F), estimated(F);
+    std::vector<bool> valid(F);
+    double pathLength = 0;
+    for (int k = 1; k < F; ++k)
+        pathLength += cv::norm(-sequence.Rs[k].t() * sequence.ts[k] - (-sequence.Rs[k - 1].t() * sequence.ts[k - 1]));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(nan)), status(F, 1, CV_32S), features(F, 1, CV_32S),
+        inliers(F, 1, CV_32S), rotationErrors(F, 1, CV_64F, cv::Scalar::all(nan)),
+        positionErrors(F, 1, CV_64F, cv::Scalar::all(nan));
+    double totalMs = 0;
+    int registered = 0, lost = 0;
+    std::cout << "Sequence " << options.data << ": " << F << " frames, window " << options.track.window << ", method "
+              << options.method << "; path length " << pathLength << "\n"
+              << "frame  status      known  features  inliers  rot.err(deg)  pos.err  pos.err(% path)  ms\n";
+    for (int k = 0; k < F; ++k)
+    {
+        const tripose_samples::TrackedFrame& f = frames[k];
+        status.at<int>(k) = (int)f.status;
+        features.at<int>(k) = f.features;
+        inliers.at<int>(k) = f.inliers;
+        reference[k] = topView(sequence.Rs[k], sequence.ts[k]);
+        valid[k] = f.status != tripose_samples::FRAME_LOST;
+        const char* name = f.status == tripose_samples::FRAME_GIVEN ? "given" :
+                           f.status == tripose_samples::FRAME_REGISTERED ? "registered" : "LOST";
+        if (!valid[k])
+        {
+            ++lost;
+            totalMs += f.milliseconds;
+            std::cout << cv::format("%5d  %-10s  %5d  %8d  %7s  %12s  %7s  %15s  %.2f\n", k, name, f.knownViews,
+                                    f.features, "-", "-", "-", "-", f.milliseconds);
+            continue;
+        }
+        for (int r = 0; r < 3; ++r)
+        {
+            for (int c = 0; c < 3; ++c)
+                poses.at<double>(k, 3 * r + c) = f.R.at<double>(r, c);
+            poses.at<double>(k, 9 + r) = f.t.at<double>(r);
+        }
+        estimated[k] = topView(f.R, f.t);
+        const cv::tripose::support::PoseError error =
+            cv::tripose::support::poseError(f.R, f.t, sequence.Rs[k], sequence.ts[k]);
+        const double position = cv::norm(-f.R.t() * f.t - (-sequence.Rs[k].t() * sequence.ts[k]));
+        rotationErrors.at<double>(k) = error.rotationDeg;
+        positionErrors.at<double>(k) = position;
+        if (f.status == tripose_samples::FRAME_REGISTERED)
+        {
+            ++registered;
+            totalMs += f.milliseconds;
+            std::cout << cv::format("%5d  %-10s  %5d  %8d  %7d  %12.4f  %7.4f  %15.3f  %.2f\n", k, name, f.knownViews,
+                                    f.features, f.inliers, error.rotationDeg, position, 100 * position / pathLength,
+                                    f.milliseconds);
+        }
+        else
+            std::cout << cv::format("%5d  %-10s\n", k, name);
+    }
+    const double drift = valid[F - 1] ? 100 * positionErrors.at<double>(F - 1) / pathLength : nan;
+    std::cout << cv::format("Drift of the last frame: %.3f %% of the path; %d registered, %d lost; %.2f ms per frame\n",
+                            drift, registered, lost, totalMs / std::max(1, F - 2));
+
+    try
+    {
+        tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
+            fs << "sequence" << options.data << "window" << options.track.window << "method" << options.method
+               << "local_refine_sweeps" << options.track.refinementSweeps;
+            fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
+            fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
+            fs << "path_length" << pathLength << "drift_percent" << drift;
+            fs << "ms_per_frame" << totalMs / std::max(1, F - 2);
+        });
+        if (!options.plot.empty())
+        {
+            const std::string title = cv::format("%s: window %d, %s, drift %.2f %% of the path", options.data.c_str(),
+                                                 options.track.window, options.method.c_str(), drift);
+            writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
+        }
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_track: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,142 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The Corridor analysis of doc/tracking.md: where registration and maximum-likelihood refinement
+// put the frames of a VGG sequence when frames 0 and 1 are given.
+//
+//   tripose_tracking_sweeps --data <sequence> --floor
+//       each frame from 2 on registered (RANSAC + refinement) against every other frame at the
+//       sequence's poses: the error of registration alone, per frame in % of the path;
+//   tripose_tracking_sweeps --data <sequence> --sweeps S [--start track.yml]
+//       S sweeps of alternating refinement of frames 2.. against all other frames (frames 0 and 1
+//       fixed, Huber loss at 2 px), started at the sequence's poses or at the poses of a
+//       tripose_track output; prints the last frame's drift every 25 sweeps.
+
+#include <iostream>
+#include <string>
+
+#include <opencv2/tripose.hpp>
+
+#include "sequence_tracking.hpp"
+#include "tripose_support/vgg_dataset.hpp"
+
+namespace {
+
+double centreDistance(const cv::Mat& R, const cv::Mat& t, const cv::Mat& Rref, const cv::Mat& tref)
+{
+    return cv::norm(cv::Mat(-R.t() * t), cv::Mat(-Rref.t() * tref));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    std::string data, start;
+    int sweeps = 0;
+    bool floor = false;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        if (arg == "--data" && i + 1 < argc)
+            data = argv[++i];
+        else if (arg == "--start" && i + 1 < argc)
+            start = argv[++i];
+        else if (arg == "--sweeps" && i + 1 < argc)
+            sweeps = std::atoi(argv[++i]);
+        else if (arg == "--floor")
+            floor = true;
+        else
+        {
+            std::cerr << "tripose_tracking_sweeps: unknown or incomplete argument " << arg << "\n";
+            return 1;
+        }
+    }
+    try
+    {
+        const cv::tripose::support::VggSequence seq = cv::tripose::support::loadVggSequence(data);
+        const int F = (int)seq.Rs.size();
+        tripose_samples::SequenceObservations obs;
+        obs.cameraMatrices = seq.cameraMatrices;
+        obs.points = seq.points;
+        obs.lines = seq.lines;
+        std::vector<tripose_samples::TrackedFrame> frames(F);
+        for (int k = 0; k < F; ++k)
+        {
+            frames[k].status = k < 2 ? tripose_samples::FRAME_GIVEN : tripose_samples::FRAME_REGISTERED;
+            frames[k].R = seq.Rs[k].clone();
+            frames[k].t = seq.ts[k].clone();
+        }
+        double path = 0;
+        for (int k = 1; k < F; ++k)
+            path += centreDistance(seq.Rs[k], seq.ts[k], seq.Rs[k - 1], seq.ts[k - 1]);
+
+        if (floor)
+        {
+            for (int k = 2; k < F; ++k)
+            {
+                std::vector<int> others;
+                for (int j = 0; j < F; ++j)
+                    if (j != k)
+                        others.push_back(j);
+                std::vector<cv::Mat> p, l, K, Rs, ts;
+                int features = 0;
+                cv::Mat R, t;
+                if (!tripose_samples::registrationViews(obs, frames, k, others, p, l, K, Rs, ts, features) ||
+                    cv::tripose::estimatePoseMultiViewRansac(p, l, K, cv::noArray(), Rs, ts, R, t) == 0)
+                {
+                    std::cout << "frame " << k << ": no pose\n";
+                    continue;
+                }
+                std::cout << cv::format("frame %d: %d features, position error %.3f %% of the path\n", k, features,
+                                        100 * centreDistance(R, t, seq.Rs[k], seq.ts[k]) / path);
+            }
+            return 0;
+        }
+
+        if (!start.empty())
+        {
+            cv::FileStorage fs(start, cv::FileStorage::READ);
+            cv::Mat poses;
+            if (fs.isOpened())
+                fs["poses"] >> poses;
+            if (poses.rows != F || poses.cols != 12 || poses.type() != CV_64F || !cv::checkRange(poses.rowRange(2, F)))
+            {
+                std::cerr << "tripose_tracking_sweeps: " << start << ": expected poses, " << F
+                          << " x 12 CV_64F, every frame tracked\n";
+                return 1;
+            }
+            for (int k = 2; k < F; ++k)
+            {
+                frames[k].R = poses.row(k).colRange(0, 9).clone().reshape(1, 3);
+                frames[k].t = poses.row(k).colRange(9, 12).clone().t();
+            }
+        }
+        cv::tripose::RefineParams params;
+        params.loss = cv::tripose::LOSS_HUBER;
+        params.lossScale = 2;
+        std::cout << cv::format("start: last frame %.3f %% of the path\n",
+                                100 * centreDistance(frames[F - 1].R, frames[F - 1].t, seq.Rs[F - 1], seq.ts[F - 1]) / path);
+        for (int sweep = 1; sweep <= sweeps; ++sweep)
+        {
+            for (int k = 2; k < F; ++k)
+            {
+                std::vector<int> others;
+                for (int j = 0; j < F; ++j)
+                    if (j != k)
+                        others.push_back(j);
+                tripose_samples::refineAgainst(obs, frames, k, others, params);
+            }
+            if (sweep == 1 || sweep % 25 == 0 || sweep == sweeps)
+                std::cout << cv::format("sweep %d: last frame %.3f %% of the path\n", sweep,
+                                        100 * centreDistance(frames[F - 1].R, frames[F - 1].t, seq.Rs[F - 1],
+                                                             seq.ts[F - 1]) / path);
+        }
+    }
+    catch (const cv::Exception& e)
+    {
+        std::cerr << "tripose_tracking_sweeps: " << e.err << "\n";
+        return 1;
+    }
+    return 0;
+}
