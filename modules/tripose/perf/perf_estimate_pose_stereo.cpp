@@ -7,7 +7,7 @@
 namespace opencv_test {
 namespace {
 
-tripose::support::SyntheticStereoScene stereoScene(int points, int lines, double outliers)
+tripose::support::SyntheticStereoScene stereoScene(int points, int lines, double outliers, int seed = 3)
 {
     tripose::support::SyntheticStereoParams params;
     params.numPoints = points;
@@ -15,7 +15,7 @@ tripose::support::SyntheticStereoScene stereoScene(int points, int lines, double
     params.outlierRatio = outliers;
     params.noiseSigma = 1.0;
     params.missingRatio = 0.2;
-    params.seed = 3;
+    params.seed = seed;
     return tripose::support::generateSyntheticStereoScene(params);
 }
 
@@ -36,15 +36,17 @@ PERF_TEST_P(Tripose_EstimatePoseStereo, estimate, testing::Values(StereoCounts(4
     SANITY_CHECK_NOTHING();
 }
 
-// (points, lines, outlier ratio): end to end, sampling, local optimisation and the final
-// refinement over the four views.
-typedef tuple<int, int, double> StereoRansacCase;
+// (points, lines, outlier ratio, scene seed): end to end, sampling, local optimisation and the final
+// refinement over the four views. Two scenes: seed 3 is one where the consensus stops short of the
+// truth (0.4 deg, 64 of 70 true matches) after many samples, seed 4 one where it succeeds at once;
+// tripose_stereo_benchmark gives the median over many scenes.
+typedef tuple<int, int, double, int> StereoRansacCase;
 typedef perf::TestBaseWithParam<StereoRansacCase> Tripose_EstimatePoseStereoRansac;
 
-PERF_TEST_P(Tripose_EstimatePoseStereoRansac, estimate, testing::Values(StereoRansacCase(100, 40, 0.5)))
+PERF_TEST_P(Tripose_EstimatePoseStereoRansac, estimate, testing::Values(StereoRansacCase(100, 40, 0.5, 3), StereoRansacCase(100, 40, 0.5, 4)))
 {
     const tripose::support::SyntheticStereoScene s =
-        stereoScene(get<0>(GetParam()), get<1>(GetParam()), get<2>(GetParam()));
+        stereoScene(get<0>(GetParam()), get<1>(GetParam()), get<2>(GetParam()), get<3>(GetParam()));
     tripose::RansacParams ransac;
     Mat R, t, pointMask, lineMask;
     declare.iterations(100);
