@@ -242,7 +242,7 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
             ASSERT_GT(n, 0);
             ASSERT_EQ(pointMask.total(), 100u);
             ASSERT_EQ(lineMask.total(), 40u);
-            EXPECT_EQ(n, countNonZero(pointMask) + countNonZero(lineMask));
+            EXPECT_EQ(n, cv::countNonZero(pointMask) + cv::countNonZero(lineMask));
             const PoseError e = poseError(R, t, s.R, s.t);
             if (!(e.rotationDeg < 0.5 && e.relativeTranslation < 0.1))
             {
@@ -395,7 +395,7 @@ TEST(Tripose_Stereo, degenerate_input_gives_no_candidate)
     Mat pointMask, lineMask;
     EXPECT_EQ(ransacStereo(line, R, t, pointMask, lineMask), 0);
     EXPECT_TRUE(R.empty() && t.empty());
-    EXPECT_EQ(countNonZero(pointMask), 0);
+    EXPECT_EQ(cv::countNonZero(pointMask), 0);
 
     // Three collinear points: a turn about their line is free.
     SyntheticStereoScene collinear = generateSyntheticStereoScene(stereoParams(3, 0, 42));
@@ -414,7 +414,7 @@ TEST(Tripose_Stereo, degenerate_input_gives_no_candidate)
         *m = Mat(5, 2, CV_64F, Scalar(320, 240));
     const int n = solveStereo(same, R, t, tripose::POSE_LINEAR, &Rs, &ts);
     for (int i = 0; i < n; ++i)
-        EXPECT_TRUE(checkRange(Rs[i]) && checkRange(ts[i]));
+        EXPECT_TRUE(cv::checkRange(Rs[i]) && cv::checkRange(ts[i]));
 }
 
 }} // namespace

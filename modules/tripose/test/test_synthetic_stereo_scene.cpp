@@ -56,7 +56,7 @@ bool rowIsNaN(const Mat& m, int row)
 
 double angleDegrees(const Matx33d& R)
 {
-    return degrees(std::acos(std::max(-1.0, std::min(1.0, 0.5 * (trace(R) - 1)))));
+    return degrees(std::acos(std::max(-1.0, std::min(1.0, 0.5 * (cv::trace(R) - 1)))));
 }
 
 SyntheticStereoParams params(int points, int lines, int seed)
@@ -85,13 +85,13 @@ TEST(Tripose_SyntheticStereoScene, shapes_types_and_defaults)
     ASSERT_EQ(s.cameraMatrices.size(), 4u);
     EXPECT_EQ(s.points3d.size(), Size(3, 7));
     EXPECT_EQ(s.lines3d.size(), Size(6, 5));
-    EXPECT_EQ(countNonZero(s.pointInliers), 7);
-    EXPECT_EQ(countNonZero(s.lineVisibility == SEEN_IN_BOTH), 5);
+    EXPECT_EQ(cv::countNonZero(s.pointInliers), 7);
+    EXPECT_EQ(cv::countNonZero(s.lineVisibility == SEEN_IN_BOTH), 5);
     for (const Mat* R : { &s.R12, &s.R })
     {
         const Matx33d r = toMatx33(*R);
         EXPECT_LT(cv::norm(r.t() * r - Matx33d::eye()), 1e-12);
-        EXPECT_NEAR(determinant(r), 1.0, 1e-12);
+        EXPECT_NEAR(cv::determinant(r), 1.0, 1e-12);
     }
 }
 
@@ -148,10 +148,10 @@ TEST(Tripose_SyntheticStereoScene, noise_free_observations_reproject_exactly_and
     const Mat* points[4] = { &s.points1, &s.points2, &s.points3, &s.points4 };
     const Mat* lines[4] = { &s.lines1, &s.lines2, &s.lines3, &s.lines4 };
     // Exactly round(0.5 * count) features seen by one time-B view, each by view 3 or view 4.
-    EXPECT_EQ(countNonZero(s.pointVisibility == SEEN_IN_BOTH), 20);
-    EXPECT_EQ(countNonZero(s.lineVisibility == SEEN_IN_BOTH), 15);
-    EXPECT_GT(countNonZero(s.pointVisibility == SEEN_IN_VIEW3), 0);
-    EXPECT_GT(countNonZero(s.pointVisibility == SEEN_IN_VIEW4), 0);
+    EXPECT_EQ(cv::countNonZero(s.pointVisibility == SEEN_IN_BOTH), 20);
+    EXPECT_EQ(cv::countNonZero(s.lineVisibility == SEEN_IN_BOTH), 15);
+    EXPECT_GT(cv::countNonZero(s.pointVisibility == SEEN_IN_VIEW3), 0);
+    EXPECT_GT(cv::countNonZero(s.pointVisibility == SEEN_IN_VIEW4), 0);
     for (int v = 0; v < 4; ++v)
     {
         const int bit = v == 2 ? SEEN_IN_VIEW3 : SEEN_IN_VIEW4;
@@ -201,8 +201,8 @@ TEST(Tripose_SyntheticStereoScene, outliers_are_counted_marked_and_far_from_the_
     const SyntheticStereoScene clean = generateSyntheticStereoScene(p);
     p.outlierRatio = 0.3;
     const SyntheticStereoScene s = generateSyntheticStereoScene(p);
-    EXPECT_EQ(countNonZero(s.pointInliers), 28);
-    EXPECT_EQ(countNonZero(s.lineInliers), 14);
+    EXPECT_EQ(cv::countNonZero(s.pointInliers), 28);
+    EXPECT_EQ(cv::countNonZero(s.lineInliers), 14);
     // Same geometry and visibility as without outliers; only the time-B observations of the
     // outliers differ, by at least 20 px in every view that sees them.
     EXPECT_EQ(cv::norm(s.points3d, clean.points3d, NORM_INF), 0.0);
