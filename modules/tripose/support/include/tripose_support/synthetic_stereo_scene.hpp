@@ -34,7 +34,9 @@ struct SyntheticStereoParams
     SyntheticStereoParams();
     int numPoints;             //!< Number of points.
     int numLines;              //!< Number of line segments.
-    double baselineMin, baselineMax;   //!< Range (m) of the rig's baseline, drawn uniformly.
+    /** Range (m) of the rig's baseline along the left camera's x axis, drawn uniformly; the right
+    camera is also off that axis by Gaussian amounts of 5 % of it in y and z. */
+    double baselineMin, baselineMax;
     double rigTiltDegrees;     //!< The right camera is turned by up to this angle from parallel to the left.
     double depthMin, depthMax; //!< Range (m) of the depth of the structure in view 1, drawn uniformly.
     double motionMin, motionMax;       //!< Range (m) of the distance the rig moves between times A and B.
@@ -76,8 +78,8 @@ struct SyntheticStereoScene
 
 /** @brief Generates a random stereo-rig scene of points and line segments.
 
-The rig: the right camera at a distance uniform in [baselineMin, baselineMax] roughly along the left
-camera's x axis (within a few degrees), turned by up to rigTiltDegrees. The motion: view 3's centre
+The rig: the right camera's centre at x uniform in [baselineMin, baselineMax] in the left camera's
+frame, y and z Gaussian with a standard deviation of 5 % of x; turned by up to rigTiltDegrees. The motion: view 3's centre
 at a distance uniform in [motionMin, motionMax] from view 1's in a uniformly random direction, turned
 by up to rotationDegrees about a random axis. Points: a pixel uniform in view 1 at a depth uniform
 in [depthMin, depthMax], kept when it projects at least 2 px inside the image and at least 1 m in
