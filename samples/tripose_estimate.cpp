@@ -9,7 +9,10 @@
 //
 // The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
 // (or dist1..dist3), R12, t12, points1..points3 (Nx2) and lines1..lines3 (Mx4); either kind of
-// feature may be absent. The result holds num_solutions and, when a pose was found, R (3x3) and
+// feature may be absent. With points4 and/or lines4 it is a stereo rig (estimatePoseLinePointStereo):
+// views 1, 2 the left and right cameras at time A, views 3, 4 at time B, R12/t12 the rig, K1..K4 and
+// dist1..dist4 per view, and a row of .nan in points3/points4/lines3/lines4 a feature that view does
+// not see. The result holds num_solutions and, when a pose was found, R (3x3) and
 // t (3x1); with --method ransac also num_inliers, point_inliers and line_inliers (one 0/1 per
 // feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
 // 2 when the solver rejects the input (the message names the problem key). No output file is left
@@ -34,7 +37,10 @@ const char* kUsage =
     "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
     "                        [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]\n"
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
-    "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4)\n"
+    "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4).\n"
+    "               Stereo rig: with points4 and/or lines4, views 1-2 are the left and right cameras\n"
+    "               at time A, views 3-4 at time B, R12/t12 the rig, K or K1..K4, [dist or dist1..dist4];\n"
+    "               a row of .nan in points3/points4/lines3/lines4 marks a feature that view does not see\n"
     "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
     "               (ransac: also num_inliers, point_inliers, line_inliers)\n"
     "  --method     linear (default): the unified linear solver on all features (no outlier rejection);\n"
@@ -42,8 +48,9 @@ const char* kUsage =
     "  --threshold  ransac inlier threshold in pixels (default 2)\n"
     "  --confidence ransac confidence, in (0, 1) (default 0.999)\n"
     "  --max-iterations  ransac upper bound on the number of samples (default 10000)\n"
-    "  --refine     1: finish with maximum-likelihood refinement over the three views (linear: every\n"
-    "               candidate and further starts refined, the lowest cost kept; ransac: on the inliers); 0: none.\n"
+    "  --refine     1: finish with maximum-likelihood refinement over all views (linear: every\n"
+    "               candidate and further starts refined, the lowest cost kept; ransac: on the inliers);\n"
+    "               0: no refinement.\n"
     "               Default: 0 with linear, 1 with ransac\n"
     "  --seed       ransac sampler seed (default 0)\n";
 
@@ -126,20 +133,25 @@ int main(int argc, char** argv)
     const bool robust = options.method == "ransac";
     try
     {
-        if (robust)
-        {
-            inliers = cv::tripose::estimatePoseLinePointRansac(
-                problem.points[0], problem.points[1], problem.points[2], problem.lines[0], problem.lines[1],
-                problem.lines[2], problem.K, problem.dist, problem.R12, problem.t12, R, t, options.ransac,
-                pointInliers, lineInliers);
-            n = inliers > 0 ? 1 : 0;
-        }
+        const tripose_samples::Problem& p = problem;
+        const int method = options.refine == 1 ? cv::tripose::POSE_LINEAR_REFINE : cv::tripose::POSE_LINEAR;
+        if (robust && p.stereo)
+            inliers = cv::tripose::estimatePoseLinePointStereoRansac(
+                p.points[0], p.points[1], p.points[2], p.points[3], p.lines[0], p.lines[1], p.lines[2], p.lines[3],
+                p.K, p.dist, p.R12, p.t12, R, t, options.ransac, pointInliers, lineInliers);
+        else if (robust)
+            inliers = cv::tripose::estimatePoseLinePointRansac(p.points[0], p.points[1], p.points[2], p.lines[0],
+                                                               p.lines[1], p.lines[2], p.K, p.dist, p.R12, p.t12, R, t,
+                                                               options.ransac, pointInliers, lineInliers);
+        else if (p.stereo)
+            n = cv::tripose::estimatePoseLinePointStereo(p.points[0], p.points[1], p.points[2], p.points[3],
+                                                         p.lines[0], p.lines[1], p.lines[2], p.lines[3], p.K, p.dist,
+                                                         p.R12, p.t12, R, t, method);
         else
-            n = cv::tripose::estimatePoseLinePoint(problem.points[0], problem.points[1], problem.points[2],
-                                                   problem.lines[0], problem.lines[1], problem.lines[2],
-                                                   problem.K, problem.dist, problem.R12, problem.t12, R, t,
-                                                   options.refine == 1 ? cv::tripose::POSE_LINEAR_REFINE
-                                                                       : cv::tripose::POSE_LINEAR);
+            n = cv::tripose::estimatePoseLinePoint(p.points[0], p.points[1], p.points[2], p.lines[0], p.lines[1],
+                                                   p.lines[2], p.K, p.dist, p.R12, p.t12, R, t, method);
+        if (robust)
+            n = inliers > 0 ? 1 : 0;
     }
     catch (const cv::Exception& e)
     {

@@ -3,17 +3,22 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // tripose_make_scene: writes a synthetic three-view scene (generateSyntheticScene of the support
-// library) as a problem file for tripose_estimate, with its ground truth, so that scripts in any
-// language use the same scenes as the C++ tests and benchmarks.
+// library) or, with --stereo, a stereo-rig scene (generateSyntheticStereoScene) as a problem file for
+// tripose_estimate, with its ground truth, so that scripts in any language use the same scenes as
+// the C++ tests and benchmarks.
 //
 //   tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]
 //                      [--noise px] [--outliers ratio] [--seed k]
+//   tripose_make_scene --stereo --output scene.yml [--points N] [--lines M] [--noise px]
+//                      [--outliers ratio] [--missing ratio] [--seed k]
 //
 // The file (OpenCV FileStorage, YAML or JSON by extension) holds the problem keys K1, K2, K3,
 // R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4), and the ground truth R_gt (3x3), t_gt
 // (3x1), points3d (Nx3), lines3d (Mx6) in the frame of view 1, point_inliers (Nx1) and
-// line_inliers (Mx1) (1 where the view-3 observation is a true match). Exit status: 0 on success,
-// 1 on bad arguments. No output file is left behind on failure.
+// line_inliers (Mx1) (1 where the view-3 observation is a true match). A stereo scene adds K4,
+// points4 and lines4 (rows of .nan where view 3 or 4 does not see a feature), R12/t12 being the rig,
+// and point_visibility / line_visibility (1: view 3 only, 2: view 4 only, 3: both). Exit status: 0
+// on success, 1 on bad arguments. No output file is left behind on failure.
 
 #include <cmath>
 #include <iostream>
@@ -21,6 +26,7 @@
 #include <vector>
 
 #include "tripose_support/synthetic_scene.hpp"
+#include "tripose_support/synthetic_stereo_scene.hpp"
 
 #include "arguments.hpp"
 #include "problem_io.hpp"
@@ -35,6 +41,8 @@ namespace {
 const char* kUsage =
     "usage: tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]\n"
     "                          [--noise px] [--outliers ratio] [--seed k]\n"
+    "       tripose_make_scene --stereo --output scene.yml [--points N] [--lines M] [--noise px]\n"
+    "                          [--outliers ratio] [--missing ratio] [--seed k]\n"
     "  --output    problem file to write (.yml, .yaml or .json)\n"
     "  --points    number of point triplets (default 4)\n"
     "  --lines     number of line-segment triplets (default 4)\n"
@@ -43,12 +51,18 @@ const char* kUsage =
     "  --noise     standard deviation of the Gaussian pixel noise (default 0)\n"
     "  --outliers  fraction in [0, 1) of points and of lines with a wrong view-3 match (default 0)\n"
     "  --seed      integer seed; the same seed writes the same scene (default 0)\n"
-    "The scene follows Qadir & Neubert, Sec. IV-A: 10 m cube, 640x480 cameras with f = 800 px.\n";
+    "  --stereo    a stereo-rig scene instead (no value): views 1-2 a rig at time A, views 3-4 at time B\n"
+    "              (baseline 0.1-0.5 m, structure 5-30 m ahead, motion 0.3-3 m, turn up to 20 deg);\n"
+    "              --outliers are wrong matches at time B; --motion does not apply\n"
+    "  --missing   stereo: fraction in [0, 1] of points and of lines seen by view 3 or view 4 only (default 0)\n"
+    "The three-view scene follows Qadir & Neubert, Sec. IV-A: 10 m cube, 640x480 cameras with f = 800 px.\n";
 
 struct Options
 {
     std::string output;
+    bool stereo = false;
     cv::tripose::support::SyntheticSceneParams scene;
+    cv::tripose::support::SyntheticStereoParams stereoScene;
 };
 
 bool hasExtension(const std::string& path, const std::string& extension)
@@ -60,9 +74,19 @@ bool hasExtension(const std::string& path, const std::string& extension)
 Options parseArguments(int argc, char** argv)
 {
     Options o;
+    // --stereo is a switch; every other option takes a value.
+    std::vector<char*> args;
+    for (int i = 0; i < argc; ++i)
+    {
+        if (i > 0 && std::string(argv[i]) == "--stereo")
+            o.stereo = true;
+        else
+            args.push_back(argv[i]);
+    }
     const std::vector<std::string> known = { "--output", "--points",   "--lines", "--motion",
-                                             "--noise",  "--outliers", "--seed" };
-    for (const auto& option : optionPairs(argc, argv, kUsage, known))
+                                             "--noise",  "--outliers", "--missing", "--seed" };
+    bool missingGiven = false, motionGiven = false;
+    for (const auto& option : optionPairs((int)args.size(), args.data(), kUsage, known))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
@@ -74,6 +98,7 @@ Options parseArguments(int argc, char** argv)
             o.scene.numLines = parseInteger(arg, value, 0);
         else if (arg == "--motion")
         {
+            motionGiven = true;
             if (value == "large")
                 o.scene.motion = cv::tripose::support::MOTION_LARGE;
             else if (value == "small")
@@ -93,6 +118,13 @@ Options parseArguments(int argc, char** argv)
             if (!(o.scene.outlierRatio >= 0 && o.scene.outlierRatio < 1))
                 throw argumentError(arg, "expected a fraction in [0, 1), got '" + value + "'");
         }
+        else if (arg == "--missing")
+        {
+            missingGiven = true;
+            o.stereoScene.missingRatio = parseNumber(arg, value);
+            if (!(o.stereoScene.missingRatio >= 0 && o.stereoScene.missingRatio <= 1))
+                throw argumentError(arg, "expected a fraction in [0, 1], got '" + value + "'");
+        }
         else // --seed
             o.scene.seed = parseInteger(arg, value, -2147483648.0);
     }
@@ -100,6 +132,15 @@ Options parseArguments(int argc, char** argv)
         throw std::runtime_error("argument --output is required (see --help)");
     if (!hasExtension(o.output, ".yml") && !hasExtension(o.output, ".yaml") && !hasExtension(o.output, ".json"))
         throw argumentError("--output", "expected a .yml, .yaml or .json file name, got '" + o.output + "'");
+    if (o.stereo && motionGiven)
+        throw argumentError("--motion", "applies to three-view scenes, not with --stereo");
+    if (!o.stereo && missingGiven)
+        throw argumentError("--missing", "applies to stereo-rig scenes only (add --stereo)");
+    o.stereoScene.numPoints = o.scene.numPoints;
+    o.stereoScene.numLines = o.scene.numLines;
+    o.stereoScene.noiseSigma = o.scene.noiseSigma;
+    o.stereoScene.outlierRatio = o.scene.outlierRatio;
+    o.stereoScene.seed = o.scene.seed;
     return o;
 }
 
@@ -113,6 +154,19 @@ void writeScene(cv::FileStorage& fs, const cv::tripose::support::SyntheticScene&
     fs << "R_gt" << s.R << "t_gt" << s.t;
     fs << "points3d" << s.points3d << "lines3d" << s.lines3d;
     fs << "point_inliers" << s.pointInliers << "line_inliers" << s.lineInliers;
+}
+
+void writeStereoScene(cv::FileStorage& fs, const cv::tripose::support::SyntheticStereoScene& s)
+{
+    for (int v = 0; v < 4; ++v)
+        fs << "K" + std::to_string(v + 1) << s.cameraMatrices[v];
+    fs << "R12" << s.R12 << "t12" << s.t12;
+    fs << "points1" << s.points1 << "points2" << s.points2 << "points3" << s.points3 << "points4" << s.points4;
+    fs << "lines1" << s.lines1 << "lines2" << s.lines2 << "lines3" << s.lines3 << "lines4" << s.lines4;
+    fs << "R_gt" << s.R << "t_gt" << s.t;
+    fs << "points3d" << s.points3d << "lines3d" << s.lines3d;
+    fs << "point_inliers" << s.pointInliers << "line_inliers" << s.lineInliers;
+    fs << "point_visibility" << s.pointVisibility << "line_visibility" << s.lineVisibility;
 }
 
 } // namespace
@@ -131,8 +185,17 @@ int main(int argc, char** argv)
     }
     try
     {
-        const cv::tripose::support::SyntheticScene scene = cv::tripose::support::generateSyntheticScene(options.scene);
-        tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) { writeScene(fs, scene); });
+        if (options.stereo)
+        {
+            const cv::tripose::support::SyntheticStereoScene scene =
+                cv::tripose::support::generateSyntheticStereoScene(options.stereoScene);
+            tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) { writeStereoScene(fs, scene); });
+        }
+        else
+        {
+            const cv::tripose::support::SyntheticScene scene = cv::tripose::support::generateSyntheticScene(options.scene);
+            tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) { writeScene(fs, scene); });
+        }
     }
     catch (const cv::Exception& e)
     {
@@ -145,6 +208,7 @@ int main(int argc, char** argv)
         return 1;
     }
     std::cout << "wrote " << options.output << ": " << options.scene.numPoints << " points, "
-              << options.scene.numLines << " lines, seed " << options.scene.seed << "\n";
+              << options.scene.numLines << " lines, seed " << options.scene.seed << (options.stereo ? ", stereo rig" : "")
+              << "\n";
     return 0;
 }

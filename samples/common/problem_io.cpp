@@ -10,6 +10,7 @@
 #include <cctype>
 #include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -364,11 +365,23 @@ bool toElementType(const Node* node, int& depth, int& channels)
     return parsed.ec == std::errc() && parsed.ptr == dt.data() + dt.size() - 1 && channels >= 1 && channels <= CV_CN_MAX;
 }
 
+//! True when every value is finite, or NaN where @p nanAllowed.
+bool finiteOrMissing(const cv::Mat& m, bool nanAllowed)
+{
+    const double* p = m.ptr<double>();
+    for (size_t i = 0, n = m.total(); i < n; ++i)
+        if (!std::isfinite(p[i]) && !(nanAllowed && std::isnan(p[i])))
+            return false;
+    return true;
+}
+
 /** A matrix under @p key, as FileStorage writes one (YAML: a !!opencv-matrix mapping; JSON: an
 object with "type_id": "opencv-matrix"; both with rows, cols, dt, data, or sizes for rows and cols),
-converted to CV_64F; an empty one when the key is absent, null or has no elements.
+converted to CV_64F; an empty one when the key is absent, null or has no elements. NaN (.nan) is
+accepted where @p nanMarksMissing (the time-B observations of a rig, where a row of NaN marks a
+feature the view does not see; the solver checks that rows are whole), Inf nowhere.
 */
-cv::Mat readMatrix(const Text& text, const std::string& key)
+cv::Mat readMatrix(const Text& text, const std::string& key, bool nanMarksMissing = false)
 {
     const Node* node = text.find(key);
     if (!node || isNull(*node))
@@ -420,16 +433,16 @@ cv::Mat readMatrix(const Text& text, const std::string& key)
         if (!toReal(*values[i], out[i]))
             throw keyError(key, cv::format("malformed matrix: data value %zu is not a number: %s", i + 1,
                                            describe(*values[i]).c_str()));
-    if (!cv::checkRange(m))
-        throw keyError(key, "contains NaN or Inf values");
+    if (!finiteOrMissing(m, nanMarksMissing))
+        throw keyError(key, nanMarksMissing ? "contains Inf values" : "contains NaN or Inf values");
     if (depth != CV_64F)
     {
         // The values a matrix of the declared type holds (rounded, saturated), as FileStorage reads them.
         cv::Mat declaredType;
         m.convertTo(declaredType, depth);
         declaredType.convertTo(m, CV_64F);
-        if (!cv::checkRange(m))
-            throw keyError(key, "contains NaN or Inf values");
+        if (!finiteOrMissing(m, nanMarksMissing))
+            throw keyError(key, nanMarksMissing ? "contains Inf values" : "contains NaN or Inf values");
     }
     return m;
 }
@@ -444,64 +457,84 @@ cv::Mat requireShape(const cv::Mat& m, const std::string& key, int rows, int col
     return m;
 }
 
-//! One key (e.g. K) or three per-view keys (K1..K3); not both.
-std::vector<cv::Mat> readShared(const Text& text, const std::string& key, bool required)
+//! One key (e.g. K) or one per view (K1..K3, or K1..K4 for a rig); not both.
+std::vector<cv::Mat> readShared(const Text& text, const std::string& key, bool required, int numViews)
 {
     const cv::Mat shared = readMatrix(text, key);
-    cv::Mat perView[3];
+    cv::Mat perView[4];
     int present = 0;
-    for (int v = 0; v < 3; ++v)
+    for (int v = 0; v < numViews; ++v)
     {
         perView[v] = readMatrix(text, key + std::to_string(v + 1));
         present += !perView[v].empty();
     }
+    const std::string range = key + "1.." + key + std::to_string(numViews);
+    const char* const views = numViews == 4 ? "four" : "three";
     if (!shared.empty() && present > 0)
-        throw keyError(key, "give either " + key + " or " + key + "1.." + key + "3, not both");
+        throw keyError(key, "give either " + key + " or " + range + ", not both");
     if (!shared.empty())
         return { shared };
-    if (present == 3)
-        return { perView[0], perView[1], perView[2] };
-    for (int v = 0; v < 3 && present > 0; ++v)
+    if (present == numViews)
+        return std::vector<cv::Mat>(perView, perView + numViews);
+    for (int v = 0; v < numViews && present > 0; ++v)
         if (perView[v].empty())
-            throw keyError(key + std::to_string(v + 1), "missing (per-view " + key + " needs all three views)");
+            throw keyError(key + std::to_string(v + 1),
+                           std::string("missing (per-view ") + key + " needs all " + views + " views)");
     if (required)
-        throw keyError(key, "missing (give " + key + " or " + key + "1.." + key + "3)");
+        throw keyError(key, "missing (give " + key + " or " + range + ")");
     return {};
 }
 
-//! points1..3 or lines1..3: all absent/empty, or all present with the given width and equal rows.
-void readFeatures(const Text& text, const std::string& prefix, int width, cv::Mat out[3])
+/** points1..points<numViews> or lines1..: each absent/empty (no features of that kind in that view)
+or with the given width, and the same rows as in view 1. Views 1 and 2 see every feature: for
+three views (and for views 1-2 of a rig) a kind is absent in all views or present in all. In the
+time-B views of a rig, rows of NaN are accepted (features not seen) and an absent key is a view
+that sees none of that kind.
+*/
+void readFeatures(const Text& text, const std::string& prefix, int width, int numViews, cv::Mat out[4])
 {
-    for (int v = 0; v < 3; ++v)
+    for (int v = 0; v < numViews; ++v)
     {
         const std::string key = prefix + std::to_string(v + 1);
-        out[v] = readMatrix(text, key);
+        const bool mayMiss = numViews == 4 && v >= 2;
+        out[v] = readMatrix(text, key, mayMiss);
         if (out[v].empty())
             out[v] = cv::Mat(0, width, CV_64F);
         else if (out[v].cols != width)
             throw keyError(key, cv::format("expected %d columns, got %dx%d", width, out[v].rows, out[v].cols));
     }
-    for (int v = 1; v < 3; ++v)
-        if (out[v].rows != out[0].rows)
+    for (int v = 1; v < numViews; ++v)
+    {
+        const bool mayMiss = numViews == 4 && v >= 2;
+        if (out[v].rows != out[0].rows && !(mayMiss && out[v].rows == 0))
             throw keyError(prefix + std::to_string(v + 1),
                            cv::format("has %d rows but %s1 has %d", out[v].rows, prefix.c_str(), out[0].rows));
+    }
+}
+
+bool hasMatrix(const Text& text, const std::string& key)
+{
+    const Node* node = text.find(key);
+    return node && !isNull(*node);
 }
 
 Problem readFromText(const Text& text)
 {
     Problem p;
-    p.K = readShared(text, "K", true);
+    p.stereo = hasMatrix(text, "points4") || hasMatrix(text, "lines4");
+    const int numViews = p.numViews();
+    p.K = readShared(text, "K", true, numViews);
     for (size_t v = 0; v < p.K.size(); ++v)
         requireShape(p.K[v], p.K.size() == 1 ? "K" : "K" + std::to_string(v + 1), 3, 3);
-    p.dist = readShared(text, "dist", false);
+    p.dist = readShared(text, "dist", false, numViews);
     p.R12 = readMatrix(text, "R12");
     if (p.R12.empty() || !(p.R12.total() == 9 || p.R12.total() == 3))
         throw keyError("R12", p.R12.empty() ? "missing" : "expected 3x3 rotation or 3x1 Rodrigues vector");
     p.t12 = readMatrix(text, "t12");
     if (p.t12.total() != 3)
         throw keyError("t12", p.t12.empty() ? "missing" : "expected 3x1");
-    readFeatures(text, "points", 2, p.points);
-    readFeatures(text, "lines", 4, p.lines);
+    readFeatures(text, "points", 2, numViews, p.points);
+    readFeatures(text, "lines", 4, numViews, p.lines);
     return p;
 }
 
@@ -529,10 +562,12 @@ Problem readProblemFromString(const std::string& text)
 std::string problemKeyNamedBy(const std::string& solverMessage)
 {
     static const char* const names[][2] = {
-        { "cameraMatrix[0]", "K1" }, { "cameraMatrix[1]", "K2" }, { "cameraMatrix[2]", "K3" }, { "cameraMatrix", "K" },
-        { "distCoeffs[0]", "dist1" }, { "distCoeffs[1]", "dist2" }, { "distCoeffs[2]", "dist3" }, { "distCoeffs", "dist" },
-        { "points1", "points1" }, { "points2", "points2" }, { "points3", "points3" },
-        { "lines1", "lines1" }, { "lines2", "lines2" }, { "lines3", "lines3" },
+        { "cameraMatrix[0]", "K1" }, { "cameraMatrix[1]", "K2" }, { "cameraMatrix[2]", "K3" },
+        { "cameraMatrix[3]", "K4" }, { "cameraMatrix", "K" },
+        { "distCoeffs[0]", "dist1" }, { "distCoeffs[1]", "dist2" }, { "distCoeffs[2]", "dist3" },
+        { "distCoeffs[3]", "dist4" }, { "distCoeffs", "dist" },
+        { "points1", "points1" }, { "points2", "points2" }, { "points3", "points3" }, { "points4", "points4" },
+        { "lines1", "lines1" }, { "lines2", "lines2" }, { "lines3", "lines3" }, { "lines4", "lines4" },
         { "R12", "R12" }, { "t12", "t12" },
     };
     // The subject comes first ("points3 has 2 points but points1 has 3"); at one position the

@@ -15,22 +15,29 @@
 
 namespace tripose_samples {
 
-//! The inputs of estimatePoseLinePoint as read from a problem file.
+//! The inputs of estimatePoseLinePoint (three views) or estimatePoseLinePointStereo (a stereo rig,
+//! four views) as read from a problem file.
 struct Problem
 {
-    std::vector<cv::Mat> K;     //!< One 3x3 matrix (key K) or three (K1, K2, K3).
-    std::vector<cv::Mat> dist;  //!< Empty, one (dist) or three (dist1..dist3).
-    cv::Mat R12, t12;
-    cv::Mat points[3];          //!< Nx2 (0x2 when absent).
-    cv::Mat lines[3];           //!< Mx4 (0x4 when absent).
+    bool stereo = false;        //!< points4 or lines4 given: views 1-2 and 3-4 are a rig at two times.
+    std::vector<cv::Mat> K;     //!< One 3x3 matrix (key K) or one per view (K1..K3, rig: K1..K4).
+    std::vector<cv::Mat> dist;  //!< Empty, one (dist) or one per view (dist1..dist3, rig: dist1..dist4).
+    cv::Mat R12, t12;           //!< Pose of view 2; for a rig, the rig (right camera w.r.t. left).
+    cv::Mat points[4];          //!< Nx2 (0x2 when absent); [3] only for a rig.
+    cv::Mat lines[4];           //!< Mx4 (0x4 when absent); [3] only for a rig.
+    int numViews() const { return stereo ? 4 : 3; }
 };
 
 /** Reads a problem from FileStorage text (YAML, with or without OpenCV's "%YAML:1.0" first line, or
 JSON; told apart by the text itself, not the file name). Keys: K or K1..K3; optional dist or
 dist1..dist3; R12 (3x3 or 3x1 Rodrigues), t12; points1..points3 (Nx2) and lines1..lines3 (Mx4), each
-kind absent or empty in all views when not used; other keys are ignored. Matrices are FileStorage's
-(rows, cols, dt, data). Throws std::runtime_error on text that is not YAML or JSON ("cannot parse",
-with the line), and naming the key on any malformed or inconsistent entry.
+kind absent or empty in all views when not used; other keys are ignored. With points4 and/or lines4
+the problem is a stereo rig (see estimatePoseLinePointStereo): K1..K4 and dist1..dist4 per view,
+and in points3, points4, lines3 and lines4 a row of NaN (.nan) marks a feature that view does not
+see (an absent key: the view sees none of that kind); every row count equals points1's or lines1's.
+Matrices are FileStorage's (rows, cols, dt, data). Throws std::runtime_error on text that is not
+YAML or JSON ("cannot parse", with the line), and naming the key on any malformed or inconsistent
+entry.
 */
 Problem readProblem(const std::string& path);
 

@@ -3,7 +3,9 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // libFuzzer target over the public API: the fuzz input is decoded into a problem and handed to
-// estimatePoseLinePoint, estimatePoseLinePointRansac (few iterations) and refinePoseLinePoint.
+// estimatePoseLinePoint, estimatePoseLinePointRansac (few iterations) and refinePoseLinePoint, then,
+// as a stereo rig (views 1-2 at time A, view 3's observations seen by views 3 and 4 at time B with
+// every third feature missing in one of them: rows of NaN), to their stereo counterparts.
 // Rejecting the input with a cv::Exception is fine; anything else escaping, a crash, a sanitizer
 // report, or a returned pose that is not finite or whose rotation is not a rotation is a bug.
 //
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
@@ -171,10 +174,84 @@ void run(const Problem& p)
     }
 }
 
+//! The problem as a stereo rig: view 4 sees what view 3 sees, but feature i is missing (NaN) in
+//! view 4 when i % 3 == 1 and in view 3 when i % 3 == 2; the intrinsics of view 4 are view 2's.
+void runStereo(const Problem& p)
+{
+    cv::Mat points[4], lines[4];
+    for (int v = 0; v < 3; ++v)
+    {
+        points[v] = p.points[v];
+        lines[v] = p.lines[v];
+    }
+    points[3] = p.points[2].clone();
+    lines[3] = p.lines[2].clone();
+    points[2] = p.points[2].clone();
+    lines[2] = p.lines[2].clone();
+    for (cv::Mat* pair : { points + 2, lines + 2 })
+        for (int i = 0; i < pair[0].rows; ++i)
+            if (i % 3 != 0)
+                pair[i % 3 == 1 ? 1 : 0].row(i).setTo(std::numeric_limits<double>::quiet_NaN());
+    std::vector<cv::Mat> K = p.K, dist = p.dist;
+    if (K.size() == 3)
+        K.push_back(K[1]);
+    if (dist.size() == 3)
+        dist.push_back(dist[1]);
+
+    cv::Mat R, t;
+    std::vector<cv::Mat> Rs, ts;
+    try
+    {
+        const int n = cv::tripose::estimatePoseLinePointStereo(points[0], points[1], points[2], points[3], lines[0],
+                                                               lines[1], lines[2], lines[3], K, dist, p.R12, p.t12,
+                                                               R, t, cv::tripose::POSE_LINEAR, Rs, ts);
+        if (n < 0 || (int)Rs.size() != n || (int)ts.size() != n || (n == 0) != R.empty())
+            fail("estimatePoseLinePointStereo: inconsistent outputs");
+        for (int i = 0; i < n; ++i)
+            requireValidPose(Rs[i], ts[i], "estimatePoseLinePointStereo: a candidate is not a finite rotation and translation");
+    }
+    catch (const cv::Exception&)
+    {
+    }
+
+    try
+    {
+        cv::Mat Rr, tr;
+        const int inliers = cv::tripose::estimatePoseLinePointStereoRansac(
+            points[0], points[1], points[2], points[3], lines[0], lines[1], lines[2], lines[3], K, dist, p.R12, p.t12,
+            Rr, tr, p.ransac);
+        if (inliers > 0)
+            requireValidPose(Rr, tr, "estimatePoseLinePointStereoRansac: the pose is not a finite rotation and translation");
+        else if (!Rr.empty())
+            fail("estimatePoseLinePointStereoRansac: a pose without inliers");
+    }
+    catch (const cv::Exception&)
+    {
+    }
+
+    cv::Mat R0 = p.initialPoseGiven ? p.R0.clone() : R.clone(), t0 = p.initialPoseGiven ? p.t0.clone() : t.clone();
+    if (R0.empty())
+        return;
+    try
+    {
+        const double rms = cv::tripose::refinePoseLinePointStereo(points[0], points[1], points[2], points[3],
+                                                                  lines[0], lines[1], lines[2], lines[3], K, dist,
+                                                                  p.R12, p.t12, R0, t0, p.refine);
+        if (std::isnan(rms) || rms < 0)
+            fail("refinePoseLinePointStereo: RMS is NaN or negative");
+        requireValidPose(R0, t0, "refinePoseLinePointStereo: the pose is not a finite rotation and translation");
+    }
+    catch (const cv::Exception&)
+    {
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    run(decode(data, size));
+    const Problem problem = decode(data, size);
+    run(problem);
+    runStereo(problem);
     return 0;
 }

@@ -24,7 +24,8 @@ namespace {
 
 void checkShapes(const tripose_samples::Problem& p)
 {
-    if (!(p.K.size() == 1 || p.K.size() == 3) || !(p.dist.empty() || p.dist.size() == 1 || p.dist.size() == 3))
+    const size_t views = (size_t)p.numViews();
+    if (!(p.K.size() == 1 || p.K.size() == views) || !(p.dist.empty() || p.dist.size() == 1 || p.dist.size() == views))
         fail("readProblemFromString: wrong number of K or dist");
     for (const cv::Mat& K : p.K)
         if (K.rows != 3 || K.cols != 3 || K.type() != CV_64F)
@@ -33,10 +34,18 @@ void checkShapes(const tripose_samples::Problem& p)
         fail("readProblemFromString: R12 has neither 9 nor 3 elements");
     if (p.t12.total() != 3)
         fail("readProblemFromString: t12 does not have 3 elements");
-    for (int v = 0; v < 3; ++v)
-        if (p.points[v].cols != 2 || p.lines[v].cols != 4 || p.points[v].rows != p.points[0].rows ||
-            p.lines[v].rows != p.lines[0].rows)
+    for (int v = 0; v < (int)views; ++v)
+    {
+        // A time-B view of a rig may be empty (it sees none of that kind); every other view has the
+        // rows of view 1. Only those time-B views may hold NaN (features they do not see).
+        const bool mayMiss = p.stereo && v >= 2;
+        const bool pointRows = p.points[v].rows == p.points[0].rows || (mayMiss && p.points[v].rows == 0);
+        const bool lineRows = p.lines[v].rows == p.lines[0].rows || (mayMiss && p.lines[v].rows == 0);
+        if (p.points[v].cols != 2 || p.lines[v].cols != 4 || !pointRows || !lineRows)
             fail("readProblemFromString: features of inconsistent shape");
+        if (!mayMiss && !(cv::checkRange(p.points[v]) && cv::checkRange(p.lines[v])))
+            fail("readProblemFromString: NaN or Inf outside the time-B views of a rig");
+    }
 }
 
 } // namespace

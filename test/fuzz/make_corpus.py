@@ -22,6 +22,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 KEYS = ["K1", "K2", "K3", "R12", "t12", "points1", "points2", "points3", "lines1", "lines2", "lines3"]
+STEREO_KEYS = ["K1", "K2", "K3", "K4", "R12", "t12", "points1", "points2", "points3", "points4",
+               "lines1", "lines2", "lines3", "lines4"]
 
 
 def generated_scene(tool, points, lines, seed, noise, outliers):
@@ -34,6 +36,18 @@ def generated_scene(tool, points, lines, seed, noise, outliers):
         problem = {k: fs.getNode(k).mat() for k in KEYS if not fs.getNode(k).empty()}
         fs.release()
     return {k: v for k, v in problem.items() if v is not None and v.size > 0}
+
+
+def generated_stereo_scene(tool, points, lines, seed, missing):
+    """A stereo-rig problem (tripose_make_scene --stereo): rows of NaN where a time-B view does not see."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "rig.yml"
+        subprocess.run([str(tool), "--stereo", "--points", str(points), "--lines", str(lines), "--missing",
+                        str(missing), "--seed", str(seed), "--output", str(out)], check=True, capture_output=True)
+        fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
+        problem = {k: fs.getNode(k).mat() for k in STEREO_KEYS if not fs.getNode(k).empty()}
+        fs.release()
+    return problem
 
 
 def read_rows(path):
@@ -70,11 +84,11 @@ def vgg_problem(count):
     return problem
 
 
-def problem_text(problem, suffix):
+def problem_text(problem, suffix, keys=KEYS):
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / f"problem{suffix}"
         fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
-        for key in KEYS:
+        for key in keys:
             if key in problem:
                 fs.write(key, np.asarray(problem[key], dtype=np.float64))
         fs.release()
@@ -131,6 +145,9 @@ def main():
         (reader / f"{name}.yml.seed").write_bytes(problem_text(problem, ".yml"))
     for name in ("scene_3p3l", "vgg_merton1_6p6l"):
         (reader / f"{name}.json.seed").write_bytes(problem_text(scenes[name], ".json"))
+    rig = generated_stereo_scene(tool, 6, 4, seed=5, missing=0.5)
+    (reader / "stereo_6p4l_missing.yml.seed").write_bytes(problem_text(rig, ".yml", STEREO_KEYS))
+    (reader / "stereo_6p4l_missing.json.seed").write_bytes(problem_text(rig, ".json", STEREO_KEYS))
 
     # Options: 96 = local optimisation + refinement; 2 float32; 4 three K; 16 Rodrigues R12;
     # 1 homogeneous lines; 8 distortion; 128 initial pose for the refinement.

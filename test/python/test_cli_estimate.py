@@ -12,38 +12,12 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import build_tool, rotation_error, make_scene
+from tripose_tools import (all_of, build_tool, edited, estimate, expect_rejected, files_in, make_scene,
+                           read_matrices, rotation_error, setter, write_problem)
 
 ESTIMATE = build_tool("tripose_estimate")
 
 PROBLEM_KEYS = ["K1", "K2", "K3", "R12", "t12", "points1", "points2", "points3", "lines1", "lines2", "lines3"]
-
-
-def read_matrices(path, keys):
-    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ)
-    out = {k: fs.getNode(k).mat() for k in keys if not fs.getNode(k).empty()}
-    fs.release()
-    return out
-
-
-def write_problem(path, values):
-    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
-    for key, value in values.items():
-        if isinstance(value, str):
-            fs.write(key, value)
-        else:
-            fs.write(key, np.asarray(value, dtype=np.float64))
-    fs.release()
-
-
-def run(*args):
-    return subprocess.run([str(ESTIMATE), *map(str, args)], capture_output=True, text=True, timeout=60)
-
-
-def estimate(tmp_path, problem, *extra, name="result.yml"):
-    out = tmp_path / name
-    proc = run("--input", problem, "--output", out, *extra)
-    return proc, out
 
 
 def test_linear_recovers_exact_pose(tmp_path):
@@ -104,27 +78,6 @@ def break_problem(tmp_path, scene, change):
     problem = tmp_path / "broken.yml"
     write_problem(problem, values)
     return problem
-
-
-def setter(key, value):
-    """A change that puts `value(values)` (or `value`) under `key`."""
-    return lambda v: v.__setitem__(key, value(v) if callable(value) else value)
-
-
-def edited(key, row, col, x):
-    """A change that sets one element of the matrix under `key`."""
-    def change(v):
-        m = v[key].copy()
-        m[row, col] = x
-        v[key] = m
-    return change
-
-
-def all_of(*changes):
-    def change(v):
-        for c in changes:
-            c(v)
-    return change
 
 
 def shared_K(v):
@@ -212,21 +165,6 @@ CATALOGUE = {
     "one_of_three_distortion_vectors_bad": (all_of(*[setter(f"dist{i}", np.full((1, 5), 0.01)) for i in (1, 3)],
                                                    setter("dist2", np.full((1, 6), 0.01))), "key 'dist2'"),
 }
-
-
-def files_in(folder):
-    return sorted(p.name for p in folder.iterdir())
-
-
-def expect_rejected(tmp_path, problem, names, *extra):
-    """Non-zero exit, stderr names the key or argument, and nothing written: neither the result
-    nor a partial file."""
-    before = files_in(tmp_path)
-    proc, out = estimate(tmp_path, problem, *extra)
-    assert proc.returncode != 0, proc.stdout
-    assert names in proc.stderr, proc.stderr
-    assert not out.exists()
-    assert files_in(tmp_path) == before
 
 
 @pytest.fixture(scope="module")

@@ -1,4 +1,5 @@
-"""Shared helpers of the Python tests: locating the built tools and making scenes with them."""
+"""Shared helpers of the Python tests: locating the built tools, making scenes with them, reading and
+writing problem files, running tripose_estimate and checking its rejections."""
 import os
 import subprocess
 from pathlib import Path
@@ -30,7 +31,81 @@ def make_scene(tmp_path, points, lines, seed, noise=0.0, outliers=0.0, motion="l
     return out
 
 
+def make_stereo_scene(tmp_path, points, lines, seed, noise=0.0, outliers=0.0, missing=0.0):
+    """A synthetic stereo-rig problem file with ground truth, written by tripose_make_scene --stereo."""
+    out = Path(tmp_path) / f"stereo_{points}p{lines}l_{seed}_{missing}.yml"
+    subprocess.run([str(build_tool("tripose_make_scene")), "--stereo", "--points", str(points), "--lines", str(lines),
+                    "--noise", str(noise), "--outliers", str(outliers), "--missing", str(missing),
+                    "--seed", str(seed), "--output", str(out)], check=True, capture_output=True, timeout=60)
+    return out
+
+
 def rotation_error(A, B):
     """Angle (rad) of A B^T, accurate near zero."""
     d = np.linalg.norm(np.asarray(A) - np.asarray(B)) / (2.0 * np.sqrt(2.0))
     return 2.0 * np.arcsin(min(1.0, d))
+
+
+def read_matrices(path, keys):
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ)
+    out = {k: fs.getNode(k).mat() for k in keys if not fs.getNode(k).empty()}
+    fs.release()
+    return out
+
+
+def write_problem(path, values):
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
+    for key, value in values.items():
+        if isinstance(value, str):
+            fs.write(key, value)
+        else:
+            fs.write(key, np.asarray(value, dtype=np.float64))
+    fs.release()
+
+
+def run(*args):
+    """tripose_estimate with these arguments."""
+    return subprocess.run([str(build_tool("tripose_estimate")), *map(str, args)], capture_output=True, text=True,
+                          timeout=60)
+
+
+def estimate(tmp_path, problem, *extra, name="result.yml"):
+    out = tmp_path / name
+    proc = run("--input", problem, "--output", out, *extra)
+    return proc, out
+
+
+def setter(key, value):
+    """A change that puts `value(values)` (or `value`) under `key`."""
+    return lambda v: v.__setitem__(key, value(v) if callable(value) else value)
+
+
+def edited(key, row, col, x):
+    """A change that sets one element of the matrix under `key`."""
+    def change(v):
+        m = v[key].copy()
+        m[row, col] = x
+        v[key] = m
+    return change
+
+
+def all_of(*changes):
+    def change(v):
+        for c in changes:
+            c(v)
+    return change
+
+
+def files_in(folder):
+    return sorted(p.name for p in folder.iterdir())
+
+
+def expect_rejected(tmp_path, problem, names, *extra):
+    """Non-zero exit, stderr names the key or argument, and nothing written: neither the result
+    nor a partial file."""
+    before = files_in(tmp_path)
+    proc, out = estimate(tmp_path, problem, *extra)
+    assert proc.returncode != 0, proc.stdout
+    assert names in proc.stderr, proc.stderr
+    assert not out.exists()
+    assert files_in(tmp_path) == before

@@ -11,5 +11,6 @@
 
 // The support library's scene generator (not part of the module).
 #include "tripose_support/synthetic_scene.hpp"
+#include "tripose_support/synthetic_stereo_scene.hpp"
 
 #endif // OPENCV_TRIPOSE_PERF_PRECOMP_HPP

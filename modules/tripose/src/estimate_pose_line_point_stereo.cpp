@@ -16,6 +16,8 @@ namespace {
 // Two features seen in both time-B views (two lines, or a point and a line) are the fewest that
 // determine the motion up to a few candidates.
 const int kMinStereoFeatures = 2;
+// The robust estimator draws samples of three features (RigPoseSolver::sampleSize()).
+const int kMinStereoRansacFeatures = 3;
 
 } // namespace
 
@@ -43,7 +45,7 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
     CV_INSTRUMENT_REGION();
     const detail::ViewSet views =
         detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
-                                   distCoeffs, R12, t12, kMinStereoFeatures);
+                                   distCoeffs, R12, t12, kMinStereoRansacFeatures);
     const detail::RigPoseSolver solver(views);
     return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
 }

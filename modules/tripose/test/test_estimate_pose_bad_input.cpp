@@ -256,6 +256,171 @@ TEST_F(Tripose_BadInput, refine_initial_R_nan) { call.R0.at<double>(2, 2) = kNaN
 TEST_F(Tripose_BadInput, refine_initial_t_wrong_size) { call.t0 = Mat::ones(2, 1, CV_64F); expectRejectedBy(REFINE, call, "t"); }
 TEST_F(Tripose_BadInput, refine_initial_t_inf) { call.t0.at<double>(0) = kInf; expectRejectedBy(REFINE, call, "t"); }
 
+// The stereo-rig functions: the same arguments plus points4 and lines4, where a row of NaN marks a
+// feature that view 3 or 4 does not see.
+enum StereoApi { STEREO_LINEAR, STEREO_RANSAC, STEREO_REFINE };
+
+const char* stereoApiName(StereoApi api)
+{
+    return api == STEREO_LINEAR ? "estimatePoseLinePointStereo"
+                                : api == STEREO_RANSAC ? "estimatePoseLinePointStereoRansac" : "refinePoseLinePointStereo";
+}
+
+struct StereoCall
+{
+    Mat p[4], l[4], K, R12, t12, R0, t0;
+    std::vector<Mat> Ks, dists;
+    int method = tripose::POSE_LINEAR;
+
+    explicit StereoCall(const tripose::support::SyntheticStereoScene& s)
+        : K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()), R0(s.R.clone()), t0(s.t.clone())
+    {
+        const Mat* points[4] = { &s.points1, &s.points2, &s.points3, &s.points4 };
+        const Mat* lines[4] = { &s.lines1, &s.lines2, &s.lines3, &s.lines4 };
+        for (int v = 0; v < 4; ++v)
+        {
+            p[v] = points[v]->clone();
+            l[v] = lines[v]->clone();
+        }
+    }
+
+    int run(StereoApi api) const
+    {
+        const _InputArray cameraMatrix = Ks.empty() ? _InputArray(K) : _InputArray(Ks);
+        const _InputArray distCoeffs = dists.empty() ? _InputArray(noArray()) : _InputArray(dists);
+        Mat R, t;
+        switch (api)
+        {
+        case STEREO_LINEAR:
+            return tripose::estimatePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3], cameraMatrix,
+                                                        distCoeffs, R12, t12, R, t, method);
+        case STEREO_RANSAC:
+            return tripose::estimatePoseLinePointStereoRansac(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
+                                                              cameraMatrix, distCoeffs, R12, t12, R, t);
+        case STEREO_REFINE:
+        default:
+            R = R0.clone();
+            t = t0.clone();
+            return std::isfinite(tripose::refinePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
+                                                                    cameraMatrix, distCoeffs, R12, t12, R, t))
+                       ? 1 : 0;
+        }
+    }
+};
+
+void expectStereoRejectedBy(StereoApi api, const StereoCall& call, const std::string& argument)
+{
+    try
+    {
+        call.run(api);
+        ADD_FAILURE() << stereoApiName(api) << ": no exception; expected one naming '" << argument << "'";
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_TRUE(namesArgument(e.err, argument))
+            << stereoApiName(api) << ": message does not name '" << argument << "': " << e.err;
+    }
+}
+
+void expectStereoRejected(const StereoCall& call, const std::string& argument)
+{
+    expectStereoRejectedBy(STEREO_LINEAR, call, argument);
+    expectStereoRejectedBy(STEREO_RANSAC, call, argument);
+    expectStereoRejectedBy(STEREO_REFINE, call, argument);
+}
+
+tripose::support::SyntheticStereoScene stereoCatalogueScene()
+{
+    // Four points and three lines, point 3 and line 2 seen by view 3 only, point 1 by view 4 only.
+    tripose::support::SyntheticStereoParams params;
+    params.numPoints = 4;
+    params.numLines = 3;
+    params.pointVisibility = { tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_VIEW4,
+                               tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_VIEW3 };
+    params.lineVisibility = { tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_BOTH,
+                              tripose::support::SEEN_IN_VIEW3 };
+    params.seed = 1;
+    return tripose::support::generateSyntheticStereoScene(params);
+}
+
+class Tripose_StereoBadInput : public testing::Test
+{
+protected:
+    Tripose_StereoBadInput() : call(stereoCatalogueScene()) {}
+    StereoCall call;
+};
+
+TEST_F(Tripose_StereoBadInput, valid_call_succeeds)
+{
+    EXPECT_GT(call.run(STEREO_LINEAR), 0);
+    EXPECT_GT(call.run(STEREO_RANSAC), 0);
+    EXPECT_EQ(call.run(STEREO_REFINE), 1);
+}
+
+// Counts and shapes of the time-B observations.
+TEST_F(Tripose_StereoBadInput, points4_with_another_row_count) { call.p[3] = call.p[3].rowRange(0, 3).clone(); expectStereoRejected(call, "points4"); }
+TEST_F(Tripose_StereoBadInput, lines4_with_another_row_count) { call.l[3] = Mat::zeros(5, 4, CV_64F); expectStereoRejected(call, "lines4"); }
+TEST_F(Tripose_StereoBadInput, points3_with_wrong_width) { call.p[2] = Mat::zeros(4, 3, CV_64F); expectStereoRejected(call, "points3"); }
+TEST_F(Tripose_StereoBadInput, points4_with_integer_type) { call.p[3] = Mat::ones(4, 2, CV_32S); expectStereoRejected(call, "points4"); }
+TEST_F(Tripose_StereoBadInput, lines4_homogeneous_beside_segments) { call.l[3] = Mat::ones(3, 3, CV_64F); expectStereoRejected(call, "lines4"); }
+TEST_F(Tripose_StereoBadInput, points2_empty) { call.p[1] = Mat(); expectStereoRejected(call, "points2"); }
+
+// Values: NaN marks a whole row, only in views 3 and 4, and never in both for one feature.
+TEST_F(Tripose_StereoBadInput, partly_nan_point_row) { call.p[3].at<double>(0, 1) = kNaN; expectStereoRejected(call, "points4"); }
+TEST_F(Tripose_StereoBadInput, partly_nan_line_row) { call.l[2].at<double>(1, 2) = kNaN; expectStereoRejected(call, "lines3"); }
+TEST_F(Tripose_StereoBadInput, inf_in_points3) { call.p[2].at<double>(0, 0) = kInf; expectStereoRejected(call, "points3"); }
+TEST_F(Tripose_StereoBadInput, inf_row_in_lines4) { call.l[3].row(0).setTo(kInf); expectStereoRejected(call, "lines4"); }
+TEST_F(Tripose_StereoBadInput, nan_row_in_a_time_A_view) { call.p[0].row(0).setTo(kNaN); expectStereoRejected(call, "points1"); }
+TEST_F(Tripose_StereoBadInput, nan_row_in_lines2) { call.l[1].row(1).setTo(kNaN); expectStereoRejected(call, "lines2"); }
+// Point 1 is seen by view 4 only, line 2 by view 3 only.
+TEST_F(Tripose_StereoBadInput, point_missing_in_both_views_3_and_4) { call.p[3].row(1).setTo(kNaN); expectStereoRejected(call, "points4"); }
+TEST_F(Tripose_StereoBadInput, line_missing_in_both_views_3_and_4) { call.l[2].row(2).setTo(kNaN); expectStereoRejected(call, "lines3"); }
+TEST_F(Tripose_StereoBadInput, no_time_B_points_at_all) { call.p[2] = call.p[3] = Mat(); expectStereoRejected(call, "points3"); }
+TEST_F(Tripose_StereoBadInput, zero_length_segment_in_view_4)
+{
+    call.l[3].at<double>(0, 2) = call.l[3].at<double>(0, 0);
+    call.l[3].at<double>(0, 3) = call.l[3].at<double>(0, 1);
+    expectStereoRejected(call, "lines4");
+}
+TEST_F(Tripose_StereoBadInput, fewer_than_two_features)
+{
+    for (Mat& m : call.p)
+        m = m.rowRange(0, 1).clone();
+    for (Mat& m : call.l)
+        m = Mat();
+    expectStereoRejectedBy(STEREO_LINEAR, call, "at least 2 features");
+    expectStereoRejectedBy(STEREO_RANSAC, call, "at least 3 features");
+    expectStereoRejectedBy(STEREO_REFINE, call, "at least 2 features");
+}
+TEST_F(Tripose_StereoBadInput, fewer_than_three_features_for_ransac)
+{
+    for (Mat& m : call.p)
+        m = m.rowRange(0, 1).clone();
+    for (Mat& m : call.l)
+        m = m.rowRange(0, 1).clone();
+    EXPECT_GE(call.run(STEREO_LINEAR), 0); // two features: enough for the linear solver
+    expectStereoRejectedBy(STEREO_RANSAC, call, "at least 3 features");
+}
+
+// The rig, the intrinsics and the flags.
+TEST_F(Tripose_StereoBadInput, R12_not_a_rotation) { call.R12 = call.R12 * 1.1; expectStereoRejected(call, "R12"); }
+TEST_F(Tripose_StereoBadInput, t12_zero) { call.t12 = Mat::zeros(3, 1, CV_64F); expectStereoRejected(call, "t12"); }
+TEST_F(Tripose_StereoBadInput, three_camera_matrices) { call.Ks = { call.K, call.K, call.K }; expectStereoRejected(call, "cameraMatrix"); }
+TEST_F(Tripose_StereoBadInput, one_of_four_camera_matrices_bad)
+{
+    Mat bad = call.K.clone();
+    bad.at<double>(1, 1) = -5;
+    call.Ks = { call.K, call.K, call.K, bad };
+    expectStereoRejected(call, "cameraMatrix[3]");
+}
+TEST_F(Tripose_StereoBadInput, three_distortion_vectors)
+{
+    const Mat d = Mat::zeros(1, 5, CV_64F);
+    call.dists = { d, d, d };
+    expectStereoRejected(call, "distCoeffs");
+}
+TEST_F(Tripose_StereoBadInput, unknown_method) { call.method = 3; expectStereoRejectedBy(STEREO_LINEAR, call, "method"); }
+
 // The matcher itself must be able to fail: a message naming only a longer word does not count.
 TEST(Tripose_BadInputMessage, argument_is_named_as_a_whole_word)
 {

@@ -2,18 +2,19 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The stereo-rig linear solver (src/linear/rig_solver.hpp) on scenes built here: the support
-// library's generator makes three-view scenes, and the rig needs a fourth view and per-feature
-// visibility at time B. The scenes follow codegen/prototypes/stereo_rig.py, the solver's
-// specification: baseline 0.1-0.5 m roughly along x, cameras within 3 degrees of parallel, features
-// 5-30 m in front of view 1 and inside all four 640x480 images (f = 800 px), the rig moving 0.3-3 m
-// and turning up to 20 degrees between times A and B.
+// The stereo-rig linear solver (src/linear/rig_solver.hpp) on the support library's rig scenes
+// (generateSyntheticStereoScene: baseline 0.1-0.5 m roughly along x, cameras within 3 degrees of
+// parallel, features 5-30 m in front of view 1 and inside all four 640x480 images at f = 800 px,
+// the rig moving 0.3-3 m and turning up to 20 degrees between times A and B), the geometry of
+// codegen/prototypes/stereo_rig.py, the solver's specification. Each feature's time-B visibility
+// is given per mix; the ViewSet is read from the scene by the module's input function.
 
 #include "test_precomp.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include "../src/input/problem_input.hpp"
 #include "../src/linear/rig_pose_solver.hpp"
 #include "../src/linear/rig_solver.hpp"
 #include "../src/linear/rig_system.hpp"
@@ -32,8 +33,6 @@ using cv::tripose::detail::rigPoseCandidates;
 using Eigen::Matrix3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
-
-const double kFocal = 800, kWidth = 640, kHeight = 480;
 
 //! A success: rotation within 1e-6 rad and translation within 1e-6 of its length.
 const double kTolerance = 1e-6;
@@ -63,24 +62,6 @@ std::ostream& operator<<(std::ostream& os, const RigMix& m)
     return os << m.name;
 }
 
-struct SceneRanges
-{
-    double baselineMin = 0.1, baselineMax = 0.5;
-    double depthMin = 5, depthMax = 30;
-    double motionMin = 0.3, motionMax = 3;
-    double turnDegrees = 20;
-};
-
-Vector3d gaussianVector(RNG& rng)
-{
-    return Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
-}
-
-Matrix3d randomTurn(RNG& rng, double maxRadians)
-{
-    return Eigen::AngleAxisd(rng.uniform(0.0, maxRadians), gaussianVector(rng).normalized()).toRotationMatrix();
-}
-
 struct RigScene
 {
     ViewSet set;
@@ -88,105 +69,65 @@ struct RigScene
     std::vector<CameraPose> cameras; //!< Poses of views 1-4.
 };
 
-bool inAllViews(const RigScene& scene, const Vector3d& X)
+Matrix3d toEigen33(const Mat& m)
 {
-    const Intrinsics& K = scene.set.views[0].camera;
-    for (const CameraPose& camera : scene.cameras)
-    {
-        const Vector3d Xc = camera.toCamera(X);
-        if (Xc.z() < 1.0)
-            return false;
-        const Vector2d x = K.project(Xc);
-        if (!(x.x() >= 0 && x.x() < kWidth && x.y() >= 0 && x.y() < kHeight))
-            return false;
-    }
-    return true;
+    Matrix3d E;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            E(r, c) = m.at<double>(r, c);
+    return E;
 }
 
-Vector3d visiblePoint(RNG& rng, const RigScene& scene, const SceneRanges& ranges)
+Vector3d toEigen3(const Mat& m)
 {
-    for (int attempt = 0; attempt < 100000; ++attempt)
-    {
-        const double u = rng.uniform(0.0, kWidth), v = rng.uniform(0.0, kHeight);
-        const Vector3d X = rng.uniform(ranges.depthMin, ranges.depthMax) *
-                           Vector3d((u - kWidth / 2) / kFocal, (v - kHeight / 2) / kFocal, 1.0);
-        if (inAllViews(scene, X))
-            return X;
-    }
-    CV_Error(Error::StsError, "the four views share no field of view");
-}
-
-Vector2d observePixel(RNG& rng, const Intrinsics& K, const CameraPose& camera, const Vector3d& X, double noise)
-{
-    return K.project(camera.toCamera(X)) + noise * Vector2d(rng.gaussian(1.0), rng.gaussian(1.0));
+    return Vector3d(m.at<double>(0), m.at<double>(1), m.at<double>(2));
 }
 
 /** A random rig scene with the features of @p features, observed with Gaussian noise of @p noise px
-on points and segment end points. The ViewSet has the layout of rig_system.hpp.
+on points and segment end points. The ViewSet has the layout of rig_system.hpp. Features seen at
+time A only, which the public functions reject, are made as seen by both time-B views and then
+marked unseen there.
 */
-RigScene makeRigScene(const std::vector<FeatureSpec>& features, uint64 seed, double noise = 0,
-                      const SceneRanges& ranges = SceneRanges())
+RigScene makeRigScene(const std::vector<FeatureSpec>& features, int seed, double noise = 0)
 {
-    RNG rng(seed);
-    RigScene scene;
-    const double baseline = rng.uniform(ranges.baselineMin, ranges.baselineMax);
-    const Vector3d centre2 = baseline * Vector3d(1.0, 0.05 * rng.gaussian(1.0), 0.05 * rng.gaussian(1.0));
-    CameraPose rig;
-    rig.R = randomTurn(rng, 3 * CV_PI / 180);
-    rig.t = -rig.R * centre2;
-    const Vector3d centre3 = rng.uniform(ranges.motionMin, ranges.motionMax) * gaussianVector(rng).normalized();
-    scene.truth.R = randomTurn(rng, ranges.turnDegrees * CV_PI / 180);
-    scene.truth.t = -scene.truth.R * centre3;
-    scene.cameras = { CameraPose(), rig, scene.truth, cv::tripose::detail::composePose(rig, scene.truth) };
-
-    Matrix3d K;
-    K << kFocal, 0, kWidth / 2, 0, kFocal, kHeight / 2, 0, 0, 1;
-    ViewSet& set = scene.set;
-    set.views.resize(4);
-    for (View& view : set.views)
-        view.camera = Intrinsics(K);
-    set.views[ViewSet::kView2].pose = rig;
-    set.views[ViewSet::kView3].estimated = true;
-    set.views[kRigView4].estimated = true;
-    set.views[kRigView4].pose = rig;
-
+    using namespace cv::tripose::support;
+    SyntheticStereoParams params;
+    params.seed = seed;
+    params.noiseSigma = noise;
+    std::vector<int> timeAOnlyPoints, timeAOnlyLines;
     for (const FeatureSpec& f : features)
     {
-        const bool seen[4] = { true, true, f.in3, f.in4 };
-        if (f.kind == POINT)
-        {
-            const Vector3d X = visiblePoint(rng, scene, ranges);
-            for (int v = 0; v < 4; ++v)
-            {
-                View& view = set.views[v];
-                view.points.push_back(observePixel(rng, view.camera, scene.cameras[v], X, noise));
-                view.calibratedPoints.push_back(view.camera.calibrate(view.points.back()));
-                view.pointSeen.push_back(seen[v] ? 1 : 0);
-            }
-            ++set.numPoints;
-        }
-        else
-        {
-            Vector3d A, B;
-            do
-            {
-                A = visiblePoint(rng, scene, ranges);
-                B = visiblePoint(rng, scene, ranges);
-            } while ((A - B).norm() <= 0.5);
-            for (int v = 0; v < 4; ++v)
-            {
-                View& view = set.views[v];
-                view.lineEnds.push_back(observePixel(rng, view.camera, scene.cameras[v], A, noise));
-                view.lineEnds.push_back(observePixel(rng, view.camera, scene.cameras[v], B, noise));
-                const int line = set.numLines;
-                const Vector3d l = view.calibratedLineEnd(line, 0).homogeneous().cross(
-                    view.calibratedLineEnd(line, 1).homogeneous());
-                view.calibratedLines.push_back(l / l.head<2>().norm());
-                view.lineSeen.push_back(seen[v] ? 1 : 0);
-            }
-            ++set.numLines;
-        }
+        std::vector<int>& visibility = f.kind == POINT ? params.pointVisibility : params.lineVisibility;
+        if (!f.in3 && !f.in4)
+            (f.kind == POINT ? timeAOnlyPoints : timeAOnlyLines).push_back((int)visibility.size());
+        visibility.push_back(f.in3 && !f.in4 ? SEEN_IN_VIEW3 : !f.in3 && f.in4 ? SEEN_IN_VIEW4 : SEEN_IN_BOTH);
     }
+    params.numPoints = (int)params.pointVisibility.size();
+    params.numLines = (int)params.lineVisibility.size();
+    const SyntheticStereoScene s = generateSyntheticStereoScene(params);
+
+    RigScene scene;
+    scene.set = cv::tripose::detail::readStereoRigInput(s.points1, s.points2, s.points3, s.points4, s.lines1,
+                                                        s.lines2, s.lines3, s.lines4, s.cameraMatrices, noArray(),
+                                                        s.R12, s.t12, 0);
+    for (const int v : { (int)ViewSet::kView3, kRigView4 })
+    {
+        View& view = scene.set.views[v];
+        if (!timeAOnlyPoints.empty() && view.pointSeen.empty())
+            view.pointSeen.assign(params.numPoints, 1);
+        for (int i : timeAOnlyPoints)
+            view.pointSeen[i] = 0;
+        if (!timeAOnlyLines.empty() && view.lineSeen.empty())
+            view.lineSeen.assign(params.numLines, 1);
+        for (int i : timeAOnlyLines)
+            view.lineSeen[i] = 0;
+    }
+    CameraPose rig;
+    rig.R = toEigen33(s.R12);
+    rig.t = toEigen3(s.t12);
+    scene.truth.R = toEigen33(s.R);
+    scene.truth.t = toEigen3(s.t);
+    scene.cameras = { CameraPose(), rig, scene.truth, cv::tripose::detail::composePose(rig, scene.truth) };
     return scene;
 }
 
@@ -290,7 +231,7 @@ TEST_P(Tripose_RigSolverExact, true_pose_among_candidates_in_999_of_1000_scenes)
     std::vector<int> failures;
     for (int s = 0; s < scenes; ++s)
     {
-        const RigScene scene = makeRigScene(mix.features, 0x5eed0000u + (uint64)s);
+        const RigScene scene = makeRigScene(mix.features, 0x5eed0000 + s);
         std::vector<CameraPose> poses;
         const int n = rigPoseCandidates(scene.set, poses);
         ASSERT_EQ(n, (int)poses.size());
@@ -427,7 +368,7 @@ TEST(Tripose_RigSolver, noise_one_pixel_ten_points_ten_lines)
     std::vector<double> rotation, translation;
     for (int s = 0; s < scenes; ++s)
     {
-        const RigScene scene = makeRigScene(repeat(kPointBoth, 10) + repeat(kLineBoth, 10), 0xa0000u + (uint64)s, 1.0);
+        const RigScene scene = makeRigScene(repeat(kPointBoth, 10) + repeat(kLineBoth, 10), 0xa0000 + s, 1.0);
         std::vector<CameraPose> poses;
         ASSERT_EQ(rigPoseCandidates(scene.set, poses), 1);
         ASSERT_TRUE(poses[0].allFinite());

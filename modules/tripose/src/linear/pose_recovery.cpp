@@ -33,8 +33,15 @@ Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M)
             if (!std::isfinite(change))
                 break;
             // Quadratic convergence: after a change of 1e-9 the iterate is orthogonal to rounding.
+            // A numerically singular M (rank 2, its determinant positive by rounding alone) can
+            // converge to a reflection: the inverses carry the sign of rounding errors. The SVD
+            // below then gives the nearest rotation.
             if (change <= 1e-9)
-                return X;
+            {
+                if (X.determinant() > 0)
+                    return X;
+                break;
+            }
         }
     }
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);

@@ -8,6 +8,8 @@
 
 #include "tripose_support/synthetic_scene.hpp"
 
+#include "scene_sampling.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,15 +26,9 @@ SyntheticSceneParams::SyntheticSceneParams()
 
 namespace {
 
+using namespace sampling;
+
 const double kDefaultFocalPx = 800.0;
-//! Noise-free features stay this far inside the image border, so small noise rarely pushes them out.
-const double kImageMarginPx = 2.0;
-//! Shorter projected segments carry almost no direction.
-const double kMinSegmentLengthPx = 20.0;
-//! A replaced (outlier) observation is at least this far from being consistent with the truth.
-const double kOutlierMinOffsetPx = 20.0;
-//! Rejection-sampling budget per feature before the parameters are declared infeasible.
-const int kMaxAttemptsPerFeature = 20000;
 
 //! Independent random streams, so that e.g. changing numLines leaves the points unchanged and
 //! changing noiseSigma leaves the geometry unchanged.
@@ -45,33 +41,6 @@ enum Stream
     STREAM_NOISE,
     STREAM_PLANE
 };
-
-//! Seed of one stream: a splitmix64 mix of the user seed and the stream id (cv::RNG needs a
-//! non-zero state; the mix of distinct inputs gives well separated states).
-RNG makeStream(int seed, Stream stream)
-{
-    uint64 z = (uint64)(unsigned)seed * 0x9E3779B97F4A7C15ULL + (uint64)stream * 0xD1B54A32D192ED03ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return RNG(z ? z : 0x853C49E6748FEA9BULL);
-}
-
-//! A camera in the frame of view 1: x ~ K (R X + t).
-struct ViewGeometry
-{
-    Matx33d K;
-    Matx33d R;
-    Vec3d t;
-};
-
-Vec3d randomUnitVector(RNG& rng)
-{
-    const double z = rng.uniform(-1.0, 1.0);
-    const double phi = rng.uniform(0.0, 2.0 * CV_PI);
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    return Vec3d(r * std::cos(phi), r * std::sin(phi), z);
-}
 
 //! World-to-camera rotation of a camera at @p centre looking at the origin, rolled by @p roll.
 Matx33d lookAtOrigin(const Vec3d& centre, double roll)
@@ -86,35 +55,6 @@ Matx33d lookAtOrigin(const Vec3d& centre, double roll)
     return Matx33d(x[0], x[1], x[2],
                    y[0], y[1], y[2],
                    z[0], z[1], z[2]);
-}
-
-//! Projects X (frame of view 1); false when X is not in front of the camera.
-inline bool project(const ViewGeometry& view, const Vec3d& X, Point2d& x)
-{
-    const Vec3d p = view.K * (view.R * X + view.t);
-    if (!(p[2] > 0))
-        return false;
-    x = Point2d(p[0] / p[2], p[1] / p[2]);
-    return true;
-}
-
-inline bool insideImage(const Point2d& x, const Size& size)
-{
-    return x.x >= kImageMarginPx && x.x <= size.width - 1 - kImageMarginPx &&
-           x.y >= kImageMarginPx && x.y <= size.height - 1 - kImageMarginPx;
-}
-
-Point2d randomImagePoint(RNG& rng, const Size& size)
-{
-    return Point2d(rng.uniform(kImageMarginPx, size.width - 1 - kImageMarginPx),
-                   rng.uniform(kImageMarginPx, size.height - 1 - kImageMarginPx));
-}
-
-//! Distance of @p x to the infinite line through @p a and @p b.
-double distanceToLine(const Point2d& x, const Point2d& a, const Point2d& b)
-{
-    const Point2d d = b - a;
-    return std::abs(d.cross(x - a)) / std::sqrt(d.dot(d));
 }
 
 [[noreturn]] void badParam(const char* name, const String& expected)
@@ -148,22 +88,8 @@ void intrinsicsFromParams(const SyntheticSceneParams& params, Matx33d K[3])
     if (given.size() != 1 && given.size() != 3)
         badParam("cameraMatrices", format("expected 0 (default f = 800 px), 1 or 3 matrices, got %d", (int)given.size()));
     for (size_t i = 0; i < given.size(); ++i)
-    {
-        const String name = format("cameraMatrices[%d]", (int)i);
-        const Mat& m = given[i];
-        if (m.dims > 2 || m.rows != 3 || m.cols != 3 || m.channels() != 1)
-            badParam(name.c_str(), format("expected a 3x3 1-channel matrix, got %dx%d with %d channels",
-                                          m.rows, m.cols, m.channels()));
-        Mat m64;
-        m.convertTo(m64, CV_64F);
-        Matx33d k(m64.ptr<double>());
-        if (!checkRange(m64))
-            badParam(name.c_str(), "expected finite entries");
-        if (k(2, 0) != 0 || k(2, 1) != 0 || k(2, 2) == 0)
-            badParam(name.c_str(), format("expected a last row (0, 0, k) with k != 0, got (%g, %g, %g)",
-                                          k(2, 0), k(2, 1), k(2, 2)));
-        K[i] = k * (1.0 / k(2, 2));
-    }
+        K[i] = checkedCameraMatrix(given[i], "generateSyntheticScene", "SyntheticSceneParams",
+                                   format("cameraMatrices[%d]", (int)i));
     if (given.size() == 1)
         K[1] = K[2] = K[0];
 }

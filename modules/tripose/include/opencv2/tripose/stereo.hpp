@@ -85,7 +85,7 @@ adaptive stopping; then maximum-likelihood refinement over the four views on the
 is an inlier when its RMS reprojection error over every view that sees it, re-triangulated from
 all of them with the returned pose, is below RansacParams::threshold.
 
-Arguments as in estimatePoseLinePointStereo().
+Arguments as in estimatePoseLinePointStereo(); at least three features (the sample size) are required.
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.

@@ -139,6 +139,134 @@ def make_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, K=None, ima
     return scene
 
 
+def axis_angle(rng, max_radians):
+    """A rotation by an angle uniform in [0, max_radians] about a uniformly random axis."""
+    axis = rng.normal(size=3)
+    axis *= rng.uniform(0, max_radians) / np.linalg.norm(axis)
+    return cv.Rodrigues(axis.reshape(3, 1))[0]
+
+
+SEEN_IN_VIEW3, SEEN_IN_VIEW4, SEEN_IN_BOTH = 1, 2, 3
+
+
+def make_rig_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, missing=0.0, visibility=None):
+    """A stereo rig moving between two times, in numpy (the geometry of the C++ tests' rig scenes):
+    view 1 = left camera at time A [I|0], view 2 = right camera at time A [R12|t12] (baseline
+    0.1-0.5 m along x, turned up to 3 degrees), view 3 = left camera at time B [R|t] (moved 0.3-3 m,
+    turned up to 20 degrees), view 4 = [R12 R | R12 t + t12]; f = 800 px, 640x480. Points: a pixel of
+    view 1 at a depth of 5-30 m, at least 2 px inside all four images and 1 m in front; segments:
+    two such points 0.5 m apart, at least 20 px long in every view. A fraction `outliers` of the
+    points and of the lines get the time-B observations of another random point or segment (at
+    least 20 px from the true ones); `visibility` (one of SEEN_IN_* per feature, points then lines)
+    or a fraction `missing` of features seen by one time-B view only: NaN rows in the other."""
+    rng = np.random.default_rng(seed)
+    width, height, margin = 640, 480, 2.0
+    K = np.array([[800.0, 0, (width - 1) / 2.0], [0, 800.0, (height - 1) / 2.0], [0, 0, 1]])
+    centre2 = rng.uniform(0.1, 0.5) * np.array([1.0, 0.05 * rng.normal(), 0.05 * rng.normal()])
+    R12 = axis_angle(rng, np.radians(3.0))
+    t12 = (-R12 @ centre2).reshape(3, 1)
+    direction = rng.normal(size=3)
+    centre3 = rng.uniform(0.3, 3.0) * direction / np.linalg.norm(direction)
+    R = axis_angle(rng, np.radians(20.0))
+    t = (-R @ centre3).reshape(3, 1)
+    poses = [(np.eye(3), np.zeros((3, 1))), (R12, t12), (R, t), (R12 @ R, R12 @ t + t12)]
+
+    def visible(X):
+        ok = np.ones(len(X), dtype=bool)
+        for Rv, tv in poses:
+            x, depth = project(K, Rv, tv, X)
+            ok &= (depth > 1.0) & np.all((x >= margin) & (x <= np.array([width, height]) - 1 - margin), axis=1)
+        return ok
+
+    def draw_points(n):
+        pixels = rng.uniform([margin, margin], [width - 1 - margin, height - 1 - margin], size=(n, 2))
+        rays = np.hstack([(pixels - K[:2, 2]) / 800.0, np.ones((n, 1))])
+        return rays * rng.uniform(5.0, 30.0, size=(n, 1))
+
+    def long_segments(S):
+        ok = visible(S[:, :3]) & visible(S[:, 3:]) & (np.linalg.norm(S[:, 3:] - S[:, :3], axis=1) >= 0.5)
+        for Rv, tv in poses:
+            ok &= np.linalg.norm(project(K, Rv, tv, S[:, 3:])[0] - project(K, Rv, tv, S[:, :3])[0], axis=1) >= 20.0
+        return ok
+
+    def sample(n, draw, keep):
+        rows = [draw(1)[:0]]
+        for _ in range(1000):
+            if sum(len(r) for r in rows) >= n:
+                break
+            candidates = draw(max(64, 4 * n))
+            rows.append(candidates[keep(candidates)])
+        rows = np.concatenate(rows)
+        assert len(rows) >= n, 'the rig scene generator found too few visible features'
+        return rows[:n]
+
+    draw_segments = lambda n: np.hstack([draw_points(n), draw_points(n)])
+    scene = Scene()
+    scene.points3d = sample(num_points, draw_points, visible)
+    scene.lines3d = sample(num_lines, draw_segments, long_segments)
+    points = [project(K, Rv, tv, scene.points3d)[0] for Rv, tv in poses]
+    lines = [np.hstack([project(K, Rv, tv, scene.lines3d[:, :3])[0], project(K, Rv, tv, scene.lines3d[:, 3:])[0]])
+             for Rv, tv in poses]
+
+    scene.pointInliers = np.ones((num_points, 1), dtype=np.uint8)
+    for i in rng.permutation(num_points)[:int(round(outliers * num_points))]:
+        scene.pointInliers[i] = 0
+        far = lambda X: visible(X) & np.all([np.linalg.norm(project(K, Rv, tv, X)[0] - points[v][i], axis=1) >= 20.0
+                                             for v, (Rv, tv) in enumerate(poses) if v >= 2], axis=0)
+        X = sample(1, draw_points, far)
+        for v in (2, 3):
+            points[v][i] = project(K, poses[v][0], poses[v][1], X)[0][0]
+    scene.lineInliers = np.ones((num_lines, 1), dtype=np.uint8)
+    for i in rng.permutation(num_lines)[:int(round(outliers * num_lines))]:
+        scene.lineInliers[i] = 0
+
+        def far(S, i=i):
+            ok = long_segments(S)
+            for v in (2, 3):
+                a, b = lines[v][i, :2], lines[v][i, 2:]
+                normal = np.array([a[1] - b[1], b[0] - a[0]]) / np.linalg.norm(b - a)
+                ends = [project(K, poses[v][0], poses[v][1], S[:, k:k + 3])[0] for k in (0, 3)]
+                ok &= np.maximum(abs((ends[0] - a) @ normal), abs((ends[1] - a) @ normal)) >= 20.0
+            return ok
+        S = sample(1, draw_segments, far)
+        for v in (2, 3):
+            lines[v][i] = np.hstack([project(K, poses[v][0], poses[v][1], S[:, k:k + 3])[0][0] for k in (0, 3)])
+
+    if noise > 0:
+        points = [x + rng.normal(0, noise, x.shape) for x in points]
+        lines = [x + rng.normal(0, noise, x.shape) for x in lines]
+    if visibility is None:
+        visibility = np.full(num_points + num_lines, SEEN_IN_BOTH)
+        for kind, count in ((0, num_points), (num_points, num_lines)):
+            chosen = kind + rng.permutation(count)[:int(round(missing * count))]
+            visibility[chosen] = rng.choice([SEEN_IN_VIEW3, SEEN_IN_VIEW4], size=len(chosen))
+    visibility = np.asarray(visibility)
+    scene.pointVisibility, scene.lineVisibility = visibility[:num_points], visibility[num_points:]
+    for v, bit in ((2, SEEN_IN_VIEW3), (3, SEEN_IN_VIEW4)):
+        points[v][(scene.pointVisibility & bit) == 0] = np.nan
+        lines[v][(scene.lineVisibility & bit) == 0] = np.nan
+    scene.points1, scene.points2, scene.points3, scene.points4 = points
+    scene.lines1, scene.lines2, scene.lines3, scene.lines4 = lines
+    scene.cameraMatrices = [K.copy() for _ in range(4)]
+    scene.R12, scene.t12, scene.R, scene.t = R12, t12, R, t
+    scene.poses = poses
+    return scene
+
+
+def rig_args(scene, **changes):
+    """The arguments of the stereo functions for a rig scene, with `changes` applied."""
+    args = dict(points1=scene.points1, points2=scene.points2, points3=scene.points3, points4=scene.points4,
+                lines1=scene.lines1, lines2=scene.lines2, lines3=scene.lines3, lines4=scene.lines4,
+                cameraMatrix=scene.cameraMatrices, distCoeffs=None, R12=scene.R12, t12=scene.t12)
+    args.update(changes)
+    return args
+
+
+def names_argument(message, argument):
+    """True when `message` names `argument` as a whole word ('R' is not named by 'R12')."""
+    return re.search(r'(?<![\w.])' + re.escape(argument) + r'(?!\w)', message) is not None
+
+
 def solve(scene, cameraMatrix=None, distCoeffs=None):
     """estimatePoseLinePoint on a scene; returns (count, R, t, Rs, ts, errors)."""
     K = scene.cameraMatrices if cameraMatrix is None else cameraMatrix
@@ -495,6 +623,165 @@ class tripose_test(NewOpenCVTests):
             linear_rot.append(rotation_error(R0, scene.R))
             refined_rot.append(rotation_error(R1, scene.R))
         self.assertLess(np.mean(refined_rot), np.mean(linear_rot))
+
+    def test_stereo_scene_helper(self):
+        # The rig scenes are exact: every observation a view makes is the projection of the
+        # structure, view 4 follows view 3 through the rig, and the views that do not see a
+        # feature hold a row of NaN.
+        scene = make_rig_scene(12, 8, seed=3, missing=0.5)
+        K = scene.cameraMatrices[0]
+        R4, t4 = scene.poses[3]
+        np.testing.assert_allclose(R4, scene.R12 @ scene.R, atol=1e-15)
+        observed = [(scene.points1, scene.lines1), (scene.points2, scene.lines2), (scene.points3, scene.lines3),
+                    (scene.points4, scene.lines4)]
+        for v, ((Rv, tv), (points, lines)) in enumerate(zip(scene.poses, observed)):
+            seen_p = np.ones(12, bool) if v < 2 else (scene.pointVisibility & (1 << (v - 2))) != 0
+            seen_l = np.ones(8, bool) if v < 2 else (scene.lineVisibility & (1 << (v - 2))) != 0
+            self.assertTrue(np.all(np.isnan(points[~seen_p])) and np.all(np.isnan(lines[~seen_l])))
+            np.testing.assert_allclose(project(K, Rv, tv, scene.points3d)[0][seen_p], points[seen_p], atol=1e-9)
+            np.testing.assert_allclose(project(K, Rv, tv, scene.lines3d[:, :3])[0][seen_l], lines[seen_l, :2], atol=1e-9)
+            np.testing.assert_allclose(project(K, Rv, tv, scene.lines3d[:, 3:])[0][seen_l], lines[seen_l, 2:], atol=1e-9)
+        self.assertEqual(np.count_nonzero(scene.pointVisibility == SEEN_IN_BOTH), 6)
+
+    def test_stereo_noise_free(self):
+        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
+            self.skipTest('the stereo functions are not in this build of the module')
+        # Three features seen by both time-B views, or more, some seen by one of them only: the best
+        # candidate is the exact motion, with the metric scale of the rig.
+        for num_points, num_lines, missing in [(3, 0, 0.0), (0, 3, 0.0), (2, 1, 0.0), (1, 2, 0.0), (10, 10, 0.0),
+                                                (10, 10, 0.5), (8, 8, 1.0)]:
+            for seed in range(3):
+                scene = make_rig_scene(num_points, num_lines, seed, missing=missing)
+                what = '%d points, %d lines, %g missing, seed %d' % (num_points, num_lines, missing, seed)
+                count, R, t, Rs, ts, errors = cv.tripose.estimatePoseLinePointStereo(**rig_args(scene))
+                self.assertGreaterEqual(count, 1, what)
+                self.assertEqual(len(Rs), count, what)
+                self.assertEqual(np.asarray(errors).size, count, what)
+                self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
+
+    def test_stereo_missing_views_and_refined_candidates(self):
+        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
+            self.skipTest('the stereo functions are not in this build of the module')
+        # Every feature seen by view 4 only: points3 and lines3 may be None (the view sees nothing);
+        # float32 arrays keep their NaN rows; POSE_LINEAR_REFINE is exact on exact data.
+        only4 = make_rig_scene(3, 3, seed=4, visibility=[SEEN_IN_VIEW4] * 6)
+        count, R, t = cv.tripose.estimatePoseLinePointStereo(**rig_args(only4, points3=None, lines3=None))[:3]
+        self.assertGreaterEqual(count, 1)
+        self.check_pose(R, t, only4, EXACT_ROTATION_RAD, EXACT_TRANSLATION, 'view 4 only')
+        scene = make_rig_scene(6, 6, seed=5, missing=0.5)
+        f32 = dict((k, np.asarray(getattr(scene, k), dtype=np.float32)) for k in
+                   ('points1', 'points2', 'points3', 'points4', 'lines1', 'lines2', 'lines3', 'lines4'))
+        count, R, t = cv.tripose.estimatePoseLinePointStereo(**rig_args(scene, **f32))[:3]
+        self.assertGreaterEqual(count, 1)
+        self.check_pose(R, t, scene, 1e-4, 1e-3, 'float32 with NaN rows')
+        count, R, t, Rs, ts, errors = cv.tripose.estimatePoseLinePointStereo(
+            **rig_args(scene, method=cv.tripose.POSE_LINEAR_REFINE))
+        self.assertGreaterEqual(count, 1)
+        self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, 'POSE_LINEAR_REFINE')
+        self.assertLess(float(np.asarray(errors).ravel()[0]), 1e-6)
+
+    def test_stereo_robust(self):
+        if not hasattr(cv.tripose, 'estimatePoseLinePointStereoRansac'):
+            self.skipTest('the stereo functions are not in this build of the module')
+        # 30 % wrong matches at time B, 0.5 px noise, a fifth of the features seen by one time-B view:
+        # the pose and the masks. (These seeds were checked through tripose_estimate, which calls
+        # the same function; the C++ tests measure how often a scene defeats the estimator.)
+        for seed in range(3):
+            scene = make_rig_scene(60, 30, seed, noise=0.5, outliers=0.3, missing=0.2)
+            params = cv.tripose.RansacParams()
+            params.seed = seed
+            count, R, t, inl_points, inl_lines = cv.tripose.estimatePoseLinePointStereoRansac(
+                **rig_args(scene, params=params))
+            what = 'seed %d' % seed
+            self.check_pose(R, t, scene, np.radians(0.5), 0.05, what)
+            self.assertEqual(count, np.count_nonzero(inl_points) + np.count_nonzero(inl_lines), what)
+            self.assertEqual(np.asarray(inl_points).size, 60, what)
+            self.assertEqual(np.asarray(inl_lines).size, 30, what)
+            truth = np.concatenate([scene.pointInliers.ravel(), scene.lineInliers.ravel()]) != 0
+            found = np.concatenate([np.asarray(inl_points).ravel(), np.asarray(inl_lines).ravel()]) != 0
+            self.assertGreaterEqual(np.count_nonzero(found & truth), 0.95 * np.count_nonzero(truth), what)
+            self.assertLessEqual(np.count_nonzero(found & ~truth), 0.05 * np.count_nonzero(~truth) + 1, what)
+
+    def test_stereo_refinement(self):
+        if not hasattr(cv.tripose, 'refinePoseLinePointStereo'):
+            self.skipTest('the stereo functions are not in this build of the module')
+        # Noise-free, from 1 degree and 5 % off: the exact motion and structure.
+        rng = np.random.default_rng(8)
+        for seed in range(4):
+            scene = make_rig_scene(8, 8, seed, missing=0.3)
+            R0 = axis_angle(rng, np.radians(1.0)) @ scene.R
+            step = rng.normal(size=(3, 1))
+            t0 = scene.t + 0.05 * np.linalg.norm(scene.t) * step / np.linalg.norm(step)
+            params = cv.tripose.RefineParams()
+            params.maxIterations = 100
+            rms, R, t, points3d, lines3d = cv.tripose.refinePoseLinePointStereo(
+                **rig_args(scene, R=R0, t=t0, params=params))
+            what = 'seed %d' % seed
+            self.assertLess(rms, 1e-6, what)
+            self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
+            self.assertEqual(points3d.shape, (8, 3), what)
+            self.assertEqual(lines3d.shape, (8, 6), what)
+
+    def test_stereo_bad_input(self):
+        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
+            self.skipTest('the stereo functions are not in this build of the module')
+        # The stereo kinds of the C++ bad-input catalogue: each breaks one thing in a valid rig
+        # problem (point 1 seen by view 4 only, point 3 and line 2 by view 3 only) and must raise
+        # cv.error naming the argument, through the three stereo functions.
+        scene = make_rig_scene(4, 3, seed=1, visibility=[SEEN_IN_BOTH, SEEN_IN_VIEW4, SEEN_IN_BOTH, SEEN_IN_VIEW3,
+                                                         SEEN_IN_BOTH, SEEN_IN_BOTH, SEEN_IN_VIEW3])
+        K = scene.cameraMatrices[0]
+
+        def call(api, changes):
+            args = rig_args(scene, cameraMatrix=[K])
+            args.update(changes)
+            if api == 'linear':
+                return cv.tripose.estimatePoseLinePointStereo(**args)[0]
+            if api == 'ransac':
+                return cv.tripose.estimatePoseLinePointStereoRansac(**args)[0]
+            return cv.tripose.refinePoseLinePointStereo(**dict(args, R=np.array(scene.R), t=np.array(scene.t)))[0]
+
+        def expect_error(kind, argument, changes, apis=('linear', 'ransac', 'refine')):
+            for api in apis:
+                with self.assertRaises(cv.error, msg='%s through %s' % (kind, api)) as ctx:
+                    call(api, changes)
+                message = getattr(ctx.exception, 'err', str(ctx.exception))
+                self.assertTrue(names_argument(message, argument),
+                                '%s through %s: message does not name %s: %s' % (kind, api, argument, message))
+
+        self.assertGreater(call('linear', {}), 0)
+        self.assertGreater(call('ransac', {}), 0)
+        self.assertTrue(np.isfinite(call('refine', {})))
+
+        def with_row(a, row, value, col=slice(None)):
+            a = np.array(a, dtype=np.float64)
+            a[row, col] = value
+            return a
+
+        nan, inf = np.nan, np.inf
+        bad_K = np.array(K)
+        bad_K[1, 1] = -5.0
+        expect_error('points4_with_another_row_count', 'points4', dict(points4=scene.points4[:3]))
+        expect_error('lines4_with_another_row_count', 'lines4', dict(lines4=np.zeros((5, 4))))
+        expect_error('points3_with_wrong_width', 'points3', dict(points3=np.zeros((4, 3))))
+        expect_error('lines4_homogeneous_beside_segments', 'lines4', dict(lines4=np.ones((3, 3))))
+        expect_error('partly_nan_point_row', 'points4', dict(points4=with_row(scene.points4, 0, nan, 1)))
+        expect_error('partly_nan_line_row', 'lines3', dict(lines3=with_row(scene.lines3, 1, nan, 2)))
+        expect_error('inf_in_points3', 'points3', dict(points3=with_row(scene.points3, 0, inf, 0)))
+        expect_error('nan_row_in_a_time_A_view', 'points1', dict(points1=with_row(scene.points1, 0, nan)))
+        expect_error('point_missing_in_both_views_3_and_4', 'points4', dict(points4=with_row(scene.points4, 1, nan)))
+        expect_error('line_missing_in_both_views_3_and_4', 'lines3', dict(lines3=with_row(scene.lines3, 2, nan)))
+        expect_error('no_time_B_points_at_all', 'points3', dict(points3=None, points4=None))
+        expect_error('three_camera_matrices', 'cameraMatrix', dict(cameraMatrix=[K, K, K]))
+        expect_error('one_of_four_camera_matrices_bad', 'cameraMatrix[3]', dict(cameraMatrix=[K, K, K, bad_K]))
+        expect_error('three_distortion_vectors', 'distCoeffs', dict(distCoeffs=[np.zeros(5)] * 3))
+        expect_error('R12_not_a_rotation', 'R12', dict(R12=1.1 * scene.R12))
+        expect_error('t12_zero', 't12', dict(t12=np.zeros((3, 1))))
+        one = dict(points1=scene.points1[:1], points2=scene.points2[:1], points3=scene.points3[:1],
+                   points4=scene.points4[:1], lines1=None, lines2=None, lines3=None, lines4=None)
+        expect_error('fewer_than_two_features', 'at least 2 features', one, ('linear', 'refine'))
+        expect_error('fewer_than_two_features', 'at least 3 features', one, ('ransac',))
+        expect_error('unknown_method', 'method', dict(method=3), ('linear',))
 
 if __name__ == '__main__':
     NewOpenCVTests.bootstrap()
