@@ -93,8 +93,10 @@ def main():
         row = f"| {100 * ratio:.0f} % |"
         for n in names:
             t = np.nanmedian(results[ratio][n][0]) / 1000
-            row += f" {t:.2f} (x{pl_t / t:.2f}) | {np.median(results[ratio][n][1]):.3f} |"
-        row += f" {pl_t:.2f} | {pl_r:.3f} |"
+            fails = int(np.sum(~np.isfinite(results[ratio][n][1])))
+            row += f" {t:.2f} (x{pl_t / t:.2f}) | {np.median(results[ratio][n][1]):.3f}{f' ({fails} failed)' if fails else ''} |"
+        fails = int(np.sum(~np.isfinite(results[ratio]["poselib-adaptive"][1])))
+        row += f" {pl_t:.2f} | {pl_r:.3f}{f' ({fails} failed)' if fails else ''} |"
         print(row, flush=True)
 
 
