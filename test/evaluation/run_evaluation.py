@@ -64,7 +64,7 @@ SIZES = {
     # Full: the paper's 500 trials per point (100 runs per VGG configuration).
     "full": dict(trials=500, noise=[0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0], fig4_n=[4, 5, 6, 7, 8],
                  fig5_n=[4, 5, 6, 8, 10, 15, 20, 25, 30, 35, 40, 45], fig5_trials=500, fig5_repeats=5,
-                 vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5], outlier_trials=500),
+                 vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6], outlier_trials=500),
 }
 
 

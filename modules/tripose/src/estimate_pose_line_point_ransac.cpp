@@ -7,6 +7,8 @@
 #include "input/problem_input.hpp"
 #include "linear/linear_pose_solver.hpp"
 #include "pipeline/pose_pipelines.hpp"
+#include "robust/hybrid_pose_solver.hpp"
+#include "scoring/pose_scorer.hpp"
 
 namespace cv {
 namespace tripose {
@@ -24,8 +26,11 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
     CV_INSTRUMENT_REGION();
     const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                              cameraMatrix, distCoeffs, R12, t12);
-    const detail::LinearPoseSolver solver(views);
-    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
+    // The scorer's structure from views 1-2 is also what the minimal absolute-pose samples solve on.
+    const detail::PoseScorer scorer(views);
+    const detail::LinearPoseSolver linear(views);
+    const detail::HybridPoseSolver solver(views, scorer, linear);
+    return detail::estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers);
 }
 
 } // namespace tripose

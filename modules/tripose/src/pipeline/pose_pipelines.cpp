@@ -183,8 +183,15 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
 int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacParams& params, OutputArray R,
                    OutputArray t, OutputArray pointInliers, OutputArray lineInliers)
 {
-    validate(params);
     const PoseScorer scorer(views);
+    return estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers);
+}
+
+int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
+                   const RansacParams& params, OutputArray R, OutputArray t, OutputArray pointInliers,
+                   OutputArray lineInliers)
+{
+    validate(params);
     const MultiStartRefiner refiner(views, params.refineParams, &solver);
     RobustEstimate estimate;
     if (!estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))

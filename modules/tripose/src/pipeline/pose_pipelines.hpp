@@ -8,6 +8,7 @@
 #include "opencv2/tripose.hpp"
 #include "../geometry/view_set.hpp"
 #include "../robust/pose_solver.hpp"
+#include "../scoring/pose_scorer.hpp"
 
 namespace cv {
 namespace tripose {
@@ -25,6 +26,11 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
 //! estimatePoseLinePointRansac() and its stereo variant; @p params is validated here.
 int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacParams& params, OutputArray R,
                    OutputArray t, OutputArray pointInliers, OutputArray lineInliers);
+
+//! The same with the caller's scorer of @p views, for solvers that use its structure.
+int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
+                   const RansacParams& params, OutputArray R, OutputArray t, OutputArray pointInliers,
+                   OutputArray lineInliers);
 
 //! refinePoseLinePoint() and its stereo variant: reads the initial pose from @p R, @p t (named "R",
 //! "t" in errors), validates @p params, refines over every view and writes pose and structure.

@@ -26,6 +26,11 @@ public:
     virtual int sampleSize() const = 0;
     //! Fewest features estimateNonMinimal() accepts (it is over-determined from there).
     virtual int nonMinimalSize() const = 0;
+    /** Samples are drawn from the first samplePool() of the @p numFeatures features in the single
+    index range (points first, see FeatureSubset): a solver for points alone returns the number of
+    points. The stopping rule counts the inliers among these features.
+    */
+    virtual int samplePool(int numFeatures) const { return numFeatures; }
     /** Appends the candidate poses of a minimal sample to @p models; returns how many. @p exhaustive:
     every distinct sample is drawn once (few features), so nothing else will repair a poor
     hypothesis and a solver may spend more per sample.

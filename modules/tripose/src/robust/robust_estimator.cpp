@@ -41,7 +41,8 @@ public:
     bool run(RobustEstimate& estimate)
     {
         const int sampleSize = solver_.sampleSize();
-        SampleGenerator samples(numFeatures_, sampleSize, params_.maxIterations, (uint64)(int64)params_.seed);
+        pool_ = std::min(numFeatures_, solver_.samplePool(numFeatures_));
+        SampleGenerator samples(pool_, sampleSize, params_.maxIterations, (uint64)(int64)params_.seed);
         std::vector<int> indices(sampleSize);
         FeatureSubset sample;
         std::vector<CameraPose> candidates;
@@ -56,7 +57,7 @@ public:
                 continue;
             if (params_.localOptimization)
                 optimizeLocally();
-            maxIterations = std::min<long>(maxIterations, requiredIterations(best_.inliers, sampleSize));
+            maxIterations = std::min<long>(maxIterations, requiredIterations(inliersInPool(), sampleSize));
         }
         // With few features every sample was tried, and the structure of the known views alone may
         // put all their residuals over the threshold (a minimal set has no redundancy to test).
@@ -198,10 +199,23 @@ private:
         return count;
     }
 
+    //! Inlier features of the best model among those samples are drawn from.
+    int inliersInPool() const
+    {
+        if (pool_ == numFeatures_)
+            return best_.inliers;
+        int count = 0;
+        for (int i : bestInliers_.points)
+            count += i < pool_;
+        for (int i : bestInliers_.lines)
+            count += numPoints_ + i < pool_;
+        return count;
+    }
+
     //! Samples needed to draw one all-inlier sample with the requested confidence.
     long requiredIterations(int inliers, int sampleSize) const
     {
-        const double w = double(inliers) / numFeatures_;
+        const double w = double(inliers) / pool_;
         const double allInliers = std::pow(w, sampleSize);
         if (allInliers >= 1.0)
             return 1;
@@ -219,7 +233,7 @@ private:
     const PoseRefiner* refiner_;
     const RansacParams& params_;
     const double samplingThreshold_;
-    int numPoints_ = 0, numFeatures_ = 0;
+    int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
     std::vector<double> pointResiduals_, lineResiduals_;
     PoseScore best_ = worstScore();
     CameraPose bestPose_;

@@ -76,6 +76,15 @@ public:
 
     const ViewSet& views() const { return set_; }
 
+    /** The structure triangulated from the known views, which every score uses: point @p i and the
+    two end points of line @p i (on the first known view's rays), valid when the known views pin the
+    feature down in front of them. Minimal solvers reuse it rather than triangulate again.
+    */
+    const Eigen::Vector3d& knownPoint(int i) const { return points_[i]; }
+    bool hasKnownPoint(int i) const { return pointValid_[i] != 0; }
+    const Eigen::Vector3d& knownLineEnd(int i, int end) const { return lineEnds_[2 * i + end]; }
+    bool hasKnownLine(int i) const { return lineValid_[i] != 0; }
+
 private:
     struct PointTerm
     {

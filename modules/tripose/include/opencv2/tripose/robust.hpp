@@ -38,8 +38,15 @@ struct CV_EXPORTS_W_SIMPLE RansacParams
 
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 
-RANSAC over samples of four features (any mix of points and lines: the smallest set the linear
-solver of estimatePoseLinePoint() handles), with:
+RANSAC over minimal samples, with:
+- samples of three points, each solved as an absolute-pose (P3P) problem on the points triangulated
+  from views 1 and 2, when those are good: at least 8 points with structure, a quarter of the
+  features or more, and a median triangulation angle between views 1 and 2 of 2 degrees or more.
+  The stopping rule then counts point inliers; lines vote in every score and take part in the
+  local optimisation and the refinement;
+- otherwise (narrow baselines, few points) samples of four features (any mix of points and lines:
+  the smallest set the linear solver of estimatePoseLinePoint() handles), which need no
+  triangulated structure;
 - hypotheses scored by truncated least squares (MSAC) on their residuals in view 3, in pixels,
   against the structure triangulated from views 1 and 2: for a point the distance of its
   reprojection, for a line the RMS of the distances of its two observed end points to the
