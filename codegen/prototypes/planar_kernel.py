@@ -10,7 +10,8 @@ n^T X + d = 0, P3 + a [n^T d] maps the structure as P3 does for any a in R^3: th
 The script prints the measured kernel dimension per feature mix (singular values of the stacked
 rows, relative threshold 1e-9) and checks the closed form: a kernel vector w whose family part is
 removed has its rotation block equal to s R on the plane's directions (s = +-|.|), which gives R
-(up to the rotation by pi about n, which puts the structure behind view 3).
+(up to the rotation by pi about n, which puts the structure behind view 3); with 2P+2L two such
+vectors, combined first (planar_rotations).
 
     /work/main/.venv/bin/python codegen/prototypes/planar_kernel.py
 """
@@ -60,19 +61,29 @@ def kernel(A, tol=1e-9):
 
 
 def planar_rotations(K, plane):
-    """Rotations from a kernel K containing the family a [n^T d]: closed form for a
-    one-dimensional quotient (four features or more, except 2P+2L)."""
+    """Rotations from a kernel K containing the family a [n^T d]: a quotient of dimension 1 (four
+    features or more, except 2P+2L) gives M directly; of dimension 2 (2P+2L), M = b1 M1 + b2 M2 with
+    |M e1| = |M e2| and M e1 . M e2 = 0, two quadrics in [b1^2, b1 b2, b2^2] whose common root is
+    the cross product of their coefficient rows."""
     n = plane[:3] / np.linalg.norm(plane[:3])
     # Family basis: vec(e_i plane^T), i = 1..3 (column-major, v = [r1; r2; r3; t]).
     F = np.stack([np.kron(plane, e) for e in np.eye(3)], axis=1)
     Qf, _ = np.linalg.qr(F)
     W = K - Qf @ (Qf.T @ K)                    # quotient representatives
     u, s, _ = np.linalg.svd(W)
-    w = u[:, 0]
-    M = w[:9].reshape(3, 3, order="F")          # rotation block, columns r1 r2 r3
     e1 = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(n, e1)
+    if K.shape[1] == 4:
+        M = u[:, 0][:9].reshape(3, 3, order="F")   # rotation block, columns r1 r2 r3
+    else:
+        M1, M2 = (u[:, k][:9].reshape(3, 3, order="F") for k in (0, 1))
+        a1, b1, a2, b2 = M1 @ e1, M1 @ e2, M2 @ e1, M2 @ e2
+        q1 = [a1 @ a1 - b1 @ b1, 2 * (a1 @ a2 - b1 @ b2), a2 @ a2 - b2 @ b2]
+        q2 = [a1 @ b1, a1 @ b2 + a2 @ b1, a2 @ b2]
+        m = np.cross(q1, q2)
+        beta = m[:2] if abs(m[0]) >= abs(m[2]) else m[1:]
+        M = beta[0] * M1 + beta[1] * M2
     out = []
     for sign in (1, -1):
         a, b = sign * M @ e1, sign * M @ e2
@@ -96,7 +107,7 @@ def main():
                 A, R, t, plane = scene(rng, p, l, planar)
                 K, k = kernel(A)
                 dims[planar].add(k)
-                if planar and k == 4:
+                if planar:
                     errs = [np.linalg.norm(Rc - R) for Rc in planar_rotations(K, plane)]
                     worst = max(worst, min(errs))
         print(f"{p}P+{l}L".ljust(10), str(sorted(dims[False])).ljust(8), str(sorted(dims[True])).ljust(7),

@@ -10,6 +10,7 @@
 #include "kernel_solutions.hpp"
 #include "linear_solver.hpp"
 #include "linear_system.hpp"
+#include "planar_kernel_solutions.hpp"
 #include "pose_recovery.hpp"
 #include "smallest_eigenvectors.hpp"
 
@@ -145,7 +146,16 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
 
     std::vector<Vector12d> solutions;
     solutions.reserve(12);
-    if (N == 1)
+    CameraPose scaledPose12 = set.pose12();
+    scaledPose12.t /= translationScale;
+    Eigen::Vector4d plane;
+    if (structurePlane(set, scaledPose12, pointIndices, lineIndices, plane))
+    {
+        // Coplanar structure widens the kernel beyond N (to 4, or 5 for 2P+2L): the general
+        // combinations would work in a wrong space, the plane gives the pose in closed form.
+        planarKernelSolutions(A, plane, solutions);
+    }
+    else if (N == 1)
     {
         // Over-determined: the smallest eigenvectors of S (9x9: t eliminated, so only the rotation
         // is normalised) are accurate enough here (the rows are balanced and every candidate is

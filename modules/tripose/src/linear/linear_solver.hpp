@@ -16,7 +16,8 @@ namespace detail {
 
 /** Dimension N of the kernel the linear method works in for a number of features. Each point and
 each line constrains two of the 12 unknowns (a point's four trilinear rows have rank 2 on exact
-data), so N = 12 - 2 (points + lines) for four or five features and N = 1 from six on.
+data), so N = 12 - 2 (points + lines) for four or five features and N = 1 from six on. Structure
+in general position; coplanar structure has a wider kernel (planar_kernel_solutions.hpp).
 */
 int kernelDimensionFor(int numFeatures);
 
