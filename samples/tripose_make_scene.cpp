@@ -8,6 +8,7 @@
 //
 //   tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]
 //                      [--noise px] [--outliers ratio] [--seed k]
+//                      [--baseline12 m | --baseline12-fraction f] [--planar [--plane-tilt deg]]
 //
 // The file (OpenCV FileStorage, YAML or JSON by extension) holds the problem keys K1, K2, K3,
 // R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4), and the ground truth R_gt (3x3), t_gt
@@ -35,6 +36,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]\n"
     "                          [--noise px] [--outliers ratio] [--seed k]\n"
+    "                          [--baseline12 m | --baseline12-fraction f] [--planar [--plane-tilt deg]]\n"
     "  --output    problem file to write (.yml, .yaml or .json)\n"
     "  --points    number of point triplets (default 4)\n"
     "  --lines     number of line-segment triplets (default 4)\n"
@@ -43,6 +45,12 @@ const char* kUsage =
     "  --noise     standard deviation of the Gaussian pixel noise (default 0)\n"
     "  --outliers  fraction in [0, 1) of points and of lines with a wrong view-3 match (default 0)\n"
     "  --seed      integer seed; the same seed writes the same scene (default 0)\n"
+    "  --baseline12           distance (m) of view 2 from view 1 in a random direction, view 3\n"
+    "                         still placed by --motion (default: view 2 placed by --motion)\n"
+    "  --baseline12-fraction  the same as a fraction of the 20 m depth (0.01: a 1 % baseline)\n"
+    "  --planar               every point and segment on one plane through the cube centre\n"
+    "  --plane-tilt           angle (degrees, [0, 90)) between the plane's normal and the direction\n"
+    "                         to view 1 (default 30; needs --planar)\n"
     "The scene follows Qadir & Neubert, Sec. IV-A: 10 m cube, 640x480 cameras with f = 800 px.\n";
 
 struct Options
@@ -60,9 +68,12 @@ bool hasExtension(const std::string& path, const std::string& extension)
 Options parseArguments(int argc, char** argv)
 {
     Options o;
-    const std::vector<std::string> known = { "--output", "--points",   "--lines", "--motion",
-                                             "--noise",  "--outliers", "--seed" };
-    for (const auto& option : optionPairs(argc, argv, kUsage, known))
+    const std::vector<std::string> known = { "--output", "--points",     "--lines",
+                                             "--motion", "--noise",      "--outliers",
+                                             "--seed",   "--baseline12", "--baseline12-fraction",
+                                             "--plane-tilt" };
+    bool tiltGiven = false;
+    for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--planar" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
@@ -93,9 +104,34 @@ Options parseArguments(int argc, char** argv)
             if (!(o.scene.outlierRatio >= 0 && o.scene.outlierRatio < 1))
                 throw argumentError(arg, "expected a fraction in [0, 1), got '" + value + "'");
         }
+        else if (arg == "--baseline12")
+        {
+            o.scene.baseline12 = parseNumber(arg, value);
+            if (!(o.scene.baseline12 > 0))
+                throw argumentError(arg, "expected a distance > 0 (m), got '" + value + "'");
+        }
+        else if (arg == "--baseline12-fraction")
+        {
+            o.scene.baseline12Fraction = parseNumber(arg, value);
+            if (!(o.scene.baseline12Fraction > 0))
+                throw argumentError(arg, "expected a fraction > 0, got '" + value + "'");
+        }
+        else if (arg == "--planar")
+            o.scene.planar = true;
+        else if (arg == "--plane-tilt")
+        {
+            o.scene.planeTilt = parseNumber(arg, value);
+            if (!(o.scene.planeTilt >= 0 && o.scene.planeTilt < 90))
+                throw argumentError(arg, "expected an angle in [0, 90) degrees, got '" + value + "'");
+            tiltGiven = true;
+        }
         else // --seed
             o.scene.seed = parseInteger(arg, value, -2147483648.0);
     }
+    if (o.scene.baseline12 > 0 && o.scene.baseline12Fraction > 0)
+        throw argumentError("--baseline12", "give either --baseline12 or --baseline12-fraction, not both");
+    if (tiltGiven && !o.scene.planar)
+        throw argumentError("--plane-tilt", "needs --planar");
     if (o.output.empty())
         throw std::runtime_error("argument --output is required (see --help)");
     if (!hasExtension(o.output, ".yml") && !hasExtension(o.output, ".yaml") && !hasExtension(o.output, ".json"))
