@@ -9,6 +9,7 @@
 //
 //   tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]
 //                      [--noise px] [--outliers ratio] [--seed k]
+//                      [--baseline12 m | --baseline12-fraction f] [--planar [--plane-tilt deg]]
 //   tripose_make_scene --stereo --output scene.yml [--points N] [--lines M] [--noise px]
 //                      [--outliers ratio] [--missing ratio] [--seed k]
 //
@@ -41,6 +42,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_make_scene --output scene.yml [--points N] [--lines M] [--motion large|small]\n"
     "                          [--noise px] [--outliers ratio] [--seed k]\n"
+    "                          [--baseline12 m | --baseline12-fraction f] [--planar [--plane-tilt deg]]\n"
     "       tripose_make_scene --stereo --output scene.yml [--points N] [--lines M] [--noise px]\n"
     "                          [--outliers ratio] [--missing ratio] [--seed k]\n"
     "  --output    problem file to write (.yml, .yaml or .json)\n"
@@ -51,6 +53,12 @@ const char* kUsage =
     "  --noise     standard deviation of the Gaussian pixel noise (default 0)\n"
     "  --outliers  fraction in [0, 1) of points and of lines with a wrong view-3 match (default 0)\n"
     "  --seed      integer seed; the same seed writes the same scene (default 0)\n"
+    "  --baseline12           distance (m) of view 2 from view 1 in a random direction, view 3\n"
+    "                         still placed by --motion (default: view 2 placed by --motion)\n"
+    "  --baseline12-fraction  the same as a fraction of the 20 m depth (0.01: a 1 % baseline)\n"
+    "  --planar               every point and segment on one plane through the cube centre\n"
+    "  --plane-tilt           angle (degrees, [0, 90)) between the plane's normal and the direction\n"
+    "                         to view 1 (default 30; needs --planar)\n"
     "  --stereo    a stereo-rig scene instead (no value): views 1-2 a rig at time A, views 3-4 at time B\n"
     "              (baseline 0.1-0.5 m, structure 5-30 m ahead, motion 0.3-3 m, turn up to 20 deg);\n"
     "              --outliers are wrong matches at time B; --motion does not apply\n"
@@ -74,19 +82,11 @@ bool hasExtension(const std::string& path, const std::string& extension)
 Options parseArguments(int argc, char** argv)
 {
     Options o;
-    // --stereo is a switch; every other option takes a value.
-    std::vector<char*> args;
-    for (int i = 0; i < argc; ++i)
-    {
-        if (i > 0 && std::string(argv[i]) == "--stereo")
-            o.stereo = true;
-        else
-            args.push_back(argv[i]);
-    }
-    const std::vector<std::string> known = { "--output", "--points",   "--lines", "--motion",
-                                             "--noise",  "--outliers", "--missing", "--seed" };
-    bool missingGiven = false, motionGiven = false;
-    for (const auto& option : optionPairs((int)args.size(), args.data(), kUsage, known))
+    const std::vector<std::string> known = { "--output", "--points",     "--lines",    "--motion",
+                                             "--noise",  "--outliers",   "--missing",  "--seed",
+                                             "--baseline12", "--baseline12-fraction", "--plane-tilt" };
+    bool tiltGiven = false, missingGiven = false, motionGiven = false;
+    for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--planar", "--stereo" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
@@ -125,15 +125,46 @@ Options parseArguments(int argc, char** argv)
             if (!(o.stereoScene.missingRatio >= 0 && o.stereoScene.missingRatio <= 1))
                 throw argumentError(arg, "expected a fraction in [0, 1], got '" + value + "'");
         }
+        else if (arg == "--baseline12")
+        {
+            o.scene.baseline12 = parseNumber(arg, value);
+            if (!(o.scene.baseline12 > 0))
+                throw argumentError(arg, "expected a distance > 0 (m), got '" + value + "'");
+        }
+        else if (arg == "--baseline12-fraction")
+        {
+            o.scene.baseline12Fraction = parseNumber(arg, value);
+            if (!(o.scene.baseline12Fraction > 0))
+                throw argumentError(arg, "expected a fraction > 0, got '" + value + "'");
+        }
+        else if (arg == "--planar")
+            o.scene.planar = true;
+        else if (arg == "--plane-tilt")
+        {
+            o.scene.planeTilt = parseNumber(arg, value);
+            if (!(o.scene.planeTilt >= 0 && o.scene.planeTilt < 90))
+                throw argumentError(arg, "expected an angle in [0, 90) degrees, got '" + value + "'");
+            tiltGiven = true;
+        }
+        else if (arg == "--stereo")
+        {
+            o.stereo = true;
+        }
         else // --seed
             o.scene.seed = parseInteger(arg, value, -2147483648.0);
     }
+    if (o.scene.baseline12 > 0 && o.scene.baseline12Fraction > 0)
+        throw argumentError("--baseline12", "give either --baseline12 or --baseline12-fraction, not both");
+    if (tiltGiven && !o.scene.planar)
+        throw argumentError("--plane-tilt", "needs --planar");
     if (o.output.empty())
         throw std::runtime_error("argument --output is required (see --help)");
     if (!hasExtension(o.output, ".yml") && !hasExtension(o.output, ".yaml") && !hasExtension(o.output, ".json"))
         throw argumentError("--output", "expected a .yml, .yaml or .json file name, got '" + o.output + "'");
     if (o.stereo && motionGiven)
         throw argumentError("--motion", "applies to three-view scenes, not with --stereo");
+    if (o.stereo && (o.scene.baseline12 > 0 || o.scene.baseline12Fraction > 0 || o.scene.planar))
+        throw argumentError(o.scene.planar ? "--planar" : "--baseline12", "applies to three-view scenes, not with --stereo");
     if (!o.stereo && missingGiven)
         throw argumentError("--missing", "applies to stereo-rig scenes only (add --stereo)");
     o.stereoScene.numPoints = o.scene.numPoints;

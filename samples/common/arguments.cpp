@@ -17,7 +17,8 @@ std::runtime_error argumentError(const std::string& arg, const std::string& what
 }
 
 std::vector<std::pair<std::string, std::string>> optionPairs(int argc, char** argv, const std::string& usage,
-                                                             const std::vector<std::string>& known)
+                                                             const std::vector<std::string>& known,
+                                                             const std::vector<std::string>& flags)
 {
     std::vector<std::pair<std::string, std::string>> pairs;
     for (int i = 1; i < argc; ++i)
@@ -27,6 +28,11 @@ std::vector<std::pair<std::string, std::string>> optionPairs(int argc, char** ar
         {
             std::cout << usage;
             std::exit(0);
+        }
+        if (std::find(flags.begin(), flags.end(), arg) != flags.end())
+        {
+            pairs.emplace_back(arg, std::string());
+            continue;
         }
         if (std::find(known.begin(), known.end(), arg) == known.end())
             throw argumentError(arg, "unknown (see --help)");

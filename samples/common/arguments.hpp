@@ -14,10 +14,12 @@
 namespace tripose_samples {
 
 /** The command line as (option, value) pairs, in order. --help or -h prints @p usage and exits; an
-option not in @p known, or one without a value, is an argumentError naming it.
+option not in @p known or @p flags, or one of @p known without a value, is an argumentError naming
+it. A flag (an option of @p flags) takes no value: its pair has an empty value.
 */
 std::vector<std::pair<std::string, std::string>> optionPairs(int argc, char** argv, const std::string& usage,
-                                                             const std::vector<std::string>& known);
+                                                             const std::vector<std::string>& known,
+                                                             const std::vector<std::string>& flags = {});
 
 //! "argument <arg>: <what>".
 std::runtime_error argumentError(const std::string& arg, const std::string& what);

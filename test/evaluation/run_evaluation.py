@@ -32,6 +32,15 @@ TOOL_NAME = "tripose_evaluate"
 VGG_DIR = REPO / "test" / "data" / "vgg"
 VGG_SEQUENCES = ["University-Library", "Merton-College-I", "Merton-College-II", "Merton-College-III",
                  "Wadham-College", "Corridor", "Model-House"]
+# Regimes beyond the paper's protocol (SyntheticSceneParams): a narrow known pair (view 2 at a
+# fraction of the 20 m depth from view 1, view 3 by small motion) and planar structure (one plane
+# tilted 30 degrees from view 1), as tripose_evaluate arguments.
+REGIMES = {
+    "narrow 1 %": ["--motion", "small", "--baseline12-fraction", 0.01],
+    "narrow 0.5 %": ["--motion", "small", "--baseline12-fraction", 0.005],
+    "planar large": ["--motion", "large", "--planar"],
+    "planar small": ["--motion", "small", "--planar"],
+}
 # The paper's Fig. 6 draws, as (lines, points).
 VGG_CONFIGS = [(2, 2), (2, 3), (2, 4), (3, 3), (4, 2), (4, 4), (6, 6), (10, 10)]
 
@@ -60,11 +69,13 @@ STYLE = {
 SIZES = {
     # Smoke: every figure and table, few trials; CI runs it in well under 3 minutes on 2 cores.
     "smoke": dict(trials=20, noise=[0.0, 1.0, 3.0], fig4_n=[4, 8], fig5_n=[4, 10, 45], fig5_trials=10,
-                  fig5_repeats=3, vgg_trials=10, outliers=[0.0, 0.3], outlier_trials=10),
+                  fig5_repeats=3, vgg_trials=10, outliers=[0.0, 0.3], outlier_trials=10,
+                  regime_n=[4, 10], regime_noise=[1.0], regime_trials=10),
     # Full: the paper's 500 trials per point (100 runs per VGG configuration).
     "full": dict(trials=500, noise=[0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0], fig4_n=[4, 5, 6, 7, 8],
                  fig5_n=[4, 5, 6, 8, 10, 15, 20, 25, 30, 35, 40, 45], fig5_trials=500, fig5_repeats=5,
-                 vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6], outlier_trials=500),
+                 vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6], outlier_trials=500,
+                 regime_n=[4, 10], regime_noise=[0.5, 1.0, 2.0], regime_trials=200),
 }
 
 
@@ -233,6 +244,12 @@ def plan(size):
         key = dict(motion="large", points=20, lines=20, noise=1.0, outliers=ratio)
         jobs.append(("outliers", key, ["synthetic", "--points", 20, "--lines", 20, "--noise", 1.0, "--outliers", ratio,
                                        "--trials", cfg["outlier_trials"], "--seed", 4000], cfg["outlier_trials"]))
+    for regime, regime_args in REGIMES.items():
+        for n in cfg["regime_n"]:
+            for noise in cfg["regime_noise"]:
+                key = dict(regime=regime, points=n, lines=n, noise=noise)
+                jobs.append(("regimes", key, ["synthetic", "--points", n, "--lines", n, "--noise", noise] + regime_args +
+                             ["--trials", cfg["regime_trials"], "--seed", 6000], cfg["regime_trials"]))
     for seq in VGG_SEQUENCES:
         for n_lines, n_points in VGG_CONFIGS:
             key = dict(sequence=seq, points=n_points, lines=n_lines)
@@ -327,6 +344,42 @@ def plot_noise_curves(results, name, out_dir, configs, stats, title):
         plt.close(fig)
         paths.append(path)
     return paths
+
+
+def plot_regimes(results, out_dir):
+    """Median rotation error vs noise per regime (rows) and feature count (columns)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    if not results.get("regimes"):
+        return []
+    counts = sorted({g["key"]["points"] for g in results["regimes"]})
+    fig, axes = plt.subplots(len(REGIMES), len(counts), figsize=(3.6 * len(counts), 2.4 * len(REGIMES)),
+                             squeeze=False, sharex=True)
+    for r, regime in enumerate(REGIMES):
+        for c, n in enumerate(counts):
+            ax = axes[r][c]
+            groups = _group(results, "regimes", regime=regime, points=n)
+            for method in METHODS:
+                xs, ys = _curve(groups, "noise", method, "median", "rot_deg")
+                if xs:
+                    ax.plot(xs, ys, label=METHODS[method], markersize=4, **STYLE[method])
+            ax.set_yscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.set_title(f"{regime}, {n} points + {n} lines", fontsize=9)
+            if c == 0:
+                ax.set_ylabel("median rotation (deg)", fontsize=8)
+            if r == len(REGIMES) - 1:
+                ax.set_xlabel("noise sigma (px)")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
+    fig.suptitle("Narrow known baselines and planar structure (failures count as infinite error)", fontsize=10)
+    fig.tight_layout(rect=(0, 0.06, 1, 0.97))
+    path = out_dir / "regimes.png"
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return [path]
 
 
 def plot_time(results, out_dir):
@@ -528,6 +581,12 @@ def tables_markdown(results, size, machine, command):
         method_table("Outliers (20P+20L, 1 px, large motion): median rotation error (deg) / relative translation "
                      "error / median time", groups, ["outliers"], "median", with_time=True)
 
+    for regime in REGIMES:
+        groups = [g for g in results.get("regimes", []) if g["key"]["regime"] == regime]
+        if groups:
+            method_table(f"{regime}: median rotation error (deg) / relative translation error", groups,
+                         ["points", "lines", "noise"], "median")
+
     groups = results.get("fig6", [])
     if groups:
         method_table("Fig. 6, VGG: median rotation error (deg) / relative translation error", groups,
@@ -542,7 +601,7 @@ def main(argv=None):
     parser.add_argument("--size", choices=sorted(SIZES), default="smoke")
     parser.add_argument("--out", type=Path, default=REPO / "doc" / "evaluation",
                         help="output folder for PNGs, tables.md and data/summary.json (default doc/evaluation)")
-    parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers"],
+    parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers", "regimes"],
                         help="run only these experiments")
     parser.add_argument("--plot-only", action="store_true",
                         help="redraw the figures and tables from <out>/data/summary.json without running anything")
@@ -576,6 +635,7 @@ def main(argv=None):
     if results.get("fig5"):
         pngs += plot_time(results, out)
     pngs += plot_outliers(results, out)
+    pngs += plot_regimes(results, out)
     pngs += plot_vgg(results, out)
     print(f"{len(pngs)} figures, tables.md and data/summary.json in {out} ({elapsed:.0f} s)")
     return 0

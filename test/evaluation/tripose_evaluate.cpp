@@ -8,8 +8,10 @@
 //
 //   synthetic scenes (Qadir & Neubert, Sec. IV-A):
 //     tripose_evaluate synthetic --points N --lines M --noise px [--motion large|small]
-//                      [--outliers ratio] [--trials T] [--seed S] [--repeats K] [--threshold px]
-//                      [--methods list] [--dump-inputs]
+//                      [--baseline12-fraction f] [--planar] [--outliers ratio] [--trials T] [--seed S]
+//                      [--repeats K] [--threshold px] [--methods list] [--dump-inputs]
+//   (--baseline12-fraction: view 2 at that fraction of the 20 m depth from view 1; --planar: all
+//   structure on one plane tilted 30 degrees from view 1; SyntheticSceneParams has the details)
 //   random subsets of a VGG multi-view sequence (Sec. IV-B):
 //     tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M
 //                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list]
@@ -49,6 +51,7 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_evaluate synthetic --points N --lines M --noise px [--motion large|small]\n"
+    "                        [--baseline12-fraction f] [--planar]\n"
     "                        [--outliers ratio] [--trials T] [--seed S] [--repeats K]\n"
     "                        [--threshold px] [--methods list] [--dump-inputs]\n"
     "       tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M [--trials T]\n"
@@ -62,7 +65,8 @@ struct Options
 {
     std::string source;  // "synthetic" or "vgg"
     int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1;
-    double noise = 0.0, outliers = 0.0, threshold = -1.0;
+    double noise = 0.0, outliers = 0.0, threshold = -1.0, baseline12Fraction = 0.0;
+    bool planar = false;
     int motion = cv::tripose::support::MOTION_LARGE;
     std::string sequence;
     int views[3] = { 0, 1, 2 };
@@ -101,6 +105,7 @@ Options parse(int argc, char** argv)
     {
         const std::string arg = argv[i];
         if (arg == "--dump-inputs") { o.dumpInputs = true; continue; }
+        if (arg == "--planar") { o.planar = true; continue; }
         if (i + 1 >= argc)
             throw std::runtime_error("argument " + arg + ": missing value");
         const std::string v = argv[++i];
@@ -111,6 +116,7 @@ Options parse(int argc, char** argv)
         else if (arg == "--repeats") o.repeats = std::stoi(v);
         else if (arg == "--noise") o.noise = std::stod(v);
         else if (arg == "--outliers") o.outliers = std::stod(v);
+        else if (arg == "--baseline12-fraction") o.baseline12Fraction = std::stod(v);
         else if (arg == "--threshold") o.threshold = std::stod(v);
         else if (arg == "--sequence") o.sequence = v;
         else if (arg == "--motion")
@@ -221,6 +227,8 @@ Problem syntheticProblem(const Options& o, int trial)
     params.motion = o.motion;
     params.noiseSigma = o.noise;
     params.outlierRatio = o.outliers;
+    params.baseline12Fraction = o.baseline12Fraction;
+    params.planar = o.planar;
     params.seed = o.seed + trial;
     const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
     Problem p;
@@ -452,7 +460,8 @@ int main(int argc, char** argv)
                                ",\"threshold\":" + num(o.threshold);
             if (o.source == "synthetic")
                 line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"motion\":\"" +
-                        (o.motion == cv::tripose::support::MOTION_SMALL ? "small" : "large") + "\"";
+                        (o.motion == cv::tripose::support::MOTION_SMALL ? "small" : "large") + "\",\"baseline12_fraction\":" +
+                        num(o.baseline12Fraction) + ",\"planar\":" + (o.planar ? "true" : "false");
             else
                 line += ",\"sequence\":\"" + o.sequence.substr(o.sequence.find_last_of('/') + 1) + "\",\"views\":[" +
                         std::to_string(o.views[0]) + "," + std::to_string(o.views[1]) + "," +

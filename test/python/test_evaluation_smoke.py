@@ -50,15 +50,16 @@ def _groups(results, name, **match):
 
 def test_every_artefact_is_written(smoke):
     out, results = smoke
-    assert set(results) == {"fig3", "fig4", "fig5", "fig6", "outliers"}
-    expected = ["fig3_large", "fig3_small", "fig4_large", "fig4_small", "fig5_time", "outliers"]
+    assert set(results) == {"fig3", "fig4", "fig5", "fig6", "outliers", "regimes"}
+    expected = ["fig3_large", "fig3_small", "fig4_large", "fig4_small", "fig5_time", "outliers", "regimes"]
     expected += [f"fig6_{s}" for s in ("University-Library", "Merton-College-I", "Merton-College-II",
                                        "Merton-College-III", "Wadham-College", "Corridor", "Model-House")]
     for name in expected:
         png = out / f"{name}.png"
         assert png.is_file() and png.stat().st_size > 10_000, name
     tables = (out / "tables.md").read_text()
-    for heading in ("Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6", "Outliers"):
+    for heading in ("Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6", "Outliers", "narrow 1 %", "narrow 0.5 %", "planar large",
+                    "planar small"):
         assert heading in tables
 
 
@@ -112,3 +113,24 @@ def test_vgg_sequences_give_accurate_poses_with_ten_of_each(smoke):
     for g in groups:
         assert g["methods"]["ransac"]["rot_deg"]["median"] < 2.0, g["key"]
         assert g["methods"]["ml_from_truth"]["rot_deg"]["median"] < 2.0, g["key"]
+
+
+def test_regimes_cover_every_method_and_refinement_helps(smoke):
+    _, results = smoke
+    assert {g["key"]["regime"] for g in results["regimes"]} == {"narrow 1 %", "narrow 0.5 %", "planar large",
+                                                               "planar small"}
+    for g in results["regimes"]:
+        methods = g["methods"]
+        for key in ("linear", "linear+refine", "ransac", "ml_from_truth", "tri+sqpnp", "poselib"):
+            assert key in methods, (g["key"], key)
+        if g["key"]["points"] != 10:
+            continue
+        ours = methods["ransac"]["rot_deg"]["median"]
+        if g["key"]["regime"].startswith("planar"):
+            # Planar structure: RANSAC + refine reaches the ML optimum in every scene of the study in
+            # doc/accuracy.md (100 scenes); 1.5x leaves room for 10 smoke scenes.
+            assert ours <= 1.5 * methods["ml_from_truth"]["rot_deg"]["median"] + 1e-3, g["key"]
+        else:
+            # Narrow pair: triangulating from it is the weak step of the peers (5-7 deg at 1 px in
+            # the smoke run, against about 1 deg), which refinement in all three views avoids.
+            assert ours <= 0.5 * methods["tri+sqpnp"]["rot_deg"]["median"], g["key"]

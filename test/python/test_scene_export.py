@@ -148,6 +148,30 @@ def test_noise_and_outliers(tmp_path):
     assert (np.linalg.norm(rows(s["points3"], 2)[~point_inliers] - x_out, axis=1) > 20 - 6 * sigma).all()
 
 
+def test_narrow_baseline_and_planar_regimes(tmp_path):
+    # View 2 at the requested distance from view 1 (centre -R12^T t12), in metres or as a fraction of
+    # the 20 m depth.
+    for args, baseline in ((["--baseline12", "0.3"], 0.3), (["--baseline12-fraction", "0.01"], 0.2)):
+        path = tmp_path / "narrow.yml"
+        assert make_scene(path, "--points", 6, "--lines", 6, "--motion", "small", *args).returncode == 0
+        s = read_scene(path)
+        assert np.linalg.norm(s["R12"].T @ s["t12"].ravel()) == pytest.approx(baseline, rel=1e-9)
+    # Every point and segment end point on one plane through the cube centre, whose normal is
+    # --plane-tilt from the direction to view 1 (view 1 at the origin of the frame, looking at the
+    # cube centre 20 m along its optical axis).
+    path = tmp_path / "planar.yml"
+    assert make_scene(path, "--points", 8, "--lines", 8, "--planar", "--plane-tilt", 20).returncode == 0
+    s = read_scene(path)
+    X = np.vstack([rows(s["points3d"], 3), rows(s["lines3d"], 6).reshape(-1, 3)])
+    centre = X.mean(axis=0)
+    _, sv, vt = np.linalg.svd(X - centre)
+    assert sv[2] < 1e-9 * sv[0]
+    normal, cube_centre = vt[2], np.array([0.0, 0.0, 20.0])
+    assert abs(normal @ (cube_centre - centre)) < 1e-9 * sv[0]
+    to_view1 = -cube_centre / np.linalg.norm(cube_centre)
+    assert np.degrees(np.arccos(abs(normal @ to_view1))) == pytest.approx(20, abs=1e-6)
+
+
 @pytest.mark.parametrize("args, named", [
     (["--points", "-1"], "--points"),
     (["--points", "2.5"], "--points"),
@@ -158,6 +182,11 @@ def test_noise_and_outliers(tmp_path):
     (["--seed", "1e20"], "--seed"),
     (["--frobnicate", "1"], "--frobnicate"),
     (["--points"], "--points"),
+    (["--baseline12", "0"], "--baseline12"),
+    (["--baseline12-fraction", "-0.01"], "--baseline12-fraction"),
+    (["--baseline12", "0.2", "--baseline12-fraction", "0.01"], "--baseline12"),
+    (["--plane-tilt", "20"], "--plane-tilt"),
+    (["--planar", "--plane-tilt", "90"], "--plane-tilt"),
 ])
 def test_bad_arguments_fail_naming_the_argument(tmp_path, args, named):
     path = tmp_path / "scene.yml"

@@ -140,9 +140,8 @@ TEST(Tripose_DegenerateGeometry, lines_through_one_point)
 }
 
 // Planar structure through the centre of view 1 (every feature seen edge-on there) still fixes the
-// pose, but the linear solver does not recover it yet: the planar case of the narrow-baseline and
-// planar-scene work. Enabled once that lands.
-TEST(Tripose_DegenerateGeometry, DISABLED_features_coplanar_with_camera_centre_one_give_the_pose)
+// pose: views 1-2 give the plane, and the planar closed form the pose.
+TEST(Tripose_DegenerateGeometry, features_coplanar_with_camera_centre_one_give_the_pose)
 {
     // The plane y = 0.1 z passes through the centre of view 1: every feature is seen edge-on.
     const Views v = makeViews();

@@ -13,12 +13,20 @@ namespace {
 // Noise-free accuracy: the true pose must be among the candidates (and selected) for every mix.
 // ---------------------------------------------------------------------------------------------
 
-typedef testing::TestWithParam<testing::tuple<FeatureMix, int>> Tripose_LinearExact;
+enum StructureRegime
+{
+    STRUCTURE_GENERAL, //!< Structure filling the cube.
+    STRUCTURE_PLANAR,  //!< Every feature on one plane tilted 30 degrees from view 1 (a facade).
+};
+
+typedef testing::TestWithParam<testing::tuple<FeatureMix, int, int>> Tripose_LinearExact;
 
 TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
 {
     const FeatureMix mix = testing::get<0>(GetParam());
     const int motion = testing::get<1>(GetParam());
+    const bool planar = testing::get<2>(GetParam()) == STRUCTURE_PLANAR;
+    // 1000 scenes per mix bound the failure rate at the 0.1 % the acceptance counts below allow.
     const int scenes = 1000;
     // Exact data: the method is exact, so only rounding separates the estimate from the truth.
     const double rotationToleranceDeg = degrees(1e-6), translationTolerance = 1e-6;
@@ -26,7 +34,9 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
     double worstSelectedRotation = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
-        const tripose::support::SyntheticScene s = makeScene(mix, motion, 0.0, seed);
+        tripose::support::SyntheticSceneParams params = sceneParams(mix, motion, 0.0, seed);
+        params.planar = planar;
+        const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         const int n = solveScene(s, Rs, ts, R, t);
@@ -46,10 +56,13 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
         }
     }
     std::cout << mixName(mix) << (motion == tripose::support::MOTION_LARGE ? " large" : " small")
-              << ": true pose among candidates " << found << "/" << scenes << ", selected " << selected
-              << "/" << scenes << ", worst selected rotation error " << worstSelectedRotation << " deg" << std::endl;
+              << (planar ? " planar" : "") << ": true pose among candidates " << found << "/" << scenes
+              << ", selected " << selected << "/" << scenes << ", worst selected rotation error "
+              << worstSelectedRotation << " deg" << std::endl;
     EXPECT_GE(found, scenes * 999 / 1000);
-    EXPECT_GE(selected, scenes * 99 / 100);
+    // Planar structure is held to the found criterion: its target is the true pose selected in
+    // 99.9 % of scenes (doc/accuracy.md).
+    EXPECT_GE(selected, planar ? scenes * 999 / 1000 : scenes * 99 / 100);
 }
 
 const FeatureMix kExactMixes[] = {
@@ -58,9 +71,11 @@ const FeatureMix kExactMixes[] = {
     { 3, 3 }, { 6, 0 }, { 0, 6 }, { 4, 4 }, { 10, 10 } // six and more: dimension 1
 };
 
+// Planar structure: the kernel has dimension 4 for every mix (5 for 2P+2L).
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
                         testing::Combine(testing::ValuesIn(kExactMixes),
-                                         testing::Values((int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL)));
+                                         testing::Values((int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL),
+                                         testing::Values((int)STRUCTURE_GENERAL, (int)STRUCTURE_PLANAR)));
 
 // ---------------------------------------------------------------------------------------------
 // Input forms: all accepted layouts give the same pose.

@@ -50,8 +50,8 @@ inline std::string mixName(const FeatureMix& m)
     return cv::format("%dP%dL", m.points, m.lines);
 }
 
-inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed,
-                                                  double outlierRatio = 0)
+inline tripose::support::SyntheticSceneParams sceneParams(const FeatureMix& mix, int motion, double noise, int seed,
+                                                          double outlierRatio = 0)
 {
     tripose::support::SyntheticSceneParams params;
     params.numPoints = mix.points;
@@ -60,7 +60,13 @@ inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int mot
     params.noiseSigma = noise;
     params.outlierRatio = outlierRatio;
     params.seed = seed;
-    return tripose::support::generateSyntheticScene(params);
+    return params;
+}
+
+inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed,
+                                                  double outlierRatio = 0)
+{
+    return tripose::support::generateSyntheticScene(sceneParams(mix, motion, noise, seed, outlierRatio));
 }
 
 //! Solves a scene with the linear method; all candidates best first.

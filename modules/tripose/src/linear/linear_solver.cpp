@@ -10,6 +10,7 @@
 #include "kernel_solutions.hpp"
 #include "linear_solver.hpp"
 #include "linear_system.hpp"
+#include "planar_kernel_solutions.hpp"
 #include "pose_recovery.hpp"
 #include "smallest_eigenvectors.hpp"
 
@@ -129,11 +130,17 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
     const int numFeatures = numPoints + (lineIndices ? (int)lineIndices->size() : set.numLines);
     const double translationScale = set.pose12().t.norm();
     const ConstraintMatrix A = buildConstraintMatrix(set, translationScale, pointIndices, lineIndices);
-    return poseCandidatesFromRows(A, numPoints, numFeatures, translationScale, poses, options);
+    CameraPose scaledPose12 = set.pose12();
+    scaledPose12.t /= translationScale;
+    Eigen::Vector4d plane;
+    const bool planar = structurePlane(set, scaledPose12, pointIndices, lineIndices, plane);
+    return poseCandidatesFromRows(A, numPoints, numFeatures, translationScale, poses, options,
+                                  planar ? &plane : nullptr);
 }
 
 int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
-                           std::vector<CameraPose>& poses, const CandidateOptions& options)
+                           std::vector<CameraPose>& poses, const CandidateOptions& options,
+                           const Eigen::Vector4d* structurePlane)
 {
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
@@ -150,7 +157,13 @@ int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeat
 
     std::vector<Vector12d> solutions;
     solutions.reserve(12);
-    if (N == 1)
+    if (structurePlane)
+    {
+        // Coplanar structure widens the kernel beyond N (to 4, or 5 for 2P+2L): the general
+        // combinations would work in a wrong space, the plane gives the pose in closed form.
+        planarKernelSolutions(A, *structurePlane, solutions);
+    }
+    else if (N == 1)
     {
         // Over-determined: the smallest eigenvectors of S (9x9: t eliminated, so only the rotation
         // is normalised) are accurate enough here (the rows are balanced and every candidate is

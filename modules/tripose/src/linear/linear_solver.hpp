@@ -17,7 +17,8 @@ namespace detail {
 
 /** Dimension N of the kernel the linear method works in for a number of features. Each point and
 each line constrains two of the 12 unknowns (a point's four trilinear rows have rank 2 on exact
-data), so N = 12 - 2 (points + lines) for four or five features and N = 1 from six on.
+data), so N = 12 - 2 (points + lines) for four or five features and N = 1 from six on. Structure
+in general position; coplanar structure has a wider kernel (planar_kernel_solutions.hpp).
 */
 int kernelDimensionFor(int numFeatures);
 
@@ -51,10 +52,14 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
 arrangement of views whose rows share the unknown v = [r1; r2; r3; t / translationScale]): rows laid
 out as buildConstraintMatrix() lays them, the four rows of each of the @p numPoints points first,
 then two rows per line, @p numFeatures features in all (at least four). The candidates' t is
-multiplied by @p translationScale. Appends to @p poses and returns how many were appended.
+multiplied by @p translationScale. @p structurePlane: the plane (in the rows' frame, translation
+in units of @p translationScale) that all the structure lies on, when it does: the kernel is then
+wider and the pose comes from the planar closed form (planar_kernel_solutions.hpp). Appends to
+@p poses and returns how many were appended.
 */
 int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
-                           std::vector<CameraPose>& poses, const CandidateOptions& options = CandidateOptions());
+                           std::vector<CameraPose>& poses, const CandidateOptions& options = CandidateOptions(),
+                           const Eigen::Vector4d* structurePlane = nullptr);
 
 struct ScoredPose
 {
