@@ -14,6 +14,7 @@
 #include "../refine/multi_start_refinement.hpp"
 #include "../refine/multi_start_refiner.hpp"
 #include "../robust/robust_estimator.hpp"
+#include "../scoring/known_structure.hpp"
 #include "../scoring/pose_scorer.hpp"
 #include "pose_pipelines.hpp"
 
@@ -33,19 +34,20 @@ bool sameMinimum(const CameraPose& a, const CameraPose& b)
     return (a.R - b.R).norm() <= kSameMinimum && (a.t - b.t).norm() <= kSameMinimum * scale;
 }
 
-/** Refines every candidate over every view, and from the 26 starts around the best-ranked one
-that keep its rotation and move the centre of the estimated camera (refine/multi_start_refinement.hpp);
-each is re-triangulated until it settles. Returns the distinct minima that use as many features as
+/** Refines every candidate over every view and, when the problem has several basins
+(@p severalBasins: a narrow known pair or planar structure, scoring/known_structure.hpp), from the
+26 starts around the best-ranked one that keep its rotation and move the centre of the estimated
+camera (refine/multi_start_refinement.hpp); each is re-triangulated until it settles. Returns the distinct minima that use as many features as
 the best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
 known pair or planar structure the linear candidates alone lead refinement to another minimum in
 most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
-void refineCandidates(const ViewSet& views, std::vector<ScoredPose>& candidates)
+void refineCandidates(const ViewSet& views, bool severalBasins, std::vector<ScoredPose>& candidates)
 {
     const RefineParams params;
     std::vector<CameraPose> starts;
     for (const ScoredPose& candidate : candidates)
         starts.push_back(candidate.pose);
-    if (!candidates.empty())
+    if (severalBasins && !candidates.empty())
         centreDirectionStarts(views, candidates.front().pose, starts);
     std::vector<LocalMinimum> minima;
     refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
@@ -144,7 +146,7 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
     const PoseScorer scorer(views);
     std::vector<ScoredPose> ranked = rankCandidates(scorer, poses);
     if (method == POSE_LINEAR_REFINE)
-        refineCandidates(views, ranked);
+        refineCandidates(views, hasSeveralBasins(views, scorer), ranked);
 
     const int n = (int)ranked.size();
     if (n == 0)
@@ -192,7 +194,7 @@ int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSol
                    OutputArray lineInliers)
 {
     validate(params);
-    const MultiStartRefiner refiner(views, params.refineParams, &solver);
+    const MultiStartRefiner refiner(views, params.refineParams, &solver, hasSeveralBasins(views, scorer));
     RobustEstimate estimate;
     if (!estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {

@@ -16,25 +16,31 @@ namespace detail {
 over every view from the estimator's pose, from the solver's estimates on the inliers (when it has
 one and they are enough) and from the 26 starts of centreDirectionStarts() around the estimator's
 pose, each re-triangulated until it settles, the lowest cost kept (refine/multi_start_refinement.hpp).
-Sets larger than kMaxMultiStartFeatures are refined once from the estimator's pose: there the
-samples and local optimisation already put it in the right basin, and 27 starts would cost more
-than the rest of the estimator.
+Only where the problem has several basins (a narrow known baseline, planar structure); there too,
+sets larger than kMaxMultiStartFeatures are refined once from the estimator's pose: the samples and
+local optimisation already put it in the right basin, and 27 starts would cost more than the rest
+of the estimator. Elsewhere one refinement from the estimator's pose reaches the optimum.
 */
 class MultiStartRefiner : public PoseRefiner
 {
 public:
     static constexpr int kMaxMultiStartFeatures = 60;
 
-    MultiStartRefiner(const ViewSet& set, const RefineParams& params, const PoseSolver* solver = nullptr)
-        : set_(set), params_(params), solver_(solver)
+    /** @p severalBasins: whether the problem has several basins (scoring/known_structure.hpp);
+    without, one refinement from the estimator's pose reaches the optimum and the starts would only
+    cost time. */
+    MultiStartRefiner(const ViewSet& set, const RefineParams& params, const PoseSolver* solver, bool severalBasins)
+        : set_(set), params_(params), solver_(solver), severalBasins_(severalBasins)
     {}
+
+    bool searchesSeveralBasins() const CV_OVERRIDE { return severalBasins_; }
 
     bool refine(const FeatureSubset& inliers, CameraPose& pose) const CV_OVERRIDE
     {
         // Fewer than three features leave the pose and structure under-determined.
         if (inliers.size() < 3)
             return false;
-        if (inliers.size() > kMaxMultiStartFeatures)
+        if (!severalBasins_ || inliers.size() > kMaxMultiStartFeatures)
         {
             refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
             return true;
@@ -54,6 +60,7 @@ private:
     const ViewSet& set_;
     const RefineParams& params_;
     const PoseSolver* solver_;
+    bool severalBasins_;
 };
 
 } // namespace detail

@@ -5,40 +5,13 @@
 #include "../precomp.hpp"
 
 #include "../minimal/p3p.hpp"
+#include "../scoring/known_structure.hpp"
 #include "hybrid_pose_solver.hpp"
 
 namespace cv {
 namespace tripose {
 namespace detail {
 
-namespace {
-
-//! Median over the points with structure of the angle (deg) between their rays from the first two
-//! known views; 0 when there are none.
-double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
-{
-    std::vector<Eigen::Vector3d> centres;
-    for (const View& view : set.views)
-        if (!view.estimated && centres.size() < 2)
-            centres.push_back(view.pose.centre());
-    if (centres.size() < 2)
-        return 0.0;
-    std::vector<double> angles;
-    angles.reserve(set.numPoints);
-    for (int i = 0; i < set.numPoints; ++i)
-    {
-        if (!scorer.hasKnownPoint(i))
-            continue;
-        const Eigen::Vector3d a = scorer.knownPoint(i) - centres[0], b = scorer.knownPoint(i) - centres[1];
-        angles.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
-    }
-    if (angles.empty())
-        return 0.0;
-    std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
-    return angles[angles.size() / 2] * 180.0 / CV_PI;
-}
-
-} // namespace
 
 HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer, const PoseSolver& linear)
     : set_(set), scorer_(scorer), linear_(linear)
@@ -52,7 +25,7 @@ HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer,
     // One estimated camera that sees every point: the three-view problem.
     pointSamples_ = estimated == 1 && set.views.back().estimated && set.views.back().pointSeen.empty() &&
                     withStructure >= kMinPoints && 4 * withStructure >= set.numFeatures() &&
-                    medianTriangulationAngleDeg(set, scorer) >= kMinTriangulationAngleDeg;
+                    medianTriangulationAngleDeg(set, scorer) >= kWeakTriangulationAngleDeg;
 }
 
 int HybridPoseSolver::estimateMinimal(const FeatureSubset& sample, bool exhaustive,

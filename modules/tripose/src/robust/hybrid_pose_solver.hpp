@@ -24,7 +24,7 @@ and estimateNonMinimal() use the linear solver on every inlier, points and lines
 pose is the linear method's on the consensus set.
 
 The four-feature linear sample stays the solver when views 1-2 triangulate poorly: a narrow
-baseline (median triangulation angle of the points below kMinTriangulationAngleDeg), where the
+baseline (median triangulation angle below kWeakTriangulationAngleDeg, scoring/known_structure.hpp), where the
 depths of the triangulated points carry an error that the linear method, which never triangulates,
 avoids; or too few points with structure (fewer than kMinPoints, or under a quarter of the
 features: line-dominated scenes, whose hypotheses must come from their lines).
@@ -32,7 +32,6 @@ features: line-dominated scenes, whose hypotheses must come from their lines).
 class HybridPoseSolver : public PoseSolver
 {
 public:
-    static constexpr double kMinTriangulationAngleDeg = 2.0;
     static constexpr int kMinPoints = 8;
 
     //! @p linear: the four-feature solver (kept for non-minimal sets and poor structure).

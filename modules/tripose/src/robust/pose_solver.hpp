@@ -46,6 +46,10 @@ public:
     virtual ~PoseRefiner() {}
     //! Refines @p pose on @p inliers; false (pose unchanged) when it could not.
     virtual bool refine(const FeatureSubset& inliers, CameraPose& pose) const = 0;
+    /** True when the problem's cost has several basins (see scoring/known_structure.hpp), so that
+    the estimator should also settle its final pose from all the features, not only from the
+    hypothesis' inliers. */
+    virtual bool searchesSeveralBasins() const { return false; }
 };
 
 } // namespace detail

@@ -76,7 +76,7 @@ public:
         // structure alone, which with a narrow known pair leaves true inliers out; refined on that
         // subset the pose can stay in another basin. Settling from every feature as well, and
         // keeping the lower truncated cost of residuals re-triangulated in all views, repairs it.
-        if (refiner_ && numFeatures_ <= kMaxSettleFromAll)
+        if (refiner_ && refiner_->searchesSeveralBasins() && numFeatures_ <= kMaxSettleFromAll)
         {
             RobustEstimate fromAll = estimate;
             std::fill(fromAll.pointInliers.begin(), fromAll.pointInliers.end(), 1);

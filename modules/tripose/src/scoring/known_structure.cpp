@@ -1,0 +1,70 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "../precomp.hpp"
+
+#include <Eigen/Dense>
+
+#include "known_structure.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
+{
+    std::vector<Eigen::Vector3d> centres;
+    for (const View& view : set.views)
+        if (!view.estimated && centres.size() < 2)
+            centres.push_back(view.pose.centre());
+    if (centres.size() < 2)
+        return 0.0;
+    std::vector<double> angles;
+    angles.reserve(set.numPoints + 2 * set.numLines);
+    const auto addAngle = [&](const Eigen::Vector3d& X) {
+        const Eigen::Vector3d a = X - centres[0], b = X - centres[1];
+        angles.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
+    };
+    for (int i = 0; i < set.numPoints; ++i)
+        if (scorer.hasKnownPoint(i))
+            addAngle(scorer.knownPoint(i));
+    for (int i = 0; i < set.numLines; ++i)
+        if (scorer.hasKnownLine(i))
+            for (int end = 0; end < 2; ++end)
+                addAngle(scorer.knownLineEnd(i, end));
+    if (angles.empty())
+        return 0.0;
+    std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+    return angles[angles.size() / 2] * 180.0 / CV_PI;
+}
+
+double structureThickness(const ViewSet& set, const PoseScorer& scorer)
+{
+    std::vector<Eigen::Vector3d> X;
+    for (int i = 0; i < set.numPoints; ++i)
+        if (scorer.hasKnownPoint(i))
+            X.push_back(scorer.knownPoint(i));
+    for (int i = 0; i < set.numLines; ++i)
+        if (scorer.hasKnownLine(i))
+            for (int end = 0; end < 2; ++end)
+                X.push_back(scorer.knownLineEnd(i, end));
+    if (X.size() < 4)
+        return 1.0;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& x : X)
+        mean += x;
+    mean /= (double)X.size();
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const Eigen::Vector3d& x : X)
+        scatter.noalias() += (x - mean) * (x - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d values = eigen.eigenvalues().cwiseMax(0.0); // ascending
+    if (!(values(2) > 0))
+        return 1.0;
+    return std::sqrt(values(0) / values(2));
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv

@@ -1,0 +1,45 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP
+#define OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP
+
+#include "../geometry/view_set.hpp"
+#include "pose_scorer.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+/** How well the known views pin the structure down, from the structure PoseScorer triangulates
+from them. It decides how much the estimators search: where the known pair's rays are nearly
+parallel (a narrow baseline) or the structure is one plane, the cost over the estimated pose has
+several basins and a single refinement from the best hypothesis often stops in the wrong one.
+*/
+
+//! Median over the points with structure of the angle (deg) between their rays from the first two
+//! known views; 0 when there are none.
+double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer);
+
+//! Smallest over largest singular value of the centred structure (points and line end points):
+//! near 0 for coplanar structure; 1 when there are fewer than four structure points.
+double structureThickness(const ViewSet& set, const PoseScorer& scorer);
+
+//! Below this median angle the known pair's depth is poor (1-2 % of the depth as baseline).
+constexpr double kWeakTriangulationAngleDeg = 2.0;
+//! Below this thickness the structure counts as planar (a facade seen with noise).
+constexpr double kPlanarThickness = 0.05;
+
+//! True for the regimes with several basins: a weak triangulation angle or planar structure.
+inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+{
+    return medianTriangulationAngleDeg(set, scorer) < kWeakTriangulationAngleDeg ||
+           structureThickness(set, scorer) < kPlanarThickness;
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP
