@@ -282,19 +282,6 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
     }
 }
 
-//! The true pose of @p s turned by @p degrees about a random axis, its translation moved by @p fraction of its norm.
-void perturbedTruth(const SyntheticStereoScene& s, double degrees, double fraction, RNG& rng, Mat& R, Mat& t)
-{
-    Vec3d axis(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    axis *= (degrees * CV_PI / 180) / cv::norm(axis);
-    Mat dR;
-    Rodrigues(Mat(axis), dR);
-    R = dR * s.R;
-    Vec3d dt(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    dt *= fraction * cv::norm(s.t) / cv::norm(dt);
-    t = s.t + Mat(dt);
-}
-
 TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
 {
     RNG rng(31);
@@ -306,7 +293,7 @@ TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
     {
         const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(8, 8, 500 + seed, 0, 0, 0.3));
         Mat R, t;
-        perturbedTruth(s, 2.0, 0.1, rng, R, t);
+        perturbPose(s.R, s.t, 2.0, 0.1, rng, R, t);
         const double rms = tripose::refinePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1,
                                                               s.lines2, s.lines3, s.lines4, s.cameraMatrices,
                                                               noArray(), s.R12, s.t12, R, t, params);
@@ -316,7 +303,7 @@ TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
         // The structure as well, from a start close enough that every feature's first triangulation
         // (from all four views at the start pose) is in front of the cameras: from farther, a point
         // triangulated behind a camera stays out of the cost and its row is that triangulation.
-        perturbedTruth(s, 0.2, 0.01, rng, R, t);
+        perturbPose(s.R, s.t, 0.2, 0.01, rng, R, t);
         Mat points3d, lines3d;
         EXPECT_LT(refineStereo(s, R, t, points3d, lines3d), 1e-6) << "seed " << seed;
         EXPECT_TRUE(isExact(R, t, s)) << "seed " << seed;
@@ -344,7 +331,7 @@ TEST(Tripose_Stereo, refinement_of_noisy_data_reaches_the_maximum_likelihood_lim
         linear.push_back(poseError(R, t, s.R, s.t).rotationDeg);
         ASSERT_TRUE(std::isfinite(refineStereo(s, R, t)));
         fromLinear.push_back(poseError(R, t, s.R, s.t).rotationDeg);
-        perturbedTruth(s, 1.0, 0.05, rng, R, t);
+        perturbPose(s.R, s.t, 1.0, 0.05, rng, R, t);
         ASSERT_TRUE(std::isfinite(refineStereo(s, R, t)));
         fromNear.push_back(poseError(R, t, s.R, s.t).rotationDeg);
         Mat Rt = s.R.clone(), tt = s.t.clone();

@@ -9,8 +9,23 @@
 #include <vector>
 
 #include "test_precomp.hpp"
+#include "../src/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
 
 namespace opencv_test {
+
+//! A true pose (@p Rtrue, @p ttrue) turned by @p degrees about a random axis, its translation moved
+//! by @p fraction of its norm in a random direction: a start for refinement tests.
+inline void perturbPose(const Mat& Rtrue, const Mat& ttrue, double degrees, double fraction, RNG& rng, Mat& R, Mat& t)
+{
+    Vec3d axis(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
+    axis *= (degrees * CV_PI / 180.0) / cv::norm(axis);
+    Mat dR;
+    Rodrigues(Mat(axis), dR);
+    R = dR * Rtrue;
+    Vec3d dt(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
+    dt *= fraction * cv::norm(ttrue) / cv::norm(dt);
+    t = ttrue + Mat(dt);
+}
 
 //! A 3x3 CV_64F Mat as a Matx33d (checks the type and size).
 inline Matx33d toMatx33(const Mat& m)

@@ -36,19 +36,6 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-//! The true pose turned by @p degrees about a random axis, its translation moved by @p fraction of its norm.
-void perturbPose(const SyntheticScene& s, double degrees, double fraction, RNG& rng, Mat& R, Mat& t)
-{
-    Vec3d axis(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    axis *= (degrees * CV_PI / 180.0) / cv::norm(axis);
-    Mat dR;
-    Rodrigues(Mat(axis), dR);
-    R = dR * s.R;
-    Vec3d dt(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
-    dt *= fraction * cv::norm(s.t) / cv::norm(dt);
-    t = s.t + Mat(dt);
-}
-
 double refineScene(const SyntheticScene& s, Mat& R, Mat& t, const RefineParams& params = RefineParams(),
                    OutputArray points3d = noArray(), OutputArray lines3d = noArray())
 {
@@ -178,7 +165,7 @@ TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
         {
             const SyntheticScene s = makeScene({ setting.points, setting.lines }, setting.motion, 0.0, seed);
             Mat R, t, X, L;
-            perturbPose(s, 2.0, 0.05, rng, R, t);
+            perturbPose(s.R, s.t, 2.0, 0.05, rng, R, t);
             const double rms = refineScene(s, R, t, RefineParams(), X, L);
             const PoseError e = poseError(R, t, s.R, s.t);
             worstRotation = std::max(worstRotation, e.rotationDeg);
@@ -231,7 +218,7 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
             Mat R, t;
             // Several times the ML errors: in small motion (|t| of a few metres) the ML translation error
             // alone is ~7 % of |t|.
-            perturbPose(s, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
+            perturbPose(s.R, s.t, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
             appendErrors(R, t, s.R, s.t, startRot, startTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
@@ -337,7 +324,7 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
             {
                 const SyntheticScene s = makeScene({ points, 0 }, motion, 1.0, seed);
                 Mat R0, t0;
-                perturbPose(s, 2.0, 0.05, rng, R0, t0);
+                perturbPose(s.R, s.t, 2.0, 0.05, rng, R0, t0);
                 Mat R = R0.clone(), t = t0.clone();
                 refineScene(s, R, t);
                 appendErrors(R, t, s.R, s.t, oursRot, oursTrans);
@@ -366,7 +353,7 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
         // 2 of 10 points and 2 of 10 lines are wrong matches in view 3 (at least 20 px off).
         const SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
         Mat R0, t0;
-        perturbPose(s, 1.0, 0.02, rng, R0, t0);
+        perturbPose(s.R, s.t, 1.0, 0.02, rng, R0, t0);
         for (int loss = tripose::LOSS_SQUARED; loss <= tripose::LOSS_CAUCHY; ++loss)
         {
             RefineParams params;
@@ -484,7 +471,7 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
     const SyntheticScene s = makeScene({ 4, 3 }, tripose::support::MOTION_LARGE, 0.5, 4);
     RNG rng(1);
     Mat R0, t0;
-    perturbPose(s, 1.0, 0.02, rng, R0, t0);
+    perturbPose(s.R, s.t, 1.0, 0.02, rng, R0, t0);
     Mat Rref = R0.clone(), tref = t0.clone();
     refineScene(s, Rref, tref);
 
