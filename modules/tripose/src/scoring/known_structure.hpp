@@ -31,10 +31,15 @@ constexpr double kWeakTriangulationAngleDeg = 2.0;
 //! Below this thickness the structure counts as planar (a facade seen with noise).
 constexpr double kPlanarThickness = 0.05;
 
-//! True for the regimes with several basins: a weak triangulation angle or planar structure.
+/** True for the regimes with several basins: a weak triangulation angle, planar structure, or
+mostly lines (under a quarter of the features are points: a line's residuals leave the motion
+along it free, and a planar target seen through lines alone has a mirrored motion that explains
+most of them nearly as well, doc/stereo.md).
+*/
 inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {
-    return medianTriangulationAngleDeg(set, scorer) < kWeakTriangulationAngleDeg ||
+    return 4 * set.numPoints < set.numFeatures() ||
+           medianTriangulationAngleDeg(set, scorer) < kWeakTriangulationAngleDeg ||
            structureThickness(set, scorer) < kPlanarThickness;
 }
 
