@@ -135,7 +135,11 @@ int planarKernelSolutions(const ConstraintMatrix& A, const Eigen::Vector4d& plan
     const Eigen::Matrix<double, 12, 9> complement =
         (qr.householderQ() * Eigen::Matrix<double, 12, 12>::Identity()).rightCols<9>();
 
-    const Eigen::Matrix<double, Eigen::Dynamic, 9> restricted = A * complement;
+    // At least nine rows (zero rows added): with fewer constraints than unknowns (four lines: eight
+    // rows) the missing singular values are zeros, part of the kernel.
+    Eigen::Matrix<double, Eigen::Dynamic, 9> restricted =
+        Eigen::Matrix<double, Eigen::Dynamic, 9>::Zero(std::max<Eigen::Index>(A.rows(), 9), 9);
+    restricted.topRows(A.rows()).noalias() = A * complement;
     const Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 9>> svd(restricted, Eigen::ComputeFullV);
     const Eigen::Matrix<double, 9, 1> singular = svd.singularValues();
     if (!(singular(0) > 0) || !singular.allFinite())
