@@ -121,30 +121,13 @@ int main(int argc, char** argv)
         params.outlierRatio = o.outliers;
         params.seed = 2000 + k;
         const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
-        std::vector<std::vector<double>> perScene(M);
-        std::vector<cv::Mat> Rs(M), ts(M);
-        std::vector<bool> ok(M, false);
-        // Interleave the methods so that frequency changes and other load hit both alike.
-        for (int r = 0; r < o.repeats; ++r)
-            for (size_t m = 0; m < M; ++m)
-            {
-                cv::Mat R, t;
-                bool solved = false;
-                const int64 t0 = cv::getTickCount();
-                try { solved = methods[m].second(s, k, R, t); } catch (const cv::Exception&) { solved = false; }
-                const int64 t1 = cv::getTickCount();
-                perScene[m].push_back(1e3 * double(t1 - t0) / cv::getTickFrequency());
-                ok[m] = solved && !R.empty();
-                Rs[m] = R;
-                ts[m] = t;
-            }
+        std::vector<double> sceneTimes;
+        std::vector<cv::tripose::support::PoseError> sceneErrors;
+        tripose_benchmark::runInterleaved(s, k, methods, o.repeats, 1e3, sceneTimes, sceneErrors);
         for (size_t m = 0; m < M; ++m)
         {
-            times[m].push_back(tripose_benchmark::median(perScene[m]));
-            cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-            if (ok[m])
-                e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
-            const double r = e.rotationDeg, tr = e.relativeTranslation;
+            times[m].push_back(sceneTimes[m]);
+            const double r = sceneErrors[m].rotationDeg, tr = sceneErrors[m].relativeTranslation;
             rot[m].push_back(r);
             trans[m].push_back(tr);
             good[m] += r < 1.0 && tr < 0.05;

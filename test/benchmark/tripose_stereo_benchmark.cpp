@@ -99,31 +99,14 @@ void runRow(const char* label, int points, int lines, double outliers, double no
         params.missingRatio = 0.2;
         params.seed = 3000 + k;
         const Scene s = cv::tripose::support::generateSyntheticStereoScene(params);
-        std::vector<std::vector<double>> perScene(M);
-        std::vector<cv::Mat> Rs(M), ts(M);
-        std::vector<bool> ok(M, false);
-        // Interleave the methods so that frequency changes and other load hit all of them alike.
-        for (int r = 0; r < repeats; ++r)
-            for (size_t m = 0; m < M; ++m)
-            {
-                cv::Mat R, t;
-                bool solved = false;
-                const int64 t0 = cv::getTickCount();
-                try { solved = methods[m].second(s, k, R, t); } catch (const cv::Exception&) { solved = false; }
-                const int64 t1 = cv::getTickCount();
-                perScene[m].push_back(1e6 * double(t1 - t0) / cv::getTickFrequency());
-                ok[m] = solved && !R.empty();
-                Rs[m] = R;
-                ts[m] = t;
-            }
+        std::vector<double> sceneTimes;
+        std::vector<cv::tripose::support::PoseError> sceneErrors;
+        tripose_benchmark::runInterleaved(s, k, methods, repeats, 1e6, sceneTimes, sceneErrors);
         for (size_t m = 0; m < M; ++m)
         {
-            times[m].push_back(tripose_benchmark::median(perScene[m]));
-            cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-            if (ok[m])
-                e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
-            rot[m].push_back(e.rotationDeg);
-            trans[m].push_back(e.relativeTranslation);
+            times[m].push_back(sceneTimes[m]);
+            rot[m].push_back(sceneErrors[m].rotationDeg);
+            trans[m].push_back(sceneErrors[m].relativeTranslation);
         }
     }
     const double base = tripose_benchmark::median(times[0]);
