@@ -33,12 +33,13 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
-    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine sweeps]\n"
+    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
-    "  --local-refine after each registration, refine every registered frame of the window in turn against\n"
-    "                 all other frames (this many sweeps; default 0: off)\n"
+    "  --local-refine 1: after each registration, refine the window's registered frames, the new one and\n"
+    "                 the structure together against the earlier frames (a local bundle adjustment;\n"
+    "                 default 0: off)\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
     "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
@@ -68,7 +69,12 @@ Options parseArguments(int argc, char** argv)
         else if (arg == "--method")
             o.method = value;
         else if (arg == "--local-refine")
-            o.track.refinementSweeps = parseInteger(arg, value, 0.0);
+        {
+            const int on = parseInteger(arg, value, 0.0);
+            if (on > 1)
+                throw argumentError(arg, "expected 0 or 1, got '" + value + "'");
+            o.track.localAdjustment = on == 1;
+        }
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--threshold")
@@ -276,7 +282,7 @@ int main(int argc, char** argv)
     {
         tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
             fs << "sequence" << options.data << "window" << options.track.window << "method" << options.method
-               << "local_refine_sweeps" << options.track.refinementSweeps;
+               << "local_refine" << (options.track.localAdjustment ? 1 : 0);
             fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
             fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
             fs << "path_length" << pathLength << "drift_percent" << drift;

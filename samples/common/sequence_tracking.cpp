@@ -4,6 +4,7 @@
 
 #include "sequence_tracking.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -82,49 +83,84 @@ bool registrationViews(const SequenceObservations& sequence, const std::vector<T
     return true;
 }
 
-bool refineAgainst(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, int frame,
-                   const std::vector<int>& known, const cv::tripose::RefineParams& params)
+double adjustFrames(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames,
+                    const std::vector<int>& free, const std::vector<int>& fixed, const cv::tripose::RefineParams& params)
 {
+    std::vector<int> all = fixed;
+    all.insert(all.end(), free.begin(), free.end());
+    std::vector<int> points, lines;
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const std::vector<cv::Mat>& rows = kind == 0 ? sequence.points : sequence.lines;
+        std::vector<int>& keep = kind == 0 ? points : lines;
+        const int n = rows[all[0]].empty() ? 0 : rows[all[0]].rows;
+        for (int i = 0; i < n; ++i)
+        {
+            int seenAll = 0, seenFree = 0;
+            for (int f : all)
+                seenAll += seen(rows[f], i) ? 1 : 0;
+            for (int f : free)
+                seenFree += seen(rows[f], i) ? 1 : 0;
+            if (seenAll >= 2 && seenFree >= 1)
+                keep.push_back(i);
+        }
+    }
     std::vector<cv::Mat> p, l, K, Rs, ts;
-    int features = 0;
-    if (!registrationViews(sequence, frames, frame, known, p, l, K, Rs, ts, features))
-        return false;
-    cv::Mat R = frames[frame].R.clone(), t = frames[frame].t.clone();
-    const double rms = cv::tripose::refinePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t, params);
-    if (!(std::isfinite(rms) && cv::checkRange(R) && cv::checkRange(t)))
-        return false;
-    frames[frame].R = R;
-    frames[frame].t = t;
-    return true;
+    cv::Mat fixedMask((int)all.size(), 1, CV_8U, cv::Scalar(0));
+    for (size_t v = 0; v < all.size(); ++v)
+    {
+        const int f = all[v];
+        p.push_back(selectRows(sequence.points[f], points));
+        l.push_back(selectRows(sequence.lines[f], lines));
+        K.push_back(sequence.cameraMatrices[f]);
+        Rs.push_back(frames[f].R);
+        ts.push_back(frames[f].t);
+        fixedMask.at<uchar>((int)v) = v < fixed.size() ? 1 : 0;
+    }
+    if (points.empty())
+        p.clear();
+    if (lines.empty())
+        l.clear();
+    if (points.size() + lines.size() < (size_t)kMinFeatures)
+        return std::numeric_limits<double>::infinity();
+    std::vector<cv::Mat> refinedRs, refinedTs;
+    const double rms =
+        cv::tripose::refinePosesMultiView(p, l, K, cv::noArray(), Rs, ts, fixedMask, refinedRs, refinedTs, params);
+    if (!std::isfinite(rms))
+        return rms;
+    for (size_t v = fixed.size(); v < all.size(); ++v)
+    {
+        if (!(cv::checkRange(refinedRs[v]) && cv::checkRange(refinedTs[v])))
+            return std::numeric_limits<double>::infinity();
+    }
+    for (size_t v = fixed.size(); v < all.size(); ++v)
+    {
+        frames[all[v]].R = refinedRs[v];
+        frames[all[v]].t = refinedTs[v];
+    }
+    return rms;
 }
 
 namespace {
 
-//! The alternating local refinement of TrackOptions::refinementSweeps after frame @p k is registered.
-void refineWindow(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, const std::vector<int>& window,
-                  int k, const TrackOptions& options)
+/** The local adjustment of TrackOptions::localAdjustment after frame @p k is registered: the
+registered frames of the window and frame k, against every earlier frame with a pose. */
+void adjustWindow(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames,
+                  const std::vector<int>& window, int k, const TrackOptions& options)
 {
-    std::vector<int> posed;
-    for (int j = 0; j <= k; ++j)
-        if (frames[j].status != FRAME_LOST)
-            posed.push_back(j);
     std::vector<int> free;
     for (int j : window)
         if (frames[j].status == FRAME_REGISTERED)
             free.push_back(j);
     free.push_back(k);
+    std::vector<int> fixed;
+    for (int j = 0; j < k; ++j)
+        if (frames[j].status != FRAME_LOST && std::find(free.begin(), free.end(), j) == free.end())
+            fixed.push_back(j);
     cv::tripose::RefineParams params;
     params.loss = cv::tripose::LOSS_HUBER;
     params.lossScale = options.ransac.threshold;
-    for (int sweep = 0; sweep < options.refinementSweeps; ++sweep)
-        for (int j : free)
-        {
-            std::vector<int> others;
-            for (int o : posed)
-                if (o != j)
-                    others.push_back(o);
-            refineAgainst(sequence, frames, j, others, params);
-        }
+    adjustFrames(sequence, frames, free, fixed, params);
 }
 
 } // namespace
@@ -170,8 +206,8 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
         frame.status = FRAME_REGISTERED;
         frame.R = R;
         frame.t = t;
-        if (options.refinementSweeps > 0)
-            refineWindow(sequence, frames, window, k, options);
+        if (options.localAdjustment)
+            adjustWindow(sequence, frames, window, k, options);
         frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     }
     return frames;

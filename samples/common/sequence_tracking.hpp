@@ -28,12 +28,10 @@ struct TrackOptions
     int window = 5;                      //!< Registered frames a new frame is registered against (>= 2).
     bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
-    /** Local refinement after each registration, in sweeps (0: none): each registered frame of the
-    window, the new one included, is refined in turn (refinePoseMultiView, Huber loss at the RANSAC
-    threshold) against every other frame with a pose that sees its features, the others held fixed.
-    Alternating single-frame refinements: a block-coordinate bundle adjustment of the window's
-    poses, the structure eliminated in each step; frames 0 and 1 stay as given. */
-    int refinementSweeps = 0;
+    /** Local adjustment after each registration: the registered frames of the window, the new one
+    included, and the structure refined together (refinePosesMultiView, Huber loss at the RANSAC
+    threshold) against every earlier frame with a pose, held fixed (frames 0 and 1 among them). */
+    bool localAdjustment = false;
 };
 
 enum FrameStatus
@@ -62,10 +60,13 @@ bool registrationViews(const SequenceObservations& sequence, const std::vector<T
                        std::vector<cv::Mat>& cameraMatrices, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts,
                        int& features);
 
-//! Refines the pose of frame @p frame (refinePoseMultiView) against the frames @p known, held fixed;
-//! false (pose unchanged) when they share too few features or the refinement fails.
-bool refineAgainst(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames, int frame,
-                   const std::vector<int>& known, const cv::tripose::RefineParams& params);
+/** Refines frames @p free and the structure together (refinePosesMultiView) with frames @p fixed held,
+on the features seen by at least two of these frames, one of them free. Returns the RMS error (px);
++inf, frames unchanged, when the refinement fails or fewer than four features qualify.
+@p fixed must hold two frames at distinct centres.
+*/
+double adjustFrames(const SequenceObservations& sequence, std::vector<TrackedFrame>& frames,
+                    const std::vector<int>& free, const std::vector<int>& fixed, const cv::tripose::RefineParams& params);
 
 /** Tracks the whole sequence. A lost frame gets no pose and is left out of later windows: the window
 holds the last @p options.window frames that have a pose, so tracking resumes as soon as a frame

@@ -8,10 +8,11 @@
 //   tripose_tracking_sweeps --data <sequence> --floor
 //       each frame from 2 on registered (RANSAC + refinement) against every other frame at the
 //       sequence's poses: the error of registration alone, per frame in % of the path;
-//   tripose_tracking_sweeps --data <sequence> --sweeps S [--start track.yml]
-//       S sweeps of alternating refinement of frames 2.. against all other frames (frames 0 and 1
-//       fixed, Huber loss at 2 px), started at the sequence's poses or at the poses of a
-//       tripose_track output; prints the last frame's drift every 25 sweeps.
+//   tripose_tracking_sweeps --data <sequence> --adjust [--start track.yml] [--loss squared|huber]
+//       every frame from 2 on and the structure refined together (refinePosesMultiView, frames 0
+//       and 1 fixed; Huber loss at 2 px by default), started at the sequence's poses or at the poses
+//       of a tripose_track output: the maximum-likelihood estimate of the whole sequence given
+//       frames 0 and 1; prints each frame's position error and the last frame's drift.
 
 #include <iostream>
 #include <string>
@@ -33,8 +34,8 @@ double centreDistance(const cv::Mat& R, const cv::Mat& t, const cv::Mat& Rref, c
 int main(int argc, char** argv)
 {
     std::string data, start;
-    int sweeps = 0;
-    bool floor = false;
+    std::string loss = "huber";
+    bool floor = false, adjust = false;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -42,8 +43,10 @@ int main(int argc, char** argv)
             data = argv[++i];
         else if (arg == "--start" && i + 1 < argc)
             start = argv[++i];
-        else if (arg == "--sweeps" && i + 1 < argc)
-            sweeps = std::atoi(argv[++i]);
+        else if (arg == "--loss" && i + 1 < argc)
+            loss = argv[++i];
+        else if (arg == "--adjust")
+            adjust = true;
         else if (arg == "--floor")
             floor = true;
         else
@@ -51,6 +54,12 @@ int main(int argc, char** argv)
             std::cerr << "tripose_tracking_sweeps: unknown or incomplete argument " << arg << "\n";
             return 1;
         }
+    }
+    if (floor == adjust || (loss != "huber" && loss != "squared"))
+    {
+        std::cerr << "usage: tripose_tracking_sweeps --data <sequence> (--floor | --adjust [--start track.yml] "
+                     "[--loss squared|huber])\n";
+        return 1;
     }
     try
     {
@@ -113,25 +122,21 @@ int main(int argc, char** argv)
             }
         }
         cv::tripose::RefineParams params;
-        params.loss = cv::tripose::LOSS_HUBER;
+        params.loss = loss == "huber" ? cv::tripose::LOSS_HUBER : cv::tripose::LOSS_SQUARED;
         params.lossScale = 2;
+        params.maxIterations = 200;
         std::cout << cv::format("start: last frame %.3f %% of the path\n",
                                 100 * centreDistance(frames[F - 1].R, frames[F - 1].t, seq.Rs[F - 1], seq.ts[F - 1]) / path);
-        for (int sweep = 1; sweep <= sweeps; ++sweep)
-        {
-            for (int k = 2; k < F; ++k)
-            {
-                std::vector<int> others;
-                for (int j = 0; j < F; ++j)
-                    if (j != k)
-                        others.push_back(j);
-                tripose_samples::refineAgainst(obs, frames, k, others, params);
-            }
-            if (sweep == 1 || sweep % 25 == 0 || sweep == sweeps)
-                std::cout << cv::format("sweep %d: last frame %.3f %% of the path\n", sweep,
-                                        100 * centreDistance(frames[F - 1].R, frames[F - 1].t, seq.Rs[F - 1],
-                                                             seq.ts[F - 1]) / path);
-        }
+        std::vector<int> fixed = { 0, 1 }, free;
+        for (int k = 2; k < F; ++k)
+            free.push_back(k);
+        const double rms = tripose_samples::adjustFrames(obs, frames, free, fixed, params);
+        std::cout << cv::format("adjusted: RMS %.4f px\n", rms);
+        for (int k = 2; k < F; ++k)
+            std::cout << cv::format("frame %d: position error %.3f %% of the path\n", k,
+                                    100 * centreDistance(frames[k].R, frames[k].t, seq.Rs[k], seq.ts[k]) / path);
+        std::cout << cv::format("last frame %.3f %% of the path\n",
+                                100 * centreDistance(frames[F - 1].R, frames[F - 1].t, seq.Rs[F - 1], seq.ts[F - 1]) / path);
     }
     catch (const cv::Exception& e)
     {

@@ -10,6 +10,7 @@
 #include "opencv2/tripose.hpp"
 
 // The support library's scene generator (not part of the module).
+#include "tripose_support/synthetic_multiview_scene.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/synthetic_stereo_scene.hpp"
 

@@ -54,5 +54,18 @@ double refinePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, 
     return detail::refineInitialPose(views, R, t, params, points3d, lines3d);
 }
 
+double refinePosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                            InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
+                            InputArray fixedViews, OutputArrayOfArrays refinedRs, OutputArrayOfArrays refinedTs,
+                            const RefineParams& params, OutputArray points3d, OutputArray lines3d)
+{
+    CV_INSTRUMENT_REGION();
+    std::vector<int> poseOfView;
+    std::vector<detail::CameraPose> poses;
+    const detail::ViewSet views = detail::readSeveralPosesInput(points, lines, cameraMatrix, distCoeffs, Rs, ts,
+                                                                fixedViews, poseOfView, poses);
+    return detail::refineSeveralPoses(views, poseOfView, poses, params, refinedRs, refinedTs, points3d, lines3d);
+}
+
 } // namespace tripose
 } // namespace cv

@@ -18,104 +18,7 @@ namespace {
 
 using tripose::support::poseError;
 
-//! A camera at @p centre looking at the origin, with a random roll.
-void lookAt(const Vec3d& centre, double roll, Matx33d& R, Vec3d& t)
-{
-    const Vec3d z = normalize(-centre);
-    Vec3d up(std::cos(roll), std::sin(roll), 0.3);
-    Vec3d x = normalize(up.cross(z));
-    if (!(cv::norm(x) > 0.5))
-        x = normalize(Vec3d(0, 0, 1).cross(z));
-    const Vec3d y = z.cross(x);
-    R = Matx33d(x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2]);
-    t = -(R * centre);
-}
-
-/** V known views and a new one around a 10 m cube (cameras about 20 m away), f = 800 px, no noise.
-Every feature is seen by the new view and by a random subset of at least two known views; NaN rows
-elsewhere. The world frame is arbitrary (not a camera's).
-*/
-struct MultiViewScene
-{
-    std::vector<Mat> points, lines, Rs, ts; // points/lines: V + 1 arrays; Rs/ts: V known poses
-    Matx33d K;
-    Matx33d R;
-    Vec3d t;
-
-    MultiViewScene(int numKnown, int numPoints, int numLines, uint64 seed, int minSeen = 2)
-    {
-        RNG rng(seed);
-        K = Matx33d(800, 0, 320, 0, 800, 240, 0, 0, 1);
-        std::vector<Matx33d> Rv(numKnown + 1);
-        std::vector<Vec3d> tv(numKnown + 1);
-        for (int v = 0; v <= numKnown; ++v)
-        {
-            Vec3d c(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-            c = 20.0 * normalize(c) + Vec3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-            lookAt(c, rng.uniform(0.0, 2 * CV_PI), Rv[v], tv[v]);
-        }
-        R = Rv[numKnown];
-        t = tv[numKnown];
-        for (int v = 0; v < numKnown; ++v)
-        {
-            Rs.push_back(Mat(Rv[v], true));
-            ts.push_back(Mat(tv[v], true));
-        }
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        for (int v = 0; v <= numKnown; ++v)
-        {
-            points.push_back(Mat(numPoints, 2, CV_64F, Scalar::all(nan)));
-            lines.push_back(Mat(numLines, 4, CV_64F, Scalar::all(nan)));
-        }
-        auto project = [&](int v, const Vec3d& X) {
-            const Vec3d x = K * (Rv[v] * X + tv[v]);
-            return Point2d(x[0] / x[2], x[1] / x[2]);
-        };
-        auto seenBy = [&]() {
-            std::vector<int> views(numKnown);
-            for (int v = 0; v < numKnown; ++v)
-                views[v] = v;
-            std::vector<int> subset;
-            while ((int)subset.size() < minSeen || rng.uniform(0.0, 1.0) < 0.5)
-            {
-                if (views.empty())
-                    break;
-                const int pick = rng.uniform(0, (int)views.size());
-                subset.push_back(views[pick]);
-                views.erase(views.begin() + pick);
-            }
-            subset.push_back(numKnown);
-            return subset;
-        };
-        auto randomPoint = [&]() { return Vec3d(rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0)); };
-        for (int i = 0; i < numPoints; ++i)
-        {
-            const Vec3d X = randomPoint();
-            for (int v : seenBy())
-            {
-                const Point2d x = project(v, X);
-                points[v].at<double>(i, 0) = x.x;
-                points[v].at<double>(i, 1) = x.y;
-            }
-        }
-        for (int i = 0; i < numLines; ++i)
-        {
-            const Vec3d A = randomPoint(), B = randomPoint();
-            for (int v : seenBy())
-            {
-                const Point2d a = project(v, A), b = project(v, B);
-                lines[v].at<double>(i, 0) = a.x;
-                lines[v].at<double>(i, 1) = a.y;
-                lines[v].at<double>(i, 2) = b.x;
-                lines[v].at<double>(i, 3) = b.y;
-            }
-        }
-        if (numPoints == 0)
-            points.clear();
-        if (numLines == 0)
-            lines.clear();
-    }
-};
+typedef tripose::support::SyntheticMultiViewScene MultiViewScene;
 
 // Exact data: the linear method is exact to rounding, amplified by the conditioning of a system of
 // a few features (the three-view tests allow the same).
@@ -226,7 +129,7 @@ void expectNamed(const std::function<void()>& call, const std::string& name)
     }
     catch (const cv::Exception& e)
     {
-        EXPECT_NE(std::string::npos, e.err.find(name)) << e.err;
+        EXPECT_NE(std::string::npos, e.err.find(name)) << "expected " << name << ": " << e.err;
     }
 }
 
@@ -299,6 +202,138 @@ TEST(Tripose_MultiView, degenerate_known_views_give_no_pose_not_nan)
         EXPECT_TRUE(cv::checkRange(R));
         EXPECT_TRUE(cv::checkRange(t));
     }
+}
+
+/** The views of @p s as one list for refinePosesMultiView(): the known views, then the new one. */
+struct AllViews
+{
+    std::vector<Mat> Rs, ts;
+    explicit AllViews(const MultiViewScene& s) : Rs(s.Rs), ts(s.ts)
+    {
+        Rs.push_back(Mat(s.R));
+        ts.push_back(Mat(s.t));
+    }
+};
+
+TEST(Tripose_MultiView, several_poses_return_to_the_exact_poses)
+{
+    // Views 0 and 1 fixed, the other three known views and the new one moved off and refined
+    // together: noise-free data, so the joint refinement returns every pose exactly.
+    const MultiViewScene s(4, 20, 20, 31);
+    const AllViews truth(s);
+    std::vector<Mat> Rs, ts;
+    RNG rng(3);
+    for (size_t v = 0; v < truth.Rs.size(); ++v)
+    {
+        Mat rvec;
+        Rodrigues(truth.Rs[v], rvec);
+        Mat t = truth.ts[v].clone();
+        if (v >= 2)
+        {
+            rvec += Mat(Vec3d(rng.uniform(-0.02, 0.02), rng.uniform(-0.02, 0.02), rng.uniform(-0.02, 0.02)));
+            t += Mat(Vec3d(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)));
+        }
+        Rs.push_back(rvec);
+        ts.push_back(t);
+    }
+    const Mat fixed = (Mat_<uchar>(5, 1) << 1, 1, 0, 0, 0);
+    std::vector<Mat> refinedRs, refinedTs;
+    Mat points3d, lines3d;
+    const double rms = tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs,
+                                                     refinedTs, tripose::RefineParams(), points3d, lines3d);
+    EXPECT_LT(rms, 1e-6);
+    ASSERT_EQ(5u, refinedRs.size());
+    ASSERT_EQ(5u, refinedTs.size());
+    for (size_t v = 0; v < refinedRs.size(); ++v)
+    {
+        SCOPED_TRACE(cv::format("view %d", (int)v));
+        const tripose::support::PoseError e = poseError(refinedRs[v], refinedTs[v], truth.Rs[v], truth.ts[v]);
+        EXPECT_LT(e.rotationDeg, 1e-6);
+        EXPECT_LT(e.relativeTranslation, 1e-7);
+    }
+    EXPECT_EQ(Size(3, 20), points3d.size());
+    EXPECT_EQ(Size(6, 20), lines3d.size());
+}
+
+TEST(Tripose_MultiView, one_free_view_is_refinePoseMultiView)
+{
+    // With noise, so that the two must agree beyond exactness: the same cost and the same minimum.
+    MultiViewScene s(3, 15, 15, 41);
+    RNG rng(8);
+    for (std::vector<Mat>* kind : { &s.points, &s.lines })
+        for (Mat& m : *kind)
+        {
+            Mat noise(m.size(), CV_64F);
+            rng.fill(noise, RNG::NORMAL, 0.0, 1.0);
+            m = m + noise; // NaN rows stay NaN
+        }
+    Mat rvec;
+    Rodrigues(Mat(s.R), rvec);
+    rvec += Mat(Vec3d(0.01, 0.0, -0.01));
+    Mat t = Mat(s.t) + Mat(Vec3d(0.1, 0.2, -0.1));
+    std::vector<Mat> Rs = s.Rs, ts = s.ts;
+    Rs.push_back(rvec.clone());
+    ts.push_back(t.clone());
+    tripose::RefineParams params;
+    params.tolerance = 1e-14;
+    const double single = tripose::refinePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, rvec, t, params);
+    std::vector<Mat> refinedRs, refinedTs;
+    const Mat fixed = (Mat_<uchar>(4, 1) << 1, 1, 1, 0);
+    const double joint =
+        tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs, params);
+    EXPECT_NEAR(single, joint, 1e-9 * single);
+    Mat R;
+    Rodrigues(rvec, R);
+    EXPECT_LT(cv::norm(refinedRs[3], R, NORM_INF), 1e-8);
+    EXPECT_LT(cv::norm(refinedTs[3], t, NORM_INF), 1e-8 * cv::norm(t, NORM_L2));
+    for (int v = 0; v < 3; ++v) // as given, up to the rounding of reading a rotation as the nearest one
+    {
+        EXPECT_LT(cv::norm(refinedRs[v], s.Rs[v], NORM_INF), 1e-14);
+        EXPECT_EQ(0, cv::norm(refinedTs[v], s.ts[v], NORM_INF));
+    }
+}
+
+TEST(Tripose_MultiView, several_poses_bad_input_is_named)
+{
+    const MultiViewScene s(3, 6, 6, 9);
+    const AllViews all(s);
+    std::vector<Mat> Rs, ts;
+    auto run = [&](const std::vector<Mat>& points, const std::vector<Mat>& lines, const std::vector<Mat>& R,
+                   const std::vector<Mat>& t, const Mat& fixed) {
+        return [=, &Rs, &ts]() {
+            tripose::refinePosesMultiView(points, lines, s.K, noArray(), R, t, fixed, Rs, ts);
+        };
+    };
+    const Mat twoFixed = (Mat_<uchar>(4, 1) << 1, 1, 0, 0);
+    // Every view fixed: nothing to refine.
+    expectNamed(run(s.points, s.lines, all.Rs, all.ts, Mat(4, 1, CV_8U, Scalar(1))), "fixedViews");
+    // One fixed view: the scale is free.
+    expectNamed(run(s.points, s.lines, all.Rs, all.ts, (Mat_<uchar>(4, 1) << 1, 0, 0, 0)), "fixedViews");
+    // Two fixed views at one centre.
+    std::vector<Mat> sameCentre = all.ts;
+    sameCentre[1] = Mat(all.Rs[1] * all.Rs[0].t() * all.ts[0]); // a new header: the vector shares the scene's data
+    expectNamed(run(s.points, s.lines, all.Rs, sameCentre, twoFixed), "fixedViews");
+    // A mask of the wrong length or type.
+    expectNamed(run(s.points, s.lines, all.Rs, all.ts, (Mat_<uchar>(3, 1) << 1, 1, 0)), "fixedViews");
+    expectNamed(run(s.points, s.lines, all.Rs, all.ts, Mat(4, 1, CV_64F, Scalar(1))), "fixedViews");
+    // ts not matching Rs, an array too few.
+    expectNamed(run(s.points, s.lines, all.Rs, { all.ts[0], all.ts[1] }, twoFixed), "ts");
+    expectNamed(run({ s.points[0], s.points[1], s.points[3] }, s.lines, all.Rs, all.ts, twoFixed), "points");
+    // A feature seen by one view only.
+    std::vector<Mat> once;
+    for (int v = 0; v < 4; ++v)
+    {
+        once.push_back(s.points[v].clone());
+        if (v != 3)
+            once[v].row(4).setTo(std::numeric_limits<double>::quiet_NaN());
+    }
+    expectNamed(run(once, s.lines, all.Rs, all.ts, twoFixed), "point 4");
+    // Bad refinement parameters.
+    tripose::RefineParams params;
+    params.maxIterations = 0;
+    expectNamed([&]() {
+        tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), all.Rs, all.ts, twoFixed, Rs, ts, params);
+    }, "maxIterations");
 }
 
 //! Tracks a VGG sequence as tripose_track does: frames 0 and 1 given, each later frame registered

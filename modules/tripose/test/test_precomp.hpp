@@ -10,6 +10,7 @@
 
 // The support library: scenes, data sets and pose errors of the tests (not part of the module).
 #include "tripose_support/pose_error.hpp"
+#include "tripose_support/synthetic_multiview_scene.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/synthetic_stereo_scene.hpp"
 #include "tripose_support/vgg_dataset.hpp"

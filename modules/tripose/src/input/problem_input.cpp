@@ -524,41 +524,47 @@ ViewSet readStereoRigInput(InputArray points1, InputArray points2, InputArray po
 
 namespace {
 
-//! The arrays of a vector argument with one entry per view (the known views, then the new view).
-std::vector<Mat> readViewVector(InputArrayOfArrays arr, const char* name, int numViews, const char* what)
+//! The arrays of a vector argument with one entry per view; @p layout says which views, for errors.
+std::vector<Mat> readViewVector(InputArrayOfArrays arr, const char* name, int numViews, const char* what,
+                                const char* layout)
 {
     std::vector<Mat> out(numViews);
     if (arr.empty())
         return out; // every view sees none of this kind
     if (!(arr.isMatVector() || arr.isUMatVector() || arr.kind() == _InputArray::STD_VECTOR_VECTOR))
-        CV_Error_(Error::StsBadArg, ("%s must be a vector of %s arrays, one per view: the %d known views, then the new view",
-                                     name, what, numViews - 1));
+        CV_Error_(Error::StsBadArg, ("%s must be a vector of %s arrays, one per view: %s", name, what, layout));
     const int n = (int)arr.total();
     if (n != numViews)
-        CV_Error_(Error::StsBadArg, ("%s must hold %d arrays (the %d known views, then the new view), got %d", name,
-                                     numViews, numViews - 1, n));
+        CV_Error_(Error::StsBadArg, ("%s must hold %d arrays (%s), got %d", name, numViews, layout, n));
     for (int i = 0; i < n; ++i)
         out[i] = arr.getMat(i);
     return out;
 }
 
-} // namespace
-
-ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
-                           InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int minFeatures)
+bool isArrayVector(InputArrayOfArrays arr)
 {
-    if (!(Rs.isMatVector() || Rs.kind() == _InputArray::STD_VECTOR_VECTOR || Rs.isUMatVector()) || Rs.total() < 2)
-        CV_Error(Error::StsBadArg, "Rs must be a vector of at least two rotations, the world poses of the known views");
-    const int numKnown = (int)Rs.total();
-    if (!(ts.isMatVector() || ts.kind() == _InputArray::STD_VECTOR_VECTOR || ts.isUMatVector()) ||
-        (int)ts.total() != numKnown)
-        CV_Error_(Error::StsBadArg, ("ts must be a vector of %d translations, one per rotation in Rs", numKnown));
-    const int numViews = numKnown + 1;
+    return arr.isMatVector() || arr.kind() == _InputArray::STD_VECTOR_VECTOR || arr.isUMatVector();
+}
+
+/** The observations of @p numViews views, each of which may miss features (NaN rows, empty arrays),
+and the world poses Rs[k], ts[k] of the first Rs.total() of them (checked: at least two, as many
+translations); @p posed names those views, @p layout the order of all views, in errors.
+*/
+ViewSet readPosedViews(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                       InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int unposedViews,
+                       const char* posed, const char* layout)
+{
+    if (!isArrayVector(Rs) || Rs.total() < 2)
+        CV_Error_(Error::StsBadArg, ("Rs must be a vector of at least two rotations, the world poses of the %s", posed));
+    const int numPosed = (int)Rs.total();
+    if (!isArrayVector(ts) || (int)ts.total() != numPosed)
+        CV_Error_(Error::StsBadArg, ("ts must be a vector of %d translations, one per rotation in Rs", numPosed));
+    const int numViews = numPosed + unposedViews;
     if (points.empty() && lines.empty())
         CV_Error(Error::StsBadArg, "points and lines are both empty: at least four features are required");
 
-    const std::vector<Mat> pointMats = readViewVector(points, "points", numViews, "Nx2 point");
-    const std::vector<Mat> lineMats = readViewVector(lines, "lines", numViews, "Mx4 segment or Mx3 line");
+    const std::vector<Mat> pointMats = readViewVector(points, "points", numViews, "Nx2 point", layout);
+    const std::vector<Mat> lineMats = readViewVector(lines, "lines", numViews, "Mx4 segment or Mx3 line", layout);
     std::vector<_InputArray> pointArrays, lineArrays;
     std::vector<std::string> pointNames(numViews), lineNames(numViews);
     std::vector<ViewArguments> args(numViews);
@@ -578,22 +584,52 @@ ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, 
     }
     ViewSet set;
     readViews(args.data(), numViews, cameraMatrix, distCoeffs, set);
-
-    for (int k = 0; k < numKnown; ++k)
+    for (int k = 0; k < numPosed; ++k)
     {
         const std::string rName = format("Rs[%d]", k), tName = format("ts[%d]", k);
         set.views[k].pose.R = readRotation(Rs.getMat(k), rName.c_str());
         set.views[k].pose.t = readTranslation(ts.getMat(k), tName.c_str(), false);
     }
-    set.views[numKnown].estimated = true; // mounted at the identity: it is the estimated camera
-    // Centres that differ by rounding only (relative to their distance from the origin) coincide.
-    double spread = 0, size = set.views[0].pose.centre().norm();
-    for (int k = 1; k < numKnown; ++k)
+    return set;
+}
+
+//! True when the known views of @p set do not all have one centre (up to rounding, relative to
+//! their distance from the origin): then they fix the metric scale.
+bool knownCentresDiffer(const ViewSet& set)
+{
+    const CameraPose* first = nullptr;
+    double spread = 0, size = 0;
+    for (const View& view : set.views)
     {
-        spread = std::max(spread, (set.views[k].pose.centre() - set.views[0].pose.centre()).norm());
-        size = std::max(size, set.views[k].pose.centre().norm());
+        if (view.estimated)
+            continue;
+        if (!first)
+            first = &view.pose;
+        spread = std::max(spread, (view.pose.centre() - first->centre()).norm());
+        size = std::max(size, view.pose.centre().norm());
     }
-    if (!(spread > 1e-12 * size))
+    return first && spread > 1e-12 * size;
+}
+
+//! Number of the views of @p set in [begin, end) that see feature @p i of one kind.
+int viewsSeeing(const ViewSet& set, bool point, int i, int begin, int end)
+{
+    int seen = 0;
+    for (int k = begin; k < end; ++k)
+        seen += (point ? set.views[k].seesPoint(i) : set.views[k].seesLine(i)) ? 1 : 0;
+    return seen;
+}
+
+} // namespace
+
+ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                           InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int minFeatures)
+{
+    const int numKnown = isArrayVector(Rs) ? (int)Rs.total() : 0;
+    const std::string layout = format("the %d known views, then the new view", numKnown);
+    ViewSet set = readPosedViews(points, lines, cameraMatrix, distCoeffs, Rs, ts, 1, "known views", layout.c_str());
+    set.views[numKnown].estimated = true; // mounted at the identity: it is the estimated camera
+    if (!knownCentresDiffer(set))
         CV_Error(Error::StsBadArg, "ts: every known view has the same centre: no baseline fixes the scale");
 
     const View& target = set.views[numKnown];
@@ -606,9 +642,7 @@ ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, 
                 CV_Error_(Error::StsBadArg, ("%s[%d] (the new view) does not see %s %d: every feature must be seen "
                                              "in the new view", point ? "points" : "lines", numKnown,
                                              point ? "point" : "line", i));
-            int seen = 0;
-            for (int k = 0; k < numKnown; ++k)
-                seen += (point ? set.views[k].seesPoint(i) : set.views[k].seesLine(i)) ? 1 : 0;
+            const int seen = viewsSeeing(set, point, i, 0, numKnown);
             if (seen < 2)
                 CV_Error_(Error::StsBadArg, ("%s %d is seen in %d known view(s) of %s: every feature must be seen in "
                                              "at least two known views", point ? "point" : "line", i, seen,
@@ -616,6 +650,51 @@ ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, 
         }
     }
     requireFeatures(set.numPoints, set.numLines, minFeatures);
+    return set;
+}
+
+ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                              InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
+                              InputArray fixedViews, std::vector<int>& poseOfView,
+                              std::vector<CameraPose>& initialPoses)
+{
+    const int numViews = isArrayVector(Rs) ? (int)Rs.total() : 0;
+    ViewSet set = readPosedViews(points, lines, cameraMatrix, distCoeffs, Rs, ts, 0, "views", "one per view");
+    Mat fixed = fixedViews.getMat();
+    if (fixed.empty() || (int)fixed.total() != numViews || fixed.channels() != 1 ||
+        (fixed.depth() != CV_8U && fixed.depth() != CV_32S && fixed.depth() != CV_8S))
+        CV_Error_(Error::StsBadArg, ("fixedViews must hold %d values (CV_8U, CV_8S or CV_32S), one per view: nonzero "
+                                     "where the view's pose is fixed", numViews));
+    fixed.reshape(1, numViews).convertTo(fixed, CV_32S);
+    poseOfView.assign(numViews, -1);
+    initialPoses.clear();
+    int numFree = 0;
+    for (int v = 0; v < numViews; ++v)
+        if (fixed.at<int>(v) == 0)
+        {
+            initialPoses.push_back(set.views[v].pose);
+            set.views[v].estimated = true; // a camera of its own: mounted at the identity on its pose
+            set.views[v].pose = CameraPose();
+            poseOfView[v] = numFree++;
+        }
+    if (numFree == 0)
+        CV_Error(Error::StsBadArg, "fixedViews: every view is fixed: nothing to refine");
+    if (numViews - numFree < 2 || !knownCentresDiffer(set))
+        CV_Error(Error::StsBadArg, "fixedViews: at least two fixed views at distinct centres are required: they fix "
+                                   "the world frame and the scale");
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const bool point = kind == 0;
+        for (int i = 0; i < (point ? set.numPoints : set.numLines); ++i)
+        {
+            const int seen = viewsSeeing(set, point, i, 0, numViews);
+            if (seen < 2)
+                CV_Error_(Error::StsBadArg, ("%s %d is seen in %d view(s) of %s: every feature must be seen in at "
+                                             "least two views", point ? "point" : "line", i, seen,
+                                             point ? "points" : "lines"));
+        }
+    }
+    requireFeatures(set.numPoints, set.numLines, 1);
     return set;
 }
 

@@ -48,6 +48,20 @@ views, not all at one centre; every feature seen in the new view and in at least
 ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
                            InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, int minFeatures);
 
+/** Several poses refined together (refinePosesMultiView()): views = {view 0, ..., view V-1}, all with
+the world poses Rs[k], ts[k]; @p fixedViews (V values, nonzero: fixed) says which stay. The free
+views are marked estimated, each a camera of its own, and @p poseOfView receives the index of each
+free view's pose among the free views (-1 for a fixed view), @p initialPoses their poses from
+@p Rs, @p ts in that order. @p points and @p lines hold one array
+per view as in readMultiViewInput(). Validation as readThreeViewInput(), plus: at least one free
+view, at least two fixed views at distinct centres, every feature seen in at least two views.
+The returned set's free views hold the identity as their mount.
+*/
+ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                              InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
+                              InputArray fixedViews, std::vector<int>& poseOfView,
+                              std::vector<CameraPose>& initialPoses);
+
 constexpr double kHomogeneousLineHalfLength = 50.0;
 
 /** A rotation given as a 3x3 matrix or a Rodrigues vector (CV_32F/CV_64F), checked (finite,

@@ -129,6 +129,51 @@ void writeRotation(const Eigen::Matrix3d& E, const RotationForm& form, OutputArr
     rvec.reshape(1, form.rows).copyTo(out);
 }
 
+//! @p poses into vectors of 3x3 rotations and 3x1 translations (CV_64F), where wanted.
+void writePoseVectors(const std::vector<CameraPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts)
+{
+    const int n = (int)poses.size();
+    if (Rs.needed())
+    {
+        CV_Assert(Rs.kind() == _InputArray::STD_VECTOR_MAT && "Rs must be a std::vector<Mat>");
+        Rs.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            Rs.getMatRef(i) = toMat(poses[i].R);
+    }
+    if (ts.needed())
+    {
+        CV_Assert(ts.kind() == _InputArray::STD_VECTOR_MAT && "ts must be a std::vector<Mat>");
+        ts.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            ts.getMatRef(i) = toMat(poses[i].t);
+    }
+}
+
+//! The refined structure as refinePoseLinePoint() returns it, where wanted.
+void writeStructure(const RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
+                    OutputArray lines3d)
+{
+    if (points3d.needed())
+    {
+        points3d.create(numPoints, 3, CV_64F);
+        Mat out = points3d.getMat();
+        for (int i = 0; i < numPoints; ++i)
+            for (int c = 0; c < 3; ++c)
+                out.at<double>(i, c) = structure.points[i](c);
+    }
+    if (lines3d.needed())
+    {
+        lines3d.create(numLines, 6, CV_64F);
+        Mat out = lines3d.getMat();
+        for (int i = 0; i < numLines; ++i)
+            for (int c = 0; c < 3; ++c)
+            {
+                out.at<double>(i, c) = structure.lineEnds[2 * i](c);
+                out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
+            }
+    }
+}
+
 } // namespace
 
 void checkPoseMethod(int method)
@@ -158,20 +203,10 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
     {
         writePose(ranked[0].pose.R, ranked[0].pose.t, R, t);
     }
-    if (Rs.needed())
-    {
-        CV_Assert(Rs.kind() == _InputArray::STD_VECTOR_MAT && "Rs must be a std::vector<Mat>");
-        Rs.create(n, 1, CV_64F, -1, true);
-        for (int i = 0; i < n; ++i)
-            Rs.getMatRef(i) = toMat(ranked[i].pose.R);
-    }
-    if (ts.needed())
-    {
-        CV_Assert(ts.kind() == _InputArray::STD_VECTOR_MAT && "ts must be a std::vector<Mat>");
-        ts.create(n, 1, CV_64F, -1, true);
-        for (int i = 0; i < n; ++i)
-            ts.getMatRef(i) = toMat(ranked[i].pose.t);
-    }
+    std::vector<CameraPose> rankedPoses(n);
+    for (int i = 0; i < n; ++i)
+        rankedPoses[i] = ranked[i].pose;
+    writePoseVectors(rankedPoses, Rs, ts);
     if (reprojectionErrors.needed())
     {
         Mat errors(n, 1, CV_64F);
@@ -224,25 +259,22 @@ double refineInitialPose(const ViewSet& views, InputOutputArray R, InputOutputAr
 
     writeRotation(pose.R, form, R);
     Mat(Matx31d(pose.t.x(), pose.t.y(), pose.t.z())).copyTo(t);
-    if (points3d.needed())
-    {
-        points3d.create(views.numPoints, 3, CV_64F);
-        Mat out = points3d.getMat();
-        for (int i = 0; i < views.numPoints; ++i)
-            for (int c = 0; c < 3; ++c)
-                out.at<double>(i, c) = structure.points[i](c);
-    }
-    if (lines3d.needed())
-    {
-        lines3d.create(views.numLines, 6, CV_64F);
-        Mat out = lines3d.getMat();
-        for (int i = 0; i < views.numLines; ++i)
-            for (int c = 0; c < 3; ++c)
-            {
-                out.at<double>(i, c) = structure.lineEnds[2 * i](c);
-                out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
-            }
-    }
+    writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+    return summary.finalRms;
+}
+
+double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
+                          const RefineParams& params, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                          OutputArray points3d, OutputArray lines3d)
+{
+    checkRefineParams(params);
+    RefinedStructure structure;
+    const RefinementSummary summary = refinePosesAndStructure(views, poseOfView, poses, params, &structure);
+    std::vector<CameraPose> all(views.views.size());
+    for (size_t v = 0; v < all.size(); ++v)
+        all[v] = poseOfView[v] >= 0 ? poses[poseOfView[v]] : views.views[v].pose;
+    writePoseVectors(all, Rs, ts);
+    writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
     return summary.finalRms;
 }
 

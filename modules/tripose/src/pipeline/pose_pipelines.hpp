@@ -37,6 +37,13 @@ int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSol
 double refineInitialPose(const ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
                          OutputArray points3d, OutputArray lines3d);
 
+/** refinePosesMultiView(): refines @p poses (the free views' poses, indexed by @p poseOfView, see
+readSeveralPosesInput()) and the structure over every view, validates @p params, writes every view's
+pose (the fixed ones unchanged) and the structure. */
+double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
+                          const RefineParams& params, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                          OutputArray points3d, OutputArray lines3d);
+
 //! Throws cv::Exception naming @p method unless it is POSE_LINEAR or POSE_LINEAR_REFINE.
 void checkPoseMethod(int method);
 

@@ -47,7 +47,7 @@ struct CostSum
 
 struct Estimate
 {
-    CameraPose pose;
+    std::vector<CameraPose> poses; //!< The estimated poses (ViewAtPose: the cameras views are mounted on).
     std::vector<Eigen::Vector3d> points;
     std::vector<OrthonormalLine> lines;
 };
@@ -59,31 +59,37 @@ struct SelectedFeature
     bool initialized = false; //!< Has a finite structure estimate (for the output).
 };
 
-/** Levenberg-Marquardt over the estimated camera's pose and the structure of the selected features,
-every view of the ViewSet contributing the observations it has (observation_model.hpp), the known
-views fixed. The normal equations are solved with the structure eliminated (schur_system.hpp).
+/** Levenberg-Marquardt over the estimated poses and the structure of the selected features, every
+view of the ViewSet contributing the observations it has (observation_model.hpp), the known views
+fixed. Each estimated view is mounted on one of the estimated poses (@p poseOfView; -1 for a known
+view); P is 6 for one pose, Eigen::Dynamic for several. The normal equations are solved with the
+structure eliminated (schur_system.hpp).
 */
+template <int P>
 class Refiner
 {
 public:
-    Refiner(const ViewSet& set, const RefineParams& params, const std::vector<int>* pointIndices,
-            const std::vector<int>* lineIndices)
-        : set_(set), loss_(params.loss, params.lossScale), maxIterations_(params.maxIterations),
-          tolerance_(params.tolerance), minDepth_(1e-6 * set.knownBaseline()), views_(set.views.size())
+    Refiner(const ViewSet& set, const std::vector<int>& poseOfView, int numPoses, const RefineParams& params,
+            const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
+        : set_(set), poseOfView_(poseOfView), numPoses_(numPoses), loss_(params.loss, params.lossScale),
+          maxIterations_(params.maxIterations), tolerance_(params.tolerance),
+          minDepth_(1e-6 * set.knownBaseline()), views_(set.views.size())
     {
         select(pointIndices, set.numPoints, points_);
         select(lineIndices, set.numLines, lines_);
-        // Known views never move: set once. setPose() updates the others.
+        // Known views never move: set once. setPoses() updates the others.
         for (size_t v = 0; v < views_.size(); ++v)
             views_[v].set(set_.views[v], CameraPose());
     }
 
-    RefinementSummary run(CameraPose& pose, RefinedStructure* structure)
+    RefinementSummary run(std::vector<CameraPose>& poses, RefinedStructure* structure)
     {
         RefinementSummary summary;
         Estimate current;
-        current.pose = pose;
-        const bool finitePose = pose.allFinite();
+        current.poses = poses;
+        bool finitePose = true;
+        for (const CameraPose& pose : poses)
+            finitePose = finitePose && pose.allFinite();
         if (finitePose)
             initializeStructure(current);
         else
@@ -101,7 +107,7 @@ public:
         }
         summary.initialRms = cost.rms();
 
-        system_.resize(points_.size(), lines_.size());
+        system_.resize(points_.size(), lines_.size(), numPoses_);
         Estimate trial = current;
         double lambda = 1e-4, nu = 2;
         bool linearized = false;
@@ -144,7 +150,7 @@ public:
             }
         }
         summary.finalRms = cost.rms();
-        pose = current.pose;
+        poses = current.poses;
         exportStructure(current, structure);
         return summary;
     }
@@ -173,11 +179,17 @@ private:
         }
     }
 
-    void setPose(const CameraPose& pose)
+    void setPoses(const std::vector<CameraPose>& poses)
     {
         for (size_t v = 0; v < views_.size(); ++v)
-            if (set_.views[v].estimated)
-                views_[v].set(set_.views[v], pose);
+            if (poseOfView_[v] >= 0)
+                views_[v].set(set_.views[v], poses[poseOfView_[v]]);
+    }
+
+    //! The estimated pose that view @p v moves with (any pose for a known view: it is not read).
+    const CameraPose& mountOf(const Estimate& e, size_t v) const
+    {
+        return e.poses[std::max(poseOfView_[v], 0)];
     }
 
     /** Initial structure from every view that sees the feature, the estimated ones at the initial
@@ -186,7 +198,7 @@ private:
     of the cost. */
     void initializeStructure(Estimate& e)
     {
-        setPose(e.pose);
+        setPoses(e.poses);
         std::vector<CameraPose> poses(views_.size());
         for (size_t v = 0; v < views_.size(); ++v)
             poses[v] = views_[v].pose;
@@ -229,7 +241,7 @@ private:
                 const View& view = set_.views[v];
                 Eigen::Vector2d r;
                 imaged = !view.seesLine(i) ||
-                         lineObservation(views_[v], e.pose, fitted, view.lineEnds[2 * i], view.lineEnds[2 * i + 1], r);
+                         lineObservation(views_[v], mountOf(e, v), fitted, view.lineEnds[2 * i], view.lineEnds[2 * i + 1], r);
             }
             lines_[k].used = imaged;
         }
@@ -239,7 +251,7 @@ private:
     //! line through a centre) or a value is not finite.
     bool evaluate(const Estimate& e, CostSum& cost)
     {
-        setPose(e.pose);
+        setPoses(e.poses);
         cost = CostSum();
         Eigen::Vector2d r;
         for (size_t k = 0; k < points_.size(); ++k)
@@ -247,11 +259,12 @@ private:
             if (!points_[k].used)
                 continue;
             const int i = points_[k].index;
-            for (const ViewAtPose& v : views_)
+            for (size_t vi = 0; vi < views_.size(); ++vi)
             {
+                const ViewAtPose& v = views_[vi];
                 if (!v.view->seesPoint(i))
                     continue;
-                if (!pointObservation(v, e.pose, e.points[k], v.view->points[i], minDepth_, r))
+                if (!pointObservation(v, mountOf(e, vi), e.points[k], v.view->points[i], minDepth_, r))
                     return false;
                 const double s = r.squaredNorm();
                 cost.add(s, loss_.evaluate(s));
@@ -263,11 +276,12 @@ private:
                 continue;
             const int i = lines_[k].index;
             const PluckerLine L = e.lines[k].plucker();
-            for (const ViewAtPose& v : views_)
+            for (size_t vi = 0; vi < views_.size(); ++vi)
             {
+                const ViewAtPose& v = views_[vi];
                 if (!v.view->seesLine(i))
                     continue;
-                if (!lineObservation(v, e.pose, L, v.view->lineEnds[2 * i], v.view->lineEnds[2 * i + 1], r))
+                if (!lineObservation(v, mountOf(e, vi), L, v.view->lineEnds[2 * i], v.view->lineEnds[2 * i + 1], r))
                     return false;
                 const double s = r.squaredNorm();
                 cost.add(s, loss_.evaluate(s));
@@ -279,7 +293,7 @@ private:
     //! The normal equations at @p e (which evaluate() accepted: every residual of a used feature is defined).
     void linearize(const Estimate& e)
     {
-        setPose(e.pose);
+        setPoses(e.poses);
         system_.clear();
         Eigen::Vector2d r;
         Matrix23d Jpoint;
@@ -291,15 +305,17 @@ private:
             if (!points_[k].used)
                 continue;
             const int i = points_[k].index;
-            StructureBlock<3>& block = system_.begin(system_.point(k));
-            for (const ViewAtPose& v : views_)
+            StructureBlock<3, P>& block = system_.begin(system_.point(k));
+            for (size_t vi = 0; vi < views_.size(); ++vi)
             {
+                const ViewAtPose& v = views_[vi];
                 if (!v.view->seesPoint(i))
                     continue;
-                if (!pointObservation(v, e.pose, e.points[k], v.view->points[i], minDepth_, r, &Jpoint, &Jpose))
+                if (!pointObservation(v, mountOf(e, vi), e.points[k], v.view->points[i], minDepth_, r, &Jpoint,
+                                      &Jpose))
                     continue;
                 loss_.evaluate(r.squaredNorm(), &weight);
-                system_.add<3>(block, Jpoint, v.moves ? &Jpose : nullptr, r, weight);
+                system_.template add<3>(block, Jpoint, v.moves ? &Jpose : nullptr, r, weight, poseOfView_[vi]);
             }
         }
         for (size_t k = 0; k < lines_.size(); ++k)
@@ -309,38 +325,46 @@ private:
             const int i = lines_[k].index;
             const PluckerLine L = e.lines[k].plucker();
             const Eigen::Matrix<double, 6, 4> chart = e.lines[k].pluckerJacobian();
-            StructureBlock<4>& block = system_.begin(system_.line(k));
-            for (const ViewAtPose& v : views_)
+            StructureBlock<4, P>& block = system_.begin(system_.line(k));
+            for (size_t vi = 0; vi < views_.size(); ++vi)
             {
+                const ViewAtPose& v = views_[vi];
                 if (!v.view->seesLine(i))
                     continue;
-                if (!lineObservation(v, e.pose, L, v.view->lineEnds[2 * i], v.view->lineEnds[2 * i + 1], r, &chart,
-                                     &Jline, &Jpose))
+                if (!lineObservation(v, mountOf(e, vi), L, v.view->lineEnds[2 * i], v.view->lineEnds[2 * i + 1], r,
+                                     &chart, &Jline, &Jpose))
                     continue;
                 loss_.evaluate(r.squaredNorm(), &weight);
-                system_.add<4>(block, Jline, v.moves ? &Jpose : nullptr, r, weight);
+                system_.template add<4>(block, Jline, v.moves ? &Jpose : nullptr, r, weight, poseOfView_[vi]);
             }
         }
     }
 
     bool applyStep(const Estimate& from, Estimate& to) const
     {
-        const Vector6d& step = system_.poseStep();
-        const Eigen::Vector3d omega = step.head<3>();
-        const double angle = omega.norm();
-        to.pose.R = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, omega / angle) * from.pose.R) : from.pose.R;
-        to.pose.t = from.pose.t + step.tail<3>();
+        bool finite = true;
+        for (int p = 0; p < numPoses_; ++p)
+        {
+            const Vector6d step = system_.poseStep().template segment<6>(6 * p);
+            const Eigen::Vector3d omega = step.head<3>();
+            const double angle = omega.norm();
+            const CameraPose& a = from.poses[p];
+            CameraPose& b = to.poses[p];
+            b.R = angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, omega / angle) * a.R) : a.R;
+            b.t = a.t + step.tail<3>();
+            finite = finite && b.allFinite();
+        }
         for (size_t k = 0; k < points_.size(); ++k)
         {
-            const StructureBlock<3>& block = system_.point(k);
+            const StructureBlock<3, P>& block = system_.point(k);
             to.points[k] = block.active ? Eigen::Vector3d(from.points[k] + block.step) : from.points[k];
         }
         for (size_t k = 0; k < lines_.size(); ++k)
         {
-            const StructureBlock<4>& block = system_.line(k);
+            const StructureBlock<4, P>& block = system_.line(k);
             to.lines[k] = block.active ? from.lines[k].plus(block.step) : from.lines[k];
         }
-        return to.pose.allFinite();
+        return finite;
     }
 
     void exportStructure(const Estimate& e, RefinedStructure* out) const
@@ -363,11 +387,12 @@ private:
                 continue;
             // The end points as the first view that sees the line observed them.
             const int i = lines_[k].index;
-            for (const View& view : set_.views)
+            for (size_t v = 0; v < set_.views.size(); ++v)
             {
+                const View& view = set_.views[v];
                 if (!view.seesLine(i))
                     continue;
-                const CameraPose viewPose = view.poseFor(e.pose);
+                const CameraPose viewPose = view.poseFor(mountOf(e, v));
                 for (int end = 0; end < 2; ++end)
                 {
                     const Eigen::Vector3d ray = viewPose.R.transpose() * view.calibratedLineEnd(i, end).homogeneous();
@@ -381,13 +406,15 @@ private:
     }
 
     const ViewSet& set_;
+    const std::vector<int> poseOfView_;
+    const int numPoses_;
     RobustLossFunction loss_;
     int maxIterations_;
     double tolerance_;
     double minDepth_;
     std::vector<ViewAtPose> views_;
     std::vector<SelectedFeature> points_, lines_;
-    SchurSystem system_;
+    SchurSystem<P> system_;
 };
 
 } // namespace
@@ -410,8 +437,25 @@ RefinementSummary refinePoseAndStructure(const ViewSet& set, CameraPose& pose, c
                                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
                                          RefinedStructure* structure)
 {
-    Refiner refiner(set, params, pointIndices, lineIndices);
-    return refiner.run(pose, structure);
+    std::vector<int> poseOfView(set.views.size());
+    for (size_t v = 0; v < set.views.size(); ++v)
+        poseOfView[v] = set.views[v].estimated ? 0 : -1;
+    Refiner<6> refiner(set, poseOfView, 1, params, pointIndices, lineIndices);
+    std::vector<CameraPose> poses(1, pose);
+    const RefinementSummary summary = refiner.run(poses, structure);
+    pose = poses[0];
+    return summary;
+}
+
+RefinementSummary refinePosesAndStructure(const ViewSet& set, const std::vector<int>& poseOfView,
+                                          std::vector<CameraPose>& poses, const RefineParams& params,
+                                          RefinedStructure* structure)
+{
+    CV_Assert(poseOfView.size() == set.views.size());
+    for (size_t v = 0; v < set.views.size(); ++v)
+        CV_Assert(set.views[v].estimated == (poseOfView[v] >= 0) && poseOfView[v] < (int)poses.size());
+    Refiner<Eigen::Dynamic> refiner(set, poseOfView, (int)poses.size(), params, nullptr, nullptr);
+    return refiner.run(poses, structure);
 }
 
 } // namespace detail

@@ -52,6 +52,17 @@ RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, 
                                          const std::vector<int>* lineIndices = nullptr,
                                          RefinedStructure* structure = nullptr);
 
+/** Maximum-likelihood refinement of several poses and the structure (a bundle adjustment with some
+views fixed), as refinePoseAndStructure() over every feature of @p set: view v moves with pose
+poseOfView[v] of @p poses (refined in place), at the mount set.views[v].pose (the identity for a
+camera of its own), or is known when poseOfView[v] is -1. set.views[v].estimated must say the same.
+The known views fix the gauge: the caller makes sure that they do (two known views at distinct
+centres seeing shared features fix the world frame and the scale).
+*/
+RefinementSummary refinePosesAndStructure(const ViewSet& set, const std::vector<int>& poseOfView,
+                                          std::vector<CameraPose>& poses, const RefineParams& params,
+                                          RefinedStructure* structure = nullptr);
+
 //! Throws cv::Exception (StsBadArg) naming the first out-of-range field of @p params, called @p name.
 void checkRefineParams(const RefineParams& params, const char* name = "params");
 

@@ -12,6 +12,8 @@
 #include <Eigen/Dense>
 #include <Eigen/StdVector>
 
+#include "opencv2/core/base.hpp"
+
 namespace cv {
 namespace tripose {
 namespace detail {
@@ -19,13 +21,14 @@ namespace detail {
 typedef Eigen::Matrix<double, 6, 1> Vector6d;
 typedef Eigen::Matrix<double, 6, 6> Matrix6d;
 
-//! The normal-equation pieces of one feature whose structure has D parameters.
-template <int D>
+/** The normal-equation pieces of one feature whose structure has D parameters, in a system of
+P pose parameters (6 per pose: 6 for one camera, Eigen::Dynamic for several). */
+template <int D, int P = 6>
 struct StructureBlock
 {
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
     Eigen::Matrix<double, D, D> V;    //!< Structure-structure block J_s^T w J_s.
-    Eigen::Matrix<double, 6, D> W;    //!< Pose-structure block J_p^T w J_s.
+    Eigen::Matrix<double, P, D> W;    //!< Pose-structure block J_p^T w J_s.
     Eigen::Matrix<double, D, 1> g;    //!< Structure gradient J_s^T w r.
     Eigen::Matrix<double, D, D> Vinv; //!< Inverse of the damped V (set per damping value).
     Eigen::Matrix<double, D, 1> diag; //!< Marquardt scaling of the damping.
@@ -33,37 +36,54 @@ struct StructureBlock
     bool active = false;              //!< Takes part in the system (else: no step).
 };
 
-/** Damped Gauss-Newton normal equations of one pose (6 parameters) and many independent structure
-blocks (3 per point, 4 per line), solved with every structure block eliminated (Schur complement
-to a 6x6 system), so that a step costs time linear in the number of features.
+/** Damped Gauss-Newton normal equations of the poses (6 parameters each: P = 6 for one pose, or
+Eigen::Dynamic for any number) and many independent structure blocks (3 per point, 4 per line),
+solved with every structure block eliminated (Schur complement to a system in the poses alone), so
+that a step costs time linear in the number of features.
 
 Fill it with clear() and add(); solve() for a damping value; read the pose step and each block's
 step. The damping is Marquardt's (lambda times the diagonal), so the step does not depend on the
-units of the parameters.
+units of the parameters. An observation depends on one pose at most: the poses are coupled only
+through the structure they share.
 */
+template <int P = 6>
 class SchurSystem
 {
 public:
-    void resize(size_t points, size_t lines)
+    typedef Eigen::Matrix<double, P, P> PoseMatrix;
+    typedef Eigen::Matrix<double, P, 1> PoseVector;
+
+    //! Sizes the system for @p points and @p lines structure blocks and @p poses poses (1 when P = 6).
+    void resize(size_t points, size_t lines, int poses = 1)
     {
+        CV_DbgAssert(P == Eigen::Dynamic || 6 * poses == P);
+        const int n = 6 * poses;
         points_.resize(points);
         lines_.resize(lines);
+        for (StructureBlock<3, P>& b : points_)
+            b.W.resize(n, 3);
+        for (StructureBlock<4, P>& b : lines_)
+            b.W.resize(n, 4);
+        U_.resize(n, n);
+        gPose_.resize(n);
+        poseDiag_.resize(n);
+        poseStep_.resize(n);
     }
 
-    //! Zeroes the pose block and marks every structure block inactive.
+    //! Zeroes the pose blocks and marks every structure block inactive.
     void clear()
     {
         U_.setZero();
         gPose_.setZero();
-        for (StructureBlock<3>& b : points_)
+        for (StructureBlock<3, P>& b : points_)
             b.active = false;
-        for (StructureBlock<4>& b : lines_)
+        for (StructureBlock<4, P>& b : lines_)
             b.active = false;
     }
 
     //! Starts the structure block of a feature (zeroed, active).
     template <int D>
-    StructureBlock<D>& begin(StructureBlock<D>& block)
+    StructureBlock<D, P>& begin(StructureBlock<D, P>& block)
     {
         block.V.setZero();
         block.W.setZero();
@@ -71,26 +91,27 @@ public:
         block.active = true;
         return block;
     }
-    StructureBlock<3>& point(size_t k) { return points_[k]; }
-    StructureBlock<4>& line(size_t k) { return lines_[k]; }
-    const StructureBlock<3>& point(size_t k) const { return points_[k]; }
-    const StructureBlock<4>& line(size_t k) const { return lines_[k]; }
+    StructureBlock<3, P>& point(size_t k) { return points_[k]; }
+    StructureBlock<4, P>& line(size_t k) { return lines_[k]; }
+    const StructureBlock<3, P>& point(size_t k) const { return points_[k]; }
+    const StructureBlock<4, P>& line(size_t k) const { return lines_[k]; }
 
     /** Adds one observation with residual @p r, IRLS weight @p weight, d(r)/d(structure) @p Js and,
-    when the observation depends on the pose, d(r)/d(pose) @p Jp.
+    when the observation depends on pose @p pose, d(r)/d(that pose) @p Jp.
     */
     template <int D>
-    void add(StructureBlock<D>& block, const Eigen::Matrix<double, 2, D>& Js, const Eigen::Matrix<double, 2, 6>* Jp,
-             const Eigen::Vector2d& r, double weight)
+    void add(StructureBlock<D, P>& block, const Eigen::Matrix<double, 2, D>& Js, const Eigen::Matrix<double, 2, 6>* Jp,
+             const Eigen::Vector2d& r, double weight, int pose = 0)
     {
         const Eigen::Matrix<double, 2, D> wJs = weight * Js;
         block.V.noalias() += Js.transpose() * wJs;
         block.g.noalias() += wJs.transpose() * r;
         if (Jp)
         {
-            block.W.noalias() += Jp->transpose() * wJs;
-            U_.noalias() += Jp->transpose() * (weight * *Jp);
-            gPose_.noalias() += Jp->transpose() * (weight * r);
+            const int o = 6 * pose;
+            block.W.template middleRows<6>(o).noalias() += Jp->transpose() * wJs;
+            U_.template block<6, 6>(o, o).noalias() += Jp->transpose() * (weight * *Jp);
+            gPose_.template segment<6>(o).noalias() += Jp->transpose() * (weight * r);
         }
     }
 
@@ -100,29 +121,30 @@ public:
     */
     bool solve(double lambda, double& predicted)
     {
-        poseDiag_ = dampingDiagonal<6>(U_);
-        Matrix6d S = U_;
+        poseDiag_ = dampingDiagonal<P>(U_);
+        PoseMatrix S = U_;
         S.diagonal() += lambda * poseDiag_;
-        Vector6d b = -gPose_;
-        for (StructureBlock<3>& block : points_)
+        PoseVector b = -gPose_;
+        for (StructureBlock<3, P>& block : points_)
             eliminate<3>(block, lambda, S, b);
-        for (StructureBlock<4>& block : lines_)
+        for (StructureBlock<4, P>& block : lines_)
             eliminate<4>(block, lambda, S, b);
-        Eigen::LDLT<Matrix6d> ldlt(S);
+        Eigen::LDLT<PoseMatrix> ldlt(S);
         if (ldlt.info() != Eigen::Success)
             return false;
         poseStep_ = ldlt.solve(b);
         if (!poseStep_.allFinite())
             return false;
         predicted = poseStep_.dot(lambda * poseDiag_.cwiseProduct(poseStep_) - gPose_);
-        for (StructureBlock<3>& block : points_)
+        for (StructureBlock<3, P>& block : points_)
             predicted += backSubstitute<3>(block, lambda, poseStep_);
-        for (StructureBlock<4>& block : lines_)
+        for (StructureBlock<4, P>& block : lines_)
             predicted += backSubstitute<4>(block, lambda, poseStep_);
         return std::isfinite(predicted);
     }
 
-    const Vector6d& poseStep() const { return poseStep_; }
+    //! The step of all poses (6 per pose: omega, dt).
+    const PoseVector& poseStep() const { return poseStep_; }
 
 private:
     template <typename T>
@@ -139,7 +161,7 @@ private:
     }
 
     template <int D>
-    static void eliminate(StructureBlock<D>& block, double lambda, Matrix6d& S, Vector6d& b)
+    static void eliminate(StructureBlock<D, P>& block, double lambda, PoseMatrix& S, PoseVector& b)
     {
         if (!block.active)
             return;
@@ -158,14 +180,14 @@ private:
             block.Vinv.setZero();
             return;
         }
-        const Eigen::Matrix<double, 6, D> Y = block.W * block.Vinv;
+        const Eigen::Matrix<double, P, D> Y = block.W * block.Vinv;
         S.noalias() -= Y * block.W.transpose();
         b.noalias() += Y * block.g;
     }
 
     //! The block's step given the pose step; returns its share of the predicted decrease.
     template <int D>
-    static double backSubstitute(StructureBlock<D>& block, double lambda, const Vector6d& poseStep)
+    static double backSubstitute(StructureBlock<D, P>& block, double lambda, const PoseVector& poseStep)
     {
         if (!block.active)
         {
@@ -176,10 +198,10 @@ private:
         return block.step.dot(lambda * block.diag.cwiseProduct(block.step) - block.g);
     }
 
-    AlignedVector<StructureBlock<3>> points_;
-    AlignedVector<StructureBlock<4>> lines_;
-    Matrix6d U_;
-    Vector6d gPose_, poseDiag_, poseStep_;
+    AlignedVector<StructureBlock<3, P>> points_;
+    AlignedVector<StructureBlock<4, P>> lines_;
+    PoseMatrix U_;
+    PoseVector gPose_, poseDiag_, poseStep_;
 };
 
 } // namespace detail

@@ -119,6 +119,50 @@ CV_EXPORTS_W double refinePoseMultiView(
 
 //! @}
 
+/** @brief Maximum-likelihood refinement of several views' poses and the structure together (a bundle
+adjustment in which some views stay fixed), for the local refinement of a tracker's recent frames.
+
+V views at world poses \f$[R_k | t_k]\f$ (k = 0..V-1), each mapping a world point \f$X\f$ to
+\f$x \sim K_k(R_k X + t_k)\f$. The views whose @p fixedViews entry is zero are refined together with
+the points and lines (Levenberg-Marquardt, structure eliminated per feature, as in
+refinePoseMultiView()); the others stay where they are. The fixed views fix the world frame and the
+metric scale: at least two of them, at distinct centres. Each feature contributes its residuals in
+every view that sees it, and must be seen by at least two views.
+
+A free view that sees fewer features than determine its pose (three points, or four features of any
+mix in general position) is held near its initial pose by the damping only; give such views as fixed.
+The cost is the one of refinePoseMultiView(), so the refined poses of a problem whose only free view
+is the last one agree with refinePoseMultiView()'s.
+
+@param points One array per view (Nx2 1-channel or 1xN/Nx1 2-channel, CV_32F or CV_64F, pixels), the
+same N rows in every view, NaN rows where a view does not see a point, an empty array where it sees
+none. An empty vector means no points.
+@param lines One array per view likewise: Mx4 segments or Mx3 homogeneous lines (one kind in all views).
+@param cameraMatrix One 3x3 intrinsic matrix shared by every view, or a vector of V.
+@param distCoeffs Distortion coefficients, one vector or V; empty for none.
+@param Rs Initial world rotations of the V views (3x3 or Rodrigues, CV_32F/CV_64F); the fixed ones' are their poses.
+@param ts Initial world translations of the V views (3 elements each).
+@param fixedViews V values (CV_8U, CV_8S or CV_32S): nonzero where the view's pose is fixed.
+@param refinedRs Output: V 3x3 CV_64F rotations, the free views' refined, the fixed views' as given
+(as the nearest exact rotation, like every input rotation).
+@param refinedTs Output: V 3x1 CV_64F translations likewise.
+@param params See RefineParams.
+@param points3d Optional output: Nx3 CV_64F refined points in the world frame.
+@param lines3d Optional output: Mx6 CV_64F, two points of each refined line (see refinePoseMultiView()).
+@return The RMS reprojection error (px) at the refined estimate over every residual of the features
+that enter the cost; +inf when none does (poses then unchanged).
+@throws cv::Exception naming the argument for the input errors of refinePoseMultiView(), when every
+view is fixed, fewer than two fixed views or fixed views at one centre, or a feature seen by fewer
+than two views.
+*/
+CV_EXPORTS_W double refinePosesMultiView(
+    InputArrayOfArrays points, InputArrayOfArrays lines,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
+    InputArrayOfArrays Rs, InputArrayOfArrays ts, InputArray fixedViews,
+    OutputArrayOfArrays refinedRs, OutputArrayOfArrays refinedTs,
+    const RefineParams& params = RefineParams(),
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+
 } // namespace tripose
 } // namespace cv
 

@@ -253,6 +253,44 @@ def make_rig_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, missing
     return scene
 
 
+def make_multiview_scene(num_known, num_points, num_lines, seed, outliers=0.0):
+    """Several known views and a new one around a 10 m cube (cameras about 20 m away, f = 800 px, world
+    frame the cube's), noise-free. Every feature is seen by the new view and a random subset of at
+    least two known views; a row of NaN where a view does not see it. A fraction `outliers` of the
+    points get a new-view observation far from the true one."""
+    rng = np.random.default_rng(seed)
+    K = np.array([[800.0, 0, 320], [0, 800.0, 240], [0, 0, 1]])
+    views = num_known + 1
+    Rs, ts = [], []
+    for _ in range(views):
+        direction = rng.normal(size=3)
+        centre = 20.0 * direction / np.linalg.norm(direction)
+        R = look_at_origin(centre, rng.uniform(0, 2 * np.pi))
+        Rs.append(R)
+        ts.append((-R @ centre).reshape(3, 1))
+    scene = Scene()
+    scene.K, scene.Rs, scene.ts = K, Rs[:num_known], ts[:num_known]
+    scene.R, scene.t = Rs[num_known], ts[num_known]
+    points3d = rng.uniform(-5.0, 5.0, size=(num_points, 3))
+    ends = rng.uniform(-5.0, 5.0, size=(num_lines, 6))
+    scene.points = [np.full((num_points, 2), np.nan) for _ in range(views)]
+    scene.lines = [np.full((num_lines, 4), np.nan) for _ in range(views)]
+    for kind, rows in ((0, num_points), (1, num_lines)):
+        for i in range(rows):
+            seen = list(rng.permutation(num_known)[:rng.integers(2, num_known + 1)]) + [num_known]
+            for v in seen:
+                if kind == 0:
+                    scene.points[v][i] = project(K, Rs[v], ts[v], points3d[i:i + 1])[0][0]
+                else:
+                    scene.lines[v][i] = np.hstack([project(K, Rs[v], ts[v], ends[i:i + 1, :3])[0][0],
+                                                   project(K, Rs[v], ts[v], ends[i:i + 1, 3:])[0][0]])
+    scene.pointInliers = np.ones(num_points, dtype=np.uint8)
+    for i in rng.permutation(num_points)[:int(round(outliers * num_points))]:
+        scene.pointInliers[i] = 0
+        scene.points[num_known][i] += rng.choice([-1, 1], size=2) * rng.uniform(30, 80, size=2)
+    return scene
+
+
 def rig_args(scene, **changes):
     """The arguments of the stereo functions for a rig scene, with `changes` applied."""
     args = dict(points1=scene.points1, points2=scene.points2, points3=scene.points3, points4=scene.points4,
@@ -782,6 +820,68 @@ class tripose_test(NewOpenCVTests):
         expect_error('fewer_than_two_features', 'at least 2 features', one, ('linear', 'refine'))
         expect_error('fewer_than_two_features', 'at least 3 features', one, ('ransac',))
         expect_error('unknown_method', 'method', dict(method=3), ('linear',))
+
+    def test_multiview(self):
+        if not hasattr(cv.tripose, 'refinePosesMultiView'):
+            self.skipTest('the multi-view functions are not in this build of the module')
+        # Registration against four known views that each see a random subset of the features:
+        # exact without noise (linear and refined), the inliers found among gross outliers.
+        for seed in range(3):
+            scene = make_multiview_scene(4, 12, 12, seed)
+            what = 'seed %d' % seed
+            count, R, t = cv.tripose.estimatePoseMultiView(scene.points, scene.lines, scene.K, None, scene.Rs,
+                                                           scene.ts)[:3]
+            self.assertGreaterEqual(count, 1, what)
+            self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
+            rvec = cv.Rodrigues(scene.R)[0] + 0.01
+            rms, R1, t1 = cv.tripose.refinePoseMultiView(scene.points, scene.lines, scene.K, None, scene.Rs,
+                                                         scene.ts, rvec, scene.t + 0.2)[:3]
+            self.assertLess(rms, 1e-6, what)
+            self.check_pose(cv.Rodrigues(R1)[0], t1, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
+        scene = make_multiview_scene(4, 30, 10, 7, outliers=0.3)
+        params = cv.tripose.RansacParams()
+        params.seed = 1
+        inliers, R, t, point_mask, line_mask = cv.tripose.estimatePoseMultiViewRansac(
+            scene.points, scene.lines, scene.K, None, scene.Rs, scene.ts, params=params)
+        self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, 'robust')
+        np.testing.assert_array_equal(point_mask.ravel(), scene.pointInliers)
+        self.assertTrue(np.all(line_mask == 1))
+        try:
+            cv.tripose.estimatePoseMultiView(scene.points[:2] + scene.points[-1:], scene.lines[:2] + scene.lines[-1:],
+                                             scene.K, None, scene.Rs[:1], scene.ts[:1])
+            self.fail('one known view was accepted')
+        except cv.error as e:
+            self.assertTrue(names_argument(str(e), 'Rs'), str(e))
+
+    def test_multiview_several_poses(self):
+        if not hasattr(cv.tripose, 'refinePosesMultiView'):
+            self.skipTest('refinePosesMultiView is not in this build of the module')
+        # Views 0 and 1 fixed, the other known views and the new one moved off: the joint refinement
+        # returns every pose exactly; the fixed ones come back as given.
+        scene = make_multiview_scene(4, 20, 20, 11)
+        Rs = list(scene.Rs) + [scene.R]
+        ts = list(scene.ts) + [scene.t]
+        rng = np.random.default_rng(2)
+        start_R = [R if v < 2 else cv.Rodrigues(cv.Rodrigues(R)[0] + rng.uniform(-0.02, 0.02, (3, 1)))[0]
+                   for v, R in enumerate(Rs)]
+        start_t = [t if v < 2 else t + rng.uniform(-0.3, 0.3, (3, 1)) for v, t in enumerate(ts)]
+        fixed = np.array([1, 1, 0, 0, 0], np.uint8)
+        rms, refined_R, refined_t, points3d, lines3d = cv.tripose.refinePosesMultiView(
+            scene.points, scene.lines, scene.K, None, start_R, start_t, fixed)
+        self.assertLess(rms, 1e-6)
+        self.assertEqual(len(refined_R), 5)
+        self.assertEqual(points3d.shape, (20, 3))
+        self.assertEqual(lines3d.shape, (20, 6))
+        for v in range(5):
+            self.assertLess(rotation_error(refined_R[v], Rs[v]), EXACT_ROTATION_RAD, 'view %d' % v)
+            self.assertLess(translation_error(refined_t[v], ts[v]), EXACT_TRANSLATION, 'view %d' % v)
+        for bad, name in (([1, 0, 0, 0, 0], 'fixedViews'), ([1, 1, 1, 1, 1], 'fixedViews'), ([1, 1, 0], 'fixedViews')):
+            try:
+                cv.tripose.refinePosesMultiView(scene.points, scene.lines, scene.K, None, start_R, start_t,
+                                                np.array(bad, np.uint8))
+                self.fail('fixedViews %s was accepted' % bad)
+            except cv.error as e:
+                self.assertTrue(names_argument(str(e), name), str(e))
 
 if __name__ == '__main__':
     NewOpenCVTests.bootstrap()
