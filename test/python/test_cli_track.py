@@ -1,0 +1,120 @@
+"""End-to-end tests of `tripose_track` on the VGG sequences: the drift it reaches (bounds set from
+the figures of doc/tracking.md), the output file, the plot, the lost-frame status and the rejection
+of bad input (a clear message naming the file or argument, exit status 1, nothing written)."""
+import shutil
+import subprocess
+
+import cv2
+import numpy as np
+import pytest
+
+from tripose_tools import REPO, build_tool, read_matrices
+
+VGG = REPO / "test" / "data" / "vgg"
+
+
+def track(tmp_path, data, *options):
+    out = tmp_path / "track.yml"
+    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(data), "--output", str(out),
+                           *map(str, options)], capture_output=True, text=True, timeout=300)
+    return proc, out
+
+
+def drift(out):
+    fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
+    value = fs.getNode("drift_percent").real()
+    fs.release()
+    return value
+
+
+# Measured (doc/tracking.md): Model House 0.169 % at window 5, 0.103 % with the local adjustment;
+# the bounds leave half as much again for other OpenCV versions' rounding in RANSAC and refinement.
+@pytest.mark.parametrize("local_refine,bound", [(0, 0.25), (1, 0.16)])
+def test_model_house_drift(tmp_path, local_refine, bound):
+    proc, out = track(tmp_path, VGG / "Model-House", "--local-refine", local_refine)
+    assert proc.returncode == 0, proc.stderr
+    values = read_matrices(out, ["poses", "status", "rotation_error_deg"])
+    assert values["poses"].shape == (10, 12)
+    assert np.all(np.isfinite(values["poses"]))
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0] + [1] * 8)
+    for row in values["poses"]:
+        R = row[:9].reshape(3, 3)
+        np.testing.assert_allclose(R @ R.T, np.eye(3), atol=1e-9)
+    assert drift(out) < bound
+
+
+def test_plot_is_written(tmp_path):
+    plot = tmp_path / "trajectory.png"
+    proc, out = track(tmp_path, VGG / "Wadham-College", "--plot", plot)
+    assert proc.returncode == 0, proc.stderr
+    image = cv2.imread(str(plot))
+    assert image is not None and image.shape[0] > 100 and image.shape[1] > 100
+
+
+def copy_sequence(tmp_path, name):
+    target = tmp_path / name
+    shutil.copytree(VGG / name, target)
+    return target
+
+
+def test_frame_with_too_few_features_is_lost_and_tracking_resumes(tmp_path):
+    # Frame 2 of Wadham College keeps three lines and no points: fewer than the four features a
+    # registration needs. It is reported lost (status 2, NaN pose); frame 3 registers against
+    # frames 0 and 1.
+    data = copy_sequence(tmp_path, "Wadham-College")
+    for name, keep in (("nview-corners", 0), ("nview-lines", 3)):
+        rows = (data / name).read_text().splitlines()
+        kept = 0
+        edited = []
+        for row in rows:
+            cells = row.split()
+            if cells[2] != "*":
+                if kept < keep:
+                    kept += 1
+                else:
+                    cells[2] = "*"
+            edited.append(" ".join(cells))
+        (data / name).write_text("\n".join(edited) + "\n")
+    proc, out = track(tmp_path, data)
+    assert proc.returncode == 0, proc.stderr
+    values = read_matrices(out, ["poses", "status"])
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 2, 1, 1])
+    assert np.all(np.isnan(values["poses"][2]))
+    assert np.all(np.isfinite(values["poses"][3:]))
+    assert drift(out) < 0.3
+
+
+def expect_rejected(tmp_path, data, named, *options):
+    proc, out = track(tmp_path, data, *options)
+    assert proc.returncode == 1, proc.stdout
+    assert named in proc.stderr, proc.stderr
+    assert not out.exists()
+    assert not list(tmp_path.glob("track.yml*")), "a partial output file was left behind"
+
+
+def test_folder_without_a_sequence_is_rejected(tmp_path):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    expect_rejected(tmp_path, empty, str(empty))
+
+
+def test_missing_folder_is_rejected(tmp_path):
+    expect_rejected(tmp_path, tmp_path / "no-such-folder", "no-such-folder")
+
+
+def test_malformed_camera_file_is_rejected(tmp_path):
+    data = copy_sequence(tmp_path, "Wadham-College")
+    (data / "003.P").write_text("1 2 3\nnot a number\n")
+    expect_rejected(tmp_path, data, "003.P")
+
+
+def test_missing_correspondence_file_is_rejected(tmp_path):
+    data = copy_sequence(tmp_path, "Wadham-College")
+    (data / "nview-lines").unlink()
+    expect_rejected(tmp_path, data, "nview-lines")
+
+
+@pytest.mark.parametrize("option,value", [("--window", "1"), ("--local-refine", "2"), ("--method", "exact"),
+                                          ("--threshold", "-1")])
+def test_bad_arguments_are_named(tmp_path, option, value):
+    expect_rejected(tmp_path, VGG / "Wadham-College", option, option, value)
