@@ -95,4 +95,47 @@ TEST_P(Tripose_LinearNoise, median_errors_stay_at_the_measured_level)
 
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearNoise, testing::ValuesIn(kReferences));
 
+// Noisy planar structure, large motion (the facade case): image noise makes the structure of views
+// 1-2 slightly thick, and the general combinations then misread a kernel that is nearly as wide as
+// the exactly planar one; the planar closed form, tried beside them, gives the pose. Measured over
+// these 300 scenes: gross errors (no pose, or more than 10 degrees) in 11 (4P+4L) and 11 (10P+10L),
+// medians 0.823 and 0.469 deg (on tripose_evaluate's 300 scenes, doc/accuracy.md: 12 and 5, against
+// 106 and 97 without the closed form). The bounds allow half as many gross errors again and a 30 %
+// higher median.
+struct PlanarNoiseReference
+{
+    FeatureMix mix;
+    double medianRotationDeg;
+    int maxGross;
+};
+
+typedef testing::TestWithParam<PlanarNoiseReference> Tripose_LinearPlanarNoise;
+
+TEST_P(Tripose_LinearPlanarNoise, near_planar_structure_keeps_the_planar_closed_form)
+{
+    const PlanarNoiseReference ref = GetParam();
+    std::vector<double> rotation;
+    int gross = 0;
+    for (int seed = 0; seed < 300; ++seed)
+    {
+        tripose::support::SyntheticSceneParams params = sceneParams(ref.mix, tripose::support::MOTION_LARGE, 1.0, seed);
+        params.planar = true;
+        const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
+        std::vector<Mat> Rs, ts;
+        Mat R, t;
+        const double error = solveScene(s, Rs, ts, R, t) > 0 ? poseError(R, t, s.R, s.t).rotationDeg : 180.0;
+        rotation.push_back(error);
+        gross += error > 10.0 ? 1 : 0;
+    }
+    const double medianRotation = median(rotation);
+    std::cout << mixName(ref.mix) << " planar large sigma 1: median rotation " << medianRotation << " deg, "
+              << gross << "/300 gross" << std::endl;
+    EXPECT_LE(medianRotation, 1.3 * ref.medianRotationDeg);
+    EXPECT_LE(gross, ref.maxGross);
+}
+
+const PlanarNoiseReference kPlanarReferences[] = { { { 4, 4 }, 0.823, 17 }, { { 10, 10 }, 0.469, 17 } };
+
+INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearPlanarNoise, testing::ValuesIn(kPlanarReferences));
+
 }} // namespace

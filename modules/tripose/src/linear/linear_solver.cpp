@@ -133,14 +133,14 @@ int linearPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses,
     CameraPose scaledPose12 = set.pose12();
     scaledPose12.t /= translationScale;
     Eigen::Vector4d plane;
-    const bool planar = structurePlane(set, scaledPose12, pointIndices, lineIndices, plane);
+    const StructureFlatness flatness = structurePlane(set, scaledPose12, pointIndices, lineIndices, plane);
     return poseCandidatesFromRows(A, numPoints, numFeatures, translationScale, poses, options,
-                                  planar ? &plane : nullptr);
+                                  flatness != STRUCTURE_GENERAL ? &plane : nullptr, flatness);
 }
 
 int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
                            std::vector<CameraPose>& poses, const CandidateOptions& options,
-                           const Eigen::Vector4d* structurePlane)
+                           const Eigen::Vector4d* structurePlane, StructureFlatness flatness)
 {
     const int N = kernelDimensionFor(numFeatures);
     // Every candidate is judged on the algebraic error of all rows, with t eliminated.
@@ -163,7 +163,9 @@ int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeat
         // combinations would work in a wrong space, the plane gives the pose in closed form.
         planarKernelSolutions(A, *structurePlane, solutions);
     }
-    else if (N == 1)
+    // Exactly planar structure: the general combinations have nothing to add.
+    const bool general = !(structurePlane && flatness == STRUCTURE_PLANAR);
+    if (general && N == 1)
     {
         // Over-determined: the smallest eigenvectors of S (9x9: t eliminated, so only the rotation
         // is normalised) are accurate enough here (the rows are balanced and every candidate is
@@ -172,22 +174,22 @@ int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeat
         // be close, and the orthonormality constraints then pick the rotation better than the
         // last singular vector alone; selection decides.
         Eigen::Matrix<double, 9, 2> smallest;
-        if (!smallestEigenvectors(system.S, smallest))
-            return 0;
-        Eigen::Matrix<double, 12, 2> basis;
-        basis.topRows<9>() = smallest;
-        basis.bottomRows<3>() = system.T * basis.topRows<9>();
-        solveKernelCombinations(basis.leftCols<1>(), solutions);
-        solveKernelCombinations(basis, solutions);
+        if (smallestEigenvectors(system.S, smallest))
+        {
+            Eigen::Matrix<double, 12, 2> basis;
+            basis.topRows<9>() = smallest;
+            basis.bottomRows<3>() = system.T * basis.topRows<9>();
+            solveKernelCombinations(basis.leftCols<1>(), solutions);
+            solveKernelCombinations(basis, solutions);
+        }
     }
-    else
+    else if (general)
     {
         // Four or five features: the kernel's edge is where exact data must stay exact.
         KernelBasis kernel;
-        if (!smallSystemKernel(A, numPoints, N, kernel) ||
-            (options.orderedKernel && !orderKernelBasis(normalMatrix, kernel)))
-            return 0;
-        solveKernelCombinations(kernel, solutions);
+        if (smallSystemKernel(A, numPoints, N, kernel) &&
+            (!options.orderedKernel || orderKernelBasis(normalMatrix, kernel)))
+            solveKernelCombinations(kernel, solutions);
     }
 
     const size_t first = poses.size();

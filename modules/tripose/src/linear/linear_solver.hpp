@@ -10,6 +10,7 @@
 #include "../geometry/view_set.hpp"
 #include "../scoring/pose_scorer.hpp"
 #include "linear_system.hpp"
+#include "planar_kernel_solutions.hpp"
 
 namespace cv {
 namespace tripose {
@@ -53,13 +54,16 @@ arrangement of views whose rows share the unknown v = [r1; r2; r3; t / translati
 out as buildConstraintMatrix() lays them, the four rows of each of the @p numPoints points first,
 then two rows per line, @p numFeatures features in all (at least four). The candidates' t is
 multiplied by @p translationScale. @p structurePlane: the plane (in the rows' frame, translation
-in units of @p translationScale) that all the structure lies on, when it does: the kernel is then
-wider and the pose comes from the planar closed form (planar_kernel_solutions.hpp). Appends to
-@p poses and returns how many were appended.
+in units of @p translationScale) that the structure lies on or near, when it does (@p flatness, see
+structurePlane()): on a plane the kernel is wider and the pose comes from the planar closed form
+(planar_kernel_solutions.hpp) alone; near one, noise may hide a plane, so the closed form's
+candidates join the general ones and the selection decides. Appends to @p poses and returns how many
+were appended.
 */
 int poseCandidatesFromRows(const ConstraintMatrix& A, int numPoints, int numFeatures, double translationScale,
                            std::vector<CameraPose>& poses, const CandidateOptions& options = CandidateOptions(),
-                           const Eigen::Vector4d* structurePlane = nullptr);
+                           const Eigen::Vector4d* structurePlane = nullptr,
+                           StructureFlatness flatness = STRUCTURE_GENERAL);
 
 struct ScoredPose
 {

@@ -18,13 +18,23 @@ namespace cv {
 namespace tripose {
 namespace detail {
 
+//! How flat the structure of a problem is (structurePlane()).
+enum StructureFlatness
+{
+    STRUCTURE_GENERAL = 0,     //!< Thick, collinear, or a feature without a position: no plane.
+    STRUCTURE_NEAR_PLANAR = 1, //!< Within 10 % of a plane: noise may hide that it is one.
+    STRUCTURE_PLANAR = 2,      //!< Planar to rounding (relative thickness about 1e-6).
+};
+
 /** The plane pi (homogeneous, pi^T [X; 1] = 0, in view 1's frame with t12 scaled by @p pose12 as
-given) through the structure the selected features have in views 1-2, when there is one: points
-triangulated from views 1-2, each line by two of its points. False when the structure is not
-planar to a relative thickness of about 1e-6 (or is collinear, or a feature has no position).
+given) that best fits the structure the selected features have in views 1-2: points triangulated
+from views 1-2, each line by two of its points; and how well it fits. @p plane is set unless the
+result is STRUCTURE_GENERAL. Near-planar: the structure's thickness (its standard deviation across
+the plane) is below 10 % of its extent within the plane, as noisy data on one plane triangulate,
+once the positions far off the plane (three times the median distance, three rounds) are left out.
 */
-bool structurePlane(const ViewSet& set, const CameraPose& pose12, const std::vector<int>* pointIndices,
-                    const std::vector<int>* lineIndices, Eigen::Vector4d& plane);
+StructureFlatness structurePlane(const ViewSet& set, const CameraPose& pose12, const std::vector<int>* pointIndices,
+                                 const std::vector<int>* lineIndices, Eigen::Vector4d& plane);
 
 /** Solution vectors of A v = 0 when all structure lies on the plane @p plane (structurePlane()).
 
