@@ -83,6 +83,10 @@ STYLE = {
     "tri+iterative": dict(color="tab:red", marker="v"),
     "stereo_ml_from_truth": dict(color="black", marker="x", linestyle="--"),
 }
+# Column and legend order of the stereo regime: ours on four views, ours on views 1-3, the peers, the limit.
+STEREO_METHODS = ["stereo_ransac", "stereo_multi_start", "stereo_linear+refine", "stereo_linear", "three_view_ransac",
+                  "three_view_linear+refine", "poselib", "poselib-adaptive", "tri+sqpnp", "tri+iterative",
+                  "stereo_ml_from_truth"]
 # The stereo regime's decision: the final estimate within this factor of the four-view ML limit in
 # median rotation error (issue 14).
 STEREO_ML_FACTOR = 1.05
@@ -424,7 +428,7 @@ def plot_stereo(results, out_dir):
     fig, axes = plt.subplots(2, len(counts), figsize=(5.2 * len(counts), 6.4), squeeze=False, sharex=True)
     for c, n in enumerate(counts):
         groups = sorted(_group(results, "stereo", points=n), key=lambda g: g["key"]["noise"])
-        for method in METHODS:
+        for method in STEREO_METHODS:
             xs, ys = _curve(groups, "noise", method, "median", "rot_deg")
             if not xs:
                 continue
@@ -593,10 +597,10 @@ def tables_markdown(results, size, machine, command):
            f"Size: **{size}**. Machine: {machine['cpu']}, {machine['cores']} cores, {machine['system']}. "
            f"Command: `{command}`.", ""]
 
-    def method_table(title, groups, keycols, stat, quantities=("rot_deg", "t_rel"), with_time=False):
+    def method_table(title, groups, keycols, stat, quantities=("rot_deg", "t_rel"), with_time=False, order=METHODS):
         out.append(f"### {title}")
         out.append("")
-        methods = [m for m in METHODS if any(m in g["methods"] for g in groups)]
+        methods = [m for m in order if any(m in g["methods"] for g in groups)]
         header = keycols + [f"{METHODS[m]}" for m in methods]
         out.append("| " + " | ".join(header) + " |")
         out.append("|" + "---|" * len(header))
@@ -670,8 +674,8 @@ def tables_markdown(results, size, machine, command):
     groups = sorted(results.get("stereo", []), key=lambda g: (g["key"]["points"], g["key"]["noise"]))
     if groups:
         method_table("Stereo rig: median rotation error (deg) / relative translation error / median time", groups,
-                     ["points", "lines", "noise"], "median", with_time=True)
-        methods = [m for m in METHODS if m != "stereo_ml_from_truth" and any(m in g["methods"] for g in groups)]
+                     ["points", "lines", "noise"], "median", with_time=True, order=STEREO_METHODS)
+        methods = [m for m in STEREO_METHODS if m != "stereo_ml_from_truth" and any(m in g["methods"] for g in groups)]
         out.append(f"### Stereo rig: median rotation error over the four-view ML limit's (criterion: <= "
                    f"{STEREO_ML_FACTOR})")
         out.append("")
