@@ -183,18 +183,18 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
 }
 
 int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacParams& params, OutputArray R,
-                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers)
+                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers, bool rig)
 {
     const PoseScorer scorer(views);
-    return estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers);
+    return estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers, rig);
 }
 
 int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                    const RansacParams& params, OutputArray R, OutputArray t, OutputArray pointInliers,
-                   OutputArray lineInliers)
+                   OutputArray lineInliers, bool rig)
 {
     validate(params);
-    const MultiStartRefiner refiner(views, params.refineParams, &solver, hasSeveralBasins(views, scorer));
+    const MultiStartRefiner refiner(views, params.refineParams, &solver, hasSeveralBasins(views, scorer), !rig);
     RobustEstimate estimate;
     if (!estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {
