@@ -47,7 +47,7 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
         detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
                                    distCoeffs, R12, t12, kMinStereoRansacFeatures);
     const detail::RigPoseSolver solver(views);
-    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers, /*rig=*/true);
+    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
 }
 
 double refinePoseLinePointStereo(InputArray points1, InputArray points2, InputArray points3, InputArray points4,

@@ -183,18 +183,18 @@ int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int metho
 }
 
 int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacParams& params, OutputArray R,
-                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers, bool rig)
+                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers)
 {
     const PoseScorer scorer(views);
-    return estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers, rig);
+    return estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers);
 }
 
 int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                    const RansacParams& params, OutputArray R, OutputArray t, OutputArray pointInliers,
-                   OutputArray lineInliers, bool rig)
+                   OutputArray lineInliers)
 {
     validate(params);
-    const MultiStartRefiner refiner(views, params.refineParams, &solver, hasSeveralBasins(views, scorer), !rig);
+    const MultiStartRefiner refiner(views, params.refineParams, &solver, hasSeveralBasins(views, scorer));
     RobustEstimate estimate;
     if (!estimatePoseRobust(solver, scorer, params.refine ? &refiner : nullptr, params, estimate))
     {

@@ -23,16 +23,14 @@ problem-specific part is the PoseSolver. Outputs as the public functions documen
 int estimateCandidates(const ViewSet& views, const PoseSolver& solver, int method, OutputArray R, OutputArray t,
                        OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray reprojectionErrors);
 
-//! estimatePoseLinePointRansac() and its stereo variant; @p params is validated here. @p rig: a
-//! stereo rig, whose final refinement settles from the runners-up instead of the centre-direction
-//! starts where the cost has several basins (refine/multi_start_refiner.hpp).
+//! estimatePoseLinePointRansac() and its stereo variant; @p params is validated here.
 int estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacParams& params, OutputArray R,
-                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers, bool rig = false);
+                   OutputArray t, OutputArray pointInliers, OutputArray lineInliers);
 
 //! The same with the caller's scorer of @p views, for solvers that use its structure.
 int estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                    const RansacParams& params, OutputArray R, OutputArray t, OutputArray pointInliers,
-                   OutputArray lineInliers, bool rig = false);
+                   OutputArray lineInliers);
 
 //! refinePoseLinePoint() and its stereo variant: reads the initial pose from @p R, @p t (named "R",
 //! "t" in errors), validates @p params, refines over every view and writes pose and structure.

@@ -20,30 +20,20 @@ Only where the problem has several basins (a narrow known baseline, planar struc
 sets larger than kMaxMultiStartFeatures are refined once from the estimator's pose: the samples and
 local optimisation already put it in the right basin, and 27 starts would cost more than the rest
 of the estimator. Elsewhere one refinement from the estimator's pose reaches the optimum.
-
-A stereo rig asks for no centre-direction starts (@p centreDirections false): the second camera
-at the estimated time fixes the translation's direction and scale, and the basins that remain are
-those of the hypotheses themselves; the estimator settles from its runners-up instead
-(runnersUp()), which reaches the same minima as the 26 starts at a small part of their cost.
 */
 class MultiStartRefiner : public PoseRefiner
 {
 public:
     static constexpr int kMaxMultiStartFeatures = 60;
-    //! Runner-up hypotheses settled from when the centre-direction starts are left out.
-    static constexpr int kRunnersUp = 4;
 
     /** @p severalBasins: whether the problem has several basins (scoring/known_structure.hpp);
     without, one refinement from the estimator's pose reaches the optimum and the starts would only
-    cost time. @p centreDirections: whether to add the 26 centre-direction starts (see above). */
-    MultiStartRefiner(const ViewSet& set, const RefineParams& params, const PoseSolver* solver, bool severalBasins,
-                      bool centreDirections = true)
-        : set_(set), params_(params), solver_(solver), severalBasins_(severalBasins),
-          centreDirections_(centreDirections)
+    cost time. */
+    MultiStartRefiner(const ViewSet& set, const RefineParams& params, const PoseSolver* solver, bool severalBasins)
+        : set_(set), params_(params), solver_(solver), severalBasins_(severalBasins)
     {}
 
     bool searchesSeveralBasins() const CV_OVERRIDE { return severalBasins_; }
-    int runnersUp() const CV_OVERRIDE { return severalBasins_ && !centreDirections_ ? kRunnersUp : 0; }
 
     bool refine(const FeatureSubset& inliers, CameraPose& pose) const CV_OVERRIDE
     {
@@ -58,8 +48,7 @@ public:
         std::vector<CameraPose> starts(1, pose);
         if (solver_ && inliers.size() >= solver_->nonMinimalSize())
             solver_->estimateNonMinimal(inliers, starts);
-        if (centreDirections_)
-            centreDirectionStarts(set_, pose, starts);
+        centreDirectionStarts(set_, pose, starts);
         const LocalMinimum best = refineFromStarts(set_, starts, params_, &inliers.points, &inliers.lines);
         if (!best.finite())
             return false;
@@ -72,7 +61,6 @@ private:
     const RefineParams& params_;
     const PoseSolver* solver_;
     bool severalBasins_;
-    bool centreDirections_;
 };
 
 } // namespace detail

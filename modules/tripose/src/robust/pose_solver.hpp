@@ -50,11 +50,6 @@ public:
     the estimator should also settle its final pose from all the features, not only from the
     hypothesis' inliers. */
     virtual bool searchesSeveralBasins() const { return false; }
-    /** How many runner-up hypotheses (the cheapest distinct ones after the best) the estimator
-    should also settle from, keeping the pose of lowest truncated cost, re-triangulated in every
-    view: where the scorer's structure from the known views is poor, the best-scored hypothesis may
-    lie in another basin than the truth while a runner-up does not. 0: none. */
-    virtual int runnersUp() const { return 0; }
 };
 
 } // namespace detail

@@ -24,23 +24,6 @@ constexpr int kMaxSettleFromAll = 60;
 // against this multiple of the user's threshold. The final inliers use residuals with the feature
 // re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
-// Two hypotheses closer than this (Frobenius norm of the rotations' difference, about 0.8 degrees;
-// translation difference relative to the larger translation) count as one runner-up.
-constexpr double kSameHypothesisRotation = 0.02;
-constexpr double kSameHypothesisTranslation = 0.1;
-
-bool sameHypothesis(const CameraPose& a, const CameraPose& b)
-{
-    return (a.R - b.R).norm() < kSameHypothesisRotation &&
-           (a.t - b.t).norm() <= kSameHypothesisTranslation * std::max(a.t.norm(), b.t.norm());
-}
-
-//! A hypothesis and its MSAC cost against the known views' structure.
-struct Hypothesis
-{
-    double cost;
-    CameraPose pose;
-};
 
 class RobustEstimator
 {
@@ -53,9 +36,6 @@ public:
         const ViewSet& set = scorer.views();
         numPoints_ = set.numPoints;
         numFeatures_ = set.numFeatures();
-        // As the settling from all features, only for small sets: on large ones each runner-up's
-        // refinement costs more (100 points + 40 lines at 50 % outliers: +15-20 % time per call).
-        maxRunnersUp_ = refiner && numFeatures_ <= kMaxSettleFromAll ? refiner->runnersUp() : 0;
     }
 
     bool run(RobustEstimate& estimate)
@@ -108,21 +88,6 @@ public:
                 cost = allCost;
             }
         }
-        // The same comparison for the runners-up (PoseRefiner::runnersUp()), each settled from
-        // its own inliers.
-        for (const Hypothesis& h : runnersUp_)
-        {
-            if (sameHypothesis(h.pose, bestPose_))
-                continue;
-            RobustEstimate alternative = estimate;
-            alternative.pose = h.pose;
-            const double alternativeCost = settleInliers(alternative);
-            if (alternativeCost < cost)
-            {
-                estimate = alternative;
-                cost = alternativeCost;
-            }
-        }
         return estimate.numInliers > 0;
     }
 
@@ -171,65 +136,23 @@ private:
         return true;
     }
 
-    //! Makes the cheapest of @p poses the best model if it beats it; true if it did. With
-    //! runners-up, the others that score within the cheapest kept so far are remembered.
+    //! Makes the cheapest of @p poses the best model if it beats it; true if it did.
     bool keepBest(const std::vector<CameraPose>& poses)
     {
         bool improved = false;
         for (const CameraPose& pose : poses)
         {
-            const PoseScore s = scorer_.score(pose, samplingThreshold_, scoringBound(), &inliers_);
+            const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_);
             if (s.cost < best_.cost)
             {
-                if (std::isfinite(best_.cost))
-                    rememberRunnerUp(best_.cost, bestPose_);
                 best_ = s;
                 bestPose_ = pose;
                 bestInliers_.points.swap(inliers_.points);
                 bestInliers_.lines.swap(inliers_.lines);
                 improved = true;
             }
-            else if (std::isfinite(s.cost))
-            {
-                rememberRunnerUp(s.cost, pose);
-            }
         }
         return improved;
-    }
-
-    //! Scoring may stop above this cost: the best's, or the dearest runner-up's while they are kept.
-    double scoringBound() const
-    {
-        if (maxRunnersUp_ == 0)
-            return best_.cost;
-        if ((int)runnersUp_.size() < maxRunnersUp_)
-            return std::numeric_limits<double>::infinity();
-        return std::max(best_.cost, runnersUp_.back().cost);
-    }
-
-    //! Keeps the maxRunnersUp_ cheapest distinct hypotheses (cheapest first), one per pose.
-    void rememberRunnerUp(double cost, const CameraPose& pose)
-    {
-        if (maxRunnersUp_ == 0)
-            return;
-        for (size_t i = 0; i < runnersUp_.size(); ++i)
-        {
-            if (!sameHypothesis(runnersUp_[i].pose, pose))
-                continue;
-            if (cost < runnersUp_[i].cost)
-                runnersUp_.erase(runnersUp_.begin() + i);
-            else
-                return;
-            break;
-        }
-        Hypothesis h;
-        h.cost = cost;
-        h.pose = pose;
-        auto at = std::upper_bound(runnersUp_.begin(), runnersUp_.end(), cost,
-                                   [](double c, const Hypothesis& other) { return c < other.cost; });
-        runnersUp_.insert(at, h);
-        if ((int)runnersUp_.size() > maxRunnersUp_)
-            runnersUp_.pop_back();
     }
 
     //! Re-solves from the inliers of the best model while that lowers the cost.
@@ -310,8 +233,7 @@ private:
     const PoseRefiner* refiner_;
     const RansacParams& params_;
     const double samplingThreshold_;
-    int numPoints_ = 0, numFeatures_ = 0, pool_ = 0, maxRunnersUp_ = 0;
-    std::vector<Hypothesis> runnersUp_;
+    int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
     std::vector<double> pointResiduals_, lineResiduals_;
     PoseScore best_ = worstScore();
     CameraPose bestPose_;
