@@ -257,6 +257,19 @@ cv::Mat triangulateLines12(const Problem& p)
 // ---------------------------------------------------------------------------------------------
 // Problem sources
 
+//! The three-view part of a problem from anything with the support library's field names (a
+//! synthetic scene, a stereo scene, a VGG triplet).
+template <typename Source>
+Problem threeViewProblem(const Source& s)
+{
+    Problem p;
+    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
+    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
+    p.K = s.cameraMatrices;
+    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
+    return p;
+}
+
 Problem syntheticProblem(const Options& o, int trial)
 {
     cv::tripose::support::SyntheticSceneParams params;
@@ -268,13 +281,7 @@ Problem syntheticProblem(const Options& o, int trial)
     params.baseline12Fraction = o.baseline12Fraction;
     params.planar = o.planar;
     params.seed = o.seed + trial;
-    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
-    Problem p;
-    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
-    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
-    p.K = s.cameraMatrices;
-    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
-    return p;
+    return threeViewProblem(cv::tripose::support::generateSyntheticScene(params));
 }
 
 Problem syntheticStereoProblem(const Options& o, int trial)
@@ -287,11 +294,9 @@ Problem syntheticStereoProblem(const Options& o, int trial)
     params.missingRatio = o.missing;
     params.seed = o.seed + trial;
     const cv::tripose::support::SyntheticStereoScene s = cv::tripose::support::generateSyntheticStereoScene(params);
-    Problem p;
-    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3; p.points4 = s.points4;
-    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3; p.lines4 = s.lines4;
-    p.K = s.cameraMatrices;
-    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
+    Problem p = threeViewProblem(s);
+    p.points4 = s.points4;
+    p.lines4 = s.lines4;
     return p;
 }
 
@@ -309,6 +314,8 @@ std::vector<int> drawRows(int n, int k, cv::RNG& rng)
 
 cv::Mat selectRows(const cv::Mat& m, const std::vector<int>& rows)
 {
+    if (m.empty())
+        return m;  // a view a problem does not have (points4, lines4 of a three-view problem)
     cv::Mat out(0, m.cols, m.type());
     for (int r : rows)
         out.push_back(m.row(r));
@@ -325,17 +332,22 @@ std::vector<int> finiteRows(const cv::Mat& m)
     return rows;
 }
 
-/** The features of a stereo problem that view 3 (the left image at B) sees: what the three-view
-methods and the PnP peers, which use views 1-3 only, are given. */
-Problem seenInView3(const Problem& p)
+//! The points @p pr and lines @p lr of @p p, in every view.
+Problem selectFeatures(const Problem& p, const std::vector<int>& pr, const std::vector<int>& lr)
 {
     Problem q = p;
-    const std::vector<int> pr = finiteRows(p.points3), lr = finiteRows(p.lines3);
     q.points1 = selectRows(p.points1, pr); q.points2 = selectRows(p.points2, pr); q.points3 = selectRows(p.points3, pr);
     q.points4 = selectRows(p.points4, pr);
     q.lines1 = selectRows(p.lines1, lr); q.lines2 = selectRows(p.lines2, lr); q.lines3 = selectRows(p.lines3, lr);
     q.lines4 = selectRows(p.lines4, lr);
     return q;
+}
+
+/** The features of a stereo problem that view 3 (the left image at B) sees: what the three-view
+methods and the PnP peers, which use views 1-3 only, are given. */
+Problem seenInView3(const Problem& p)
+{
+    return selectFeatures(p, finiteRows(p.points3), finiteRows(p.lines3));
 }
 
 Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, int trial)
@@ -346,12 +358,7 @@ Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, 
     cv::RNG rng((uint64)(0x9E3779B97F4A7C15ull ^ (uint64)(o.seed * 100003 + trial)));
     const std::vector<int> pr = drawRows(v.points1.rows, o.points, rng);
     const std::vector<int> lr = drawRows(v.lines1.rows, o.lines, rng);
-    Problem p;
-    p.points1 = selectRows(v.points1, pr); p.points2 = selectRows(v.points2, pr); p.points3 = selectRows(v.points3, pr);
-    p.lines1 = selectRows(v.lines1, lr); p.lines2 = selectRows(v.lines2, lr); p.lines3 = selectRows(v.lines3, lr);
-    p.K = v.cameraMatrices;
-    p.R12 = v.R12; p.t12 = v.t12; p.R = v.R; p.t = v.t;
-    return p;
+    return selectFeatures(threeViewProblem(v), pr, lr);
 }
 
 // ---------------------------------------------------------------------------------------------
