@@ -66,7 +66,8 @@ public:
     }
 
 private:
-    //! The previous multi-start refinement: its features and result.
+    //! The previous multi-start refinement: its features and result. State of one estimation:
+    //! a refiner is built per call and not shared between threads.
     struct LastRefinement
     {
         bool valid = false;
