@@ -447,7 +447,13 @@ def plot_stereo(results, out_dir):
         if c == 0:
             axes[0][c].set_ylabel("median rotation (deg)", fontsize=8)
             axes[1][c].set_ylabel(f"ratio to the four-view ML limit\n(dotted: {STEREO_ML_FACTOR})", fontsize=8)
-    handles, labels = axes[0][0].get_legend_handles_labels()
+    # Every method of any column (solvePnP ITERATIVE needs six points: not in the 4 + 4 column).
+    legend = {}
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    labels = [METHODS[m] for m in STEREO_METHODS if METHODS[m] in legend]
+    handles = [legend[label] for label in labels]
     fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8)
     fig.suptitle("Stereo rig: baseline 0.1-0.5 m, depth 5-30 m, motion 0.3-3 m (failures count as infinite error)",
                  fontsize=10)
