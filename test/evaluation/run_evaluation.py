@@ -54,6 +54,16 @@ METHODS = {
     "poselib": "triangulate + PoseLib PnPL",
     "poselib-adaptive": "triangulate + PoseLib PnPL, min_iterations 0",
     "ml_from_truth": "ML from ground truth (limit)",
+    # The stereo rig (four views; tripose_evaluate stereo): ours on the four views and on views 1-3,
+    # the peers on the left image at B with the structure triangulated from the rig at A.
+    "stereo_linear": "stereo linear (ours)",
+    "stereo_multi_start": "stereo linear, POSE_LINEAR_REFINE (ours)",
+    "stereo_linear+refine": "stereo linear + ML refine (ours)",
+    "stereo_ransac": "stereo RANSAC + refine (ours)",
+    "three_view_linear+refine": "three-view linear + refine, views 1-3 (ours)",
+    "three_view_ransac": "three-view RANSAC + refine, views 1-3 (ours)",
+    "tri+iterative": "triangulate + solvePnP ITERATIVE",
+    "stereo_ml_from_truth": "four-view ML from ground truth (limit)",
 }
 STYLE = {
     "linear": dict(color="tab:blue", marker="o"),
@@ -64,18 +74,35 @@ STYLE = {
     "poselib": dict(color="tab:green", marker="P"),
     "poselib-adaptive": dict(color="tab:olive", marker="*"),
     "ml_from_truth": dict(color="black", marker="x", linestyle="--"),
+    "stereo_linear": dict(color="tab:blue", marker="o"),
+    "stereo_multi_start": dict(color="tab:gray", marker="h"),
+    "stereo_linear+refine": dict(color="tab:cyan", marker="s"),
+    "stereo_ransac": dict(color="tab:purple", marker="D"),
+    "three_view_linear+refine": dict(color="tab:pink", marker="<"),
+    "three_view_ransac": dict(color="tab:brown", marker=">"),
+    "tri+iterative": dict(color="tab:red", marker="v"),
+    "stereo_ml_from_truth": dict(color="black", marker="x", linestyle="--"),
 }
+# Column and legend order of the stereo regime: ours on four views, ours on views 1-3, the peers, the limit.
+STEREO_METHODS = ["stereo_ransac", "stereo_multi_start", "stereo_linear+refine", "stereo_linear", "three_view_ransac",
+                  "three_view_linear+refine", "poselib", "poselib-adaptive", "tri+sqpnp", "tri+iterative",
+                  "stereo_ml_from_truth"]
+# The stereo regime's decision: the final estimate within this factor of the four-view ML limit in
+# median rotation error (issue 14).
+STEREO_ML_FACTOR = 1.05
 
 SIZES = {
     # Smoke: every figure and table, few trials; CI runs it in well under 3 minutes on 2 cores.
     "smoke": dict(trials=20, noise=[0.0, 1.0, 3.0], fig4_n=[4, 8], fig5_n=[4, 10, 45], fig5_trials=10,
                   fig5_repeats=3, vgg_trials=10, outliers=[0.0, 0.3], outlier_trials=10,
-                  regime_n=[4, 10], regime_noise=[1.0], regime_trials=10),
+                  regime_n=[4, 10], regime_noise=[1.0], regime_trials=10,
+                  stereo_n=[4, 10], stereo_noise=[1.0], stereo_trials=10),
     # Full: the paper's 500 trials per point (100 runs per VGG configuration).
     "full": dict(trials=500, noise=[0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0], fig4_n=[4, 5, 6, 7, 8],
                  fig5_n=[4, 5, 6, 8, 10, 15, 20, 25, 30, 35, 40, 45], fig5_trials=500, fig5_repeats=5,
                  vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6], outlier_trials=500,
-                 regime_n=[4, 10], regime_noise=[0.5, 1.0, 2.0], regime_trials=200),
+                 regime_n=[4, 10], regime_noise=[0.5, 1.0, 2.0], regime_trials=200,
+                 stereo_n=[4, 10], stereo_noise=[0.5, 1.0, 1.5, 2.0, 3.0], stereo_trials=500),
 }
 
 
@@ -250,6 +277,12 @@ def plan(size):
                 key = dict(regime=regime, points=n, lines=n, noise=noise)
                 jobs.append(("regimes", key, ["synthetic", "--points", n, "--lines", n, "--noise", noise] + regime_args +
                              ["--trials", cfg["regime_trials"], "--seed", 6000], cfg["regime_trials"]))
+    # The stereo rig (SyntheticStereoParams' defaults: baseline 0.1-0.5 m, depth 5-30 m, motion 0.3-3 m).
+    for n in cfg["stereo_n"]:
+        for noise in cfg["stereo_noise"]:
+            key = dict(points=n, lines=n, noise=noise)
+            jobs.append(("stereo", key, ["stereo", "--points", n, "--lines", n, "--noise", noise,
+                                         "--trials", cfg["stereo_trials"], "--seed", 7000], cfg["stereo_trials"]))
     for seq in VGG_SEQUENCES:
         for n_lines, n_points in VGG_CONFIGS:
             key = dict(sequence=seq, points=n_points, lines=n_lines)
@@ -380,6 +413,63 @@ def plot_regimes(results, out_dir):
     fig.savefig(path, dpi=90)
     plt.close(fig)
     return [path]
+
+
+def plot_stereo(results, out_dir):
+    """Stereo rig: median rotation error vs noise (top) and its ratio to the four-view ML limit
+    (bottom), one column per feature count."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    if not results.get("stereo"):
+        return []
+    counts = sorted({g["key"]["points"] for g in results["stereo"]})
+    fig, axes = plt.subplots(2, len(counts), figsize=(5.2 * len(counts), 6.4), squeeze=False, sharex=True)
+    for c, n in enumerate(counts):
+        groups = sorted(_group(results, "stereo", points=n), key=lambda g: g["key"]["noise"])
+        for method in STEREO_METHODS:
+            xs, ys = _curve(groups, "noise", method, "median", "rot_deg")
+            if not xs:
+                continue
+            axes[0][c].plot(xs, ys, label=METHODS[method], markersize=4, **STYLE[method])
+            ratios = [(g["key"]["noise"], stereo_ratio(g, method)) for g in groups]
+            ratios = [(x, r) for x, r in ratios if r is not None and math.isfinite(r)]
+            if ratios:
+                axes[1][c].plot([x for x, _ in ratios], [r for _, r in ratios], markersize=4, **STYLE[method])
+        axes[0][c].set_yscale("log")
+        axes[0][c].set_title(f"{n} points + {n} lines", fontsize=9)
+        axes[1][c].set_yscale("log")
+        axes[1][c].axhline(STEREO_ML_FACTOR, color="black", linewidth=0.8, linestyle=":")
+        axes[1][c].set_xlabel("noise sigma (px)")
+        for r in range(2):
+            axes[r][c].grid(True, which="both", alpha=0.3)
+        if c == 0:
+            axes[0][c].set_ylabel("median rotation (deg)", fontsize=8)
+            axes[1][c].set_ylabel(f"ratio to the four-view ML limit\n(dotted: {STEREO_ML_FACTOR})", fontsize=8)
+    # Every method of any column (solvePnP ITERATIVE needs six points: not in the 4 + 4 column).
+    legend = {}
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    labels = [METHODS[m] for m in STEREO_METHODS if METHODS[m] in legend]
+    handles = [legend[label] for label in labels]
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8)
+    fig.suptitle("Stereo rig: baseline 0.1-0.5 m, depth 5-30 m, motion 0.3-3 m (failures count as infinite error)",
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0.13, 1, 0.97))
+    path = out_dir / "stereo.png"
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return [path]
+
+
+def stereo_ratio(group, method):
+    """Median rotation error of @method over the four-view ML limit's, in one stereo group."""
+    s, limit = group["methods"].get(method), group["methods"].get("stereo_ml_from_truth")
+    if s is None or limit is None or not limit["rot_deg"]["median"]:
+        return None
+    return s["rot_deg"]["median"] / limit["rot_deg"]["median"]
 
 
 def plot_time(results, out_dir):
@@ -513,10 +603,10 @@ def tables_markdown(results, size, machine, command):
            f"Size: **{size}**. Machine: {machine['cpu']}, {machine['cores']} cores, {machine['system']}. "
            f"Command: `{command}`.", ""]
 
-    def method_table(title, groups, keycols, stat, quantities=("rot_deg", "t_rel"), with_time=False):
+    def method_table(title, groups, keycols, stat, quantities=("rot_deg", "t_rel"), with_time=False, order=METHODS):
         out.append(f"### {title}")
         out.append("")
-        methods = [m for m in METHODS if any(m in g["methods"] for g in groups)]
+        methods = [m for m in order if any(m in g["methods"] for g in groups)]
         header = keycols + [f"{METHODS[m]}" for m in methods]
         out.append("| " + " | ".join(header) + " |")
         out.append("|" + "---|" * len(header))
@@ -587,6 +677,25 @@ def tables_markdown(results, size, machine, command):
             method_table(f"{regime}: median rotation error (deg) / relative translation error", groups,
                          ["points", "lines", "noise"], "median")
 
+    groups = sorted(results.get("stereo", []), key=lambda g: (g["key"]["points"], g["key"]["noise"]))
+    if groups:
+        method_table("Stereo rig: median rotation error (deg) / relative translation error / median time", groups,
+                     ["points", "lines", "noise"], "median", with_time=True, order=STEREO_METHODS)
+        methods = [m for m in STEREO_METHODS if m != "stereo_ml_from_truth" and any(m in g["methods"] for g in groups)]
+        out.append(f"### Stereo rig: median rotation error over the four-view ML limit's (criterion: <= "
+                   f"{STEREO_ML_FACTOR})")
+        out.append("")
+        header = ["points", "lines", "noise", "trials", "ML limit (deg)"] + [METHODS[m] for m in methods]
+        out.append("| " + " | ".join(header) + " |")
+        out.append("|" + "---|" * len(header))
+        for g in groups:
+            limit = g["methods"]["stereo_ml_from_truth"]
+            cells = [str(g["key"]["points"]), str(g["key"]["lines"]), str(g["key"]["noise"]), str(limit["n"]),
+                     _fmt(limit["rot_deg"]["median"])]
+            cells += [_fmt(stereo_ratio(g, m)) if m in g["methods"] else "n/a" for m in methods]
+            out.append("| " + " | ".join(cells) + " |")
+        out.append("")
+
     groups = results.get("fig6", [])
     if groups:
         method_table("Fig. 6, VGG: median rotation error (deg) / relative translation error", groups,
@@ -601,7 +710,7 @@ def main(argv=None):
     parser.add_argument("--size", choices=sorted(SIZES), default="smoke")
     parser.add_argument("--out", type=Path, default=REPO / "doc" / "evaluation",
                         help="output folder for PNGs, tables.md and data/summary.json (default doc/evaluation)")
-    parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers", "regimes"],
+    parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers", "regimes", "stereo"],
                         help="run only these experiments")
     parser.add_argument("--plot-only", action="store_true",
                         help="redraw the figures and tables from <out>/data/summary.json without running anything")
@@ -636,6 +745,7 @@ def main(argv=None):
         pngs += plot_time(results, out)
     pngs += plot_outliers(results, out)
     pngs += plot_regimes(results, out)
+    pngs += plot_stereo(results, out)
     pngs += plot_vgg(results, out)
     print(f"{len(pngs)} figures, tables.md and data/summary.json in {out} ({elapsed:.0f} s)")
     return 0

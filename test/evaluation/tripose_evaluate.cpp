@@ -12,6 +12,11 @@
 //                      [--repeats K] [--threshold px] [--methods list] [--dump-inputs]
 //   (--baseline12-fraction: view 2 at that fraction of the 20 m depth from view 1; --planar: all
 //   structure on one plane tilted 30 degrees from view 1; SyntheticSceneParams has the details)
+//   synthetic stereo-rig scenes (four views: the rig at times A and B; SyntheticStereoParams'
+//   defaults: baseline 0.1-0.5 m, depth 5-30 m, motion 0.3-3 m):
+//     tripose_evaluate stereo --points N --lines M --noise px [--outliers ratio] [--missing ratio]
+//                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]
+//   (--missing: the fraction of the features seen by only one of the two time-B views)
 //   random subsets of a VGG multi-view sequence (Sec. IV-B):
 //     tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M
 //                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list]
@@ -24,10 +29,22 @@
 //   ml_from_truth  refinePoseLinePoint started from the ground truth: the accuracy limit
 //   tri+sqpnp      points triangulated from views 1-2, then cv::solvePnP(SOLVEPNP_SQPNP), >= 3 points
 //   tri+epnp       the same with SOLVEPNP_EPNP, >= 4 points
+// Methods of the stereo experiment (views 1-2: the rig at time A, views 3-4: at time B):
+//   stereo_linear             estimatePoseLinePointStereo, POSE_LINEAR
+//   stereo_multi_start        estimatePoseLinePointStereo, POSE_LINEAR_REFINE (every candidate refined,
+//                             further starts where the cost has several basins)
+//   stereo_linear+refine      refinePoseLinePointStereo started from the stereo_linear estimate
+//   stereo_ransac             estimatePoseLinePointStereoRansac (robust + refined), threshold --threshold px
+//   stereo_ml_from_truth      refinePoseLinePointStereo started from the ground truth: the four-view limit
+//   three_view_ransac         ransac on views 1-3 only (the right image at B unused)
+//   three_view_linear+refine  linear+refine on views 1-3 only
+//   tri+sqpnp                 as above, in view 3 (the left image at B)
+//   tri+iterative             the same with SOLVEPNP_ITERATIVE, >= 6 points (its DLT start needs them)
 // Per method: rot_deg (angle of R_est R_gt^T), t_rel (|t - t_gt| / |t_gt|), time_us (median of
 // --repeats calls, one thread), ok. With --dump-inputs each line also carries the inputs and the
 // structure triangulated from views 1-2 (points and lines, with the time that took), which is
-// what the PoseLib peers of the Python driver consume.
+// what the PoseLib peers of the Python driver consume (for stereo: view 3, the left image at B, against
+// the structure triangulated from the rig at A; the time-B right image is dumped too).
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +62,7 @@
 
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
+#include "tripose_support/synthetic_stereo_scene.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 
 namespace {
@@ -54,32 +72,45 @@ const char* kUsage =
     "                        [--baseline12-fraction f] [--planar]\n"
     "                        [--outliers ratio] [--trials T] [--seed S] [--repeats K]\n"
     "                        [--threshold px] [--methods list] [--dump-inputs]\n"
+    "       tripose_evaluate stereo --points N --lines M --noise px [--outliers ratio] [--missing ratio]\n"
+    "                        [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
     "       tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M [--trials T]\n"
     "                        [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
-    "methods: linear, linear+refine, ransac, ml_from_truth, tri+sqpnp, tri+epnp (default: all)\n";
+    "methods: linear, linear+refine, ransac, ml_from_truth, tri+sqpnp, tri+epnp (default: all)\n"
+    "stereo methods: stereo_linear, stereo_multi_start, stereo_linear+refine, stereo_ransac,\n"
+    "                stereo_ml_from_truth, three_view_ransac, three_view_linear+refine, tri+sqpnp,\n"
+    "                tri+iterative (default: all)\n";
 
 const std::vector<std::string> kAllMethods = { "linear", "linear+refine", "ransac", "ml_from_truth", "tri+sqpnp",
                                                "tri+epnp" };
+const std::vector<std::string> kStereoMethods = { "stereo_linear", "stereo_multi_start", "stereo_linear+refine",
+                                                  "stereo_ransac", "stereo_ml_from_truth", "three_view_ransac",
+                                                  "three_view_linear+refine", "tri+sqpnp", "tri+iterative" };
 
 struct Options
 {
-    std::string source;  // "synthetic" or "vgg"
+    std::string source;  // "synthetic", "stereo" or "vgg"
     int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1;
-    double noise = 0.0, outliers = 0.0, threshold = -1.0, baseline12Fraction = 0.0;
+    double noise = 0.0, outliers = 0.0, missing = 0.0, threshold = -1.0, baseline12Fraction = 0.0;
     bool planar = false;
     int motion = cv::tripose::support::MOTION_LARGE;
     std::string sequence;
     int views[3] = { 0, 1, 2 };
-    std::vector<std::string> methods = kAllMethods;
+    std::vector<std::string> methods;  // empty: every method of the source
     bool dumpInputs = false;
 };
 
-//! One three-view problem with its ground truth, whatever produced it.
+//! One three-view (or four-view stereo) problem with its ground truth, whatever produced it.
 struct Problem
 {
     cv::Mat points1, points2, points3, lines1, lines2, lines3;  // Nx2, Mx4, CV_64F
-    std::vector<cv::Mat> K;                                      // three 3x3
+    cv::Mat points4, lines4;                                     // stereo only: the right image at time B
+    std::vector<cv::Mat> K;                                      // three 3x3 (four for stereo)
     cv::Mat R12, t12, R, t;                                      // R, t: ground truth of view 3
+
+    bool stereo() const { return K.size() == 4; }
+    //! The cameras of views 1-3, what the three-view functions take.
+    std::vector<cv::Mat> threeViewCameras() const { return std::vector<cv::Mat>(K.begin(), K.begin() + 3); }
 };
 
 std::vector<std::string> split(const std::string& s, char sep)
@@ -96,11 +127,13 @@ std::vector<std::string> split(const std::string& s, char sep)
 Options parse(int argc, char** argv)
 {
     if (argc < 2)
-        throw std::runtime_error("missing experiment kind (synthetic or vgg)");
+        throw std::runtime_error("missing experiment kind (synthetic, stereo or vgg)");
     Options o;
     o.source = argv[1];
-    if (o.source != "synthetic" && o.source != "vgg")
-        throw std::runtime_error("experiment kind must be synthetic or vgg, got " + o.source);
+    if (o.source != "synthetic" && o.source != "stereo" && o.source != "vgg")
+        throw std::runtime_error("experiment kind must be synthetic, stereo or vgg, got " + o.source);
+    const std::vector<std::string>& known = o.source == "stereo" ? kStereoMethods : kAllMethods;
+    o.methods = known;
     for (int i = 2; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -116,6 +149,7 @@ Options parse(int argc, char** argv)
         else if (arg == "--repeats") o.repeats = std::stoi(v);
         else if (arg == "--noise") o.noise = std::stod(v);
         else if (arg == "--outliers") o.outliers = std::stod(v);
+        else if (arg == "--missing") o.missing = std::stod(v);
         else if (arg == "--baseline12-fraction") o.baseline12Fraction = std::stod(v);
         else if (arg == "--threshold") o.threshold = std::stod(v);
         else if (arg == "--sequence") o.sequence = v;
@@ -137,8 +171,8 @@ Options parse(int argc, char** argv)
         {
             o.methods = split(v, ',');
             for (const std::string& m : o.methods)
-                if (std::find(kAllMethods.begin(), kAllMethods.end(), m) == kAllMethods.end())
-                    throw std::runtime_error("argument --methods: unknown method " + m);
+                if (std::find(known.begin(), known.end(), m) == known.end())
+                    throw std::runtime_error("argument --methods: unknown method " + m + " for " + o.source);
         }
         else
             throw std::runtime_error("unknown argument " + arg);
@@ -147,6 +181,10 @@ Options parse(int argc, char** argv)
         throw std::runtime_error("arguments --points/--lines: need at least four features in all");
     if (o.trials < 1 || o.repeats < 1)
         throw std::runtime_error("arguments --trials/--repeats: expected >= 1");
+    if (o.source == "stereo" && (o.planar || o.baseline12Fraction != 0.0 || !o.sequence.empty()))
+        throw std::runtime_error("arguments --planar, --baseline12-fraction, --sequence: not for stereo");
+    if (o.source != "stereo" && o.missing != 0.0)
+        throw std::runtime_error("argument --missing: stereo only");
     if (o.source == "vgg" && o.sequence.empty())
         throw std::runtime_error("argument --sequence: required for vgg");
     if (o.threshold <= 0)  // A fixed 2 px would drop inliers at high noise; 3 sigma keeps ~99% of them.
@@ -219,6 +257,19 @@ cv::Mat triangulateLines12(const Problem& p)
 // ---------------------------------------------------------------------------------------------
 // Problem sources
 
+//! The three-view part of a problem from anything with the support library's field names (a
+//! synthetic scene, a stereo scene, a VGG triplet).
+template <typename Source>
+Problem threeViewProblem(const Source& s)
+{
+    Problem p;
+    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
+    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
+    p.K = s.cameraMatrices;
+    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
+    return p;
+}
+
 Problem syntheticProblem(const Options& o, int trial)
 {
     cv::tripose::support::SyntheticSceneParams params;
@@ -230,12 +281,22 @@ Problem syntheticProblem(const Options& o, int trial)
     params.baseline12Fraction = o.baseline12Fraction;
     params.planar = o.planar;
     params.seed = o.seed + trial;
-    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
-    Problem p;
-    p.points1 = s.points1; p.points2 = s.points2; p.points3 = s.points3;
-    p.lines1 = s.lines1; p.lines2 = s.lines2; p.lines3 = s.lines3;
-    p.K = s.cameraMatrices;
-    p.R12 = s.R12; p.t12 = s.t12; p.R = s.R; p.t = s.t;
+    return threeViewProblem(cv::tripose::support::generateSyntheticScene(params));
+}
+
+Problem syntheticStereoProblem(const Options& o, int trial)
+{
+    cv::tripose::support::SyntheticStereoParams params;  // the rig, depths and motion of its defaults
+    params.numPoints = o.points;
+    params.numLines = o.lines;
+    params.noiseSigma = o.noise;
+    params.outlierRatio = o.outliers;
+    params.missingRatio = o.missing;
+    params.seed = o.seed + trial;
+    const cv::tripose::support::SyntheticStereoScene s = cv::tripose::support::generateSyntheticStereoScene(params);
+    Problem p = threeViewProblem(s);
+    p.points4 = s.points4;
+    p.lines4 = s.lines4;
     return p;
 }
 
@@ -253,10 +314,40 @@ std::vector<int> drawRows(int n, int k, cv::RNG& rng)
 
 cv::Mat selectRows(const cv::Mat& m, const std::vector<int>& rows)
 {
+    if (m.empty())
+        return m;  // a view a problem does not have (points4, lines4 of a three-view problem)
     cv::Mat out(0, m.cols, m.type());
     for (int r : rows)
         out.push_back(m.row(r));
     return out.empty() ? cv::Mat(0, m.cols, CV_64F) : out;
+}
+
+//! The rows of @p m that are finite (a NaN row: a feature the view does not see).
+std::vector<int> finiteRows(const cv::Mat& m)
+{
+    std::vector<int> rows;
+    for (int r = 0; r < m.rows; ++r)
+        if (cv::checkRange(m.row(r)))
+            rows.push_back(r);
+    return rows;
+}
+
+//! The points @p pr and lines @p lr of @p p, in every view.
+Problem selectFeatures(const Problem& p, const std::vector<int>& pr, const std::vector<int>& lr)
+{
+    Problem q = p;
+    q.points1 = selectRows(p.points1, pr); q.points2 = selectRows(p.points2, pr); q.points3 = selectRows(p.points3, pr);
+    q.points4 = selectRows(p.points4, pr);
+    q.lines1 = selectRows(p.lines1, lr); q.lines2 = selectRows(p.lines2, lr); q.lines3 = selectRows(p.lines3, lr);
+    q.lines4 = selectRows(p.lines4, lr);
+    return q;
+}
+
+/** The features of a stereo problem that view 3 (the left image at B) sees: what the three-view
+methods and the PnP peers, which use views 1-3 only, are given. */
+Problem seenInView3(const Problem& p)
+{
+    return selectFeatures(p, finiteRows(p.points3), finiteRows(p.lines3));
 }
 
 Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, int trial)
@@ -267,12 +358,7 @@ Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, 
     cv::RNG rng((uint64)(0x9E3779B97F4A7C15ull ^ (uint64)(o.seed * 100003 + trial)));
     const std::vector<int> pr = drawRows(v.points1.rows, o.points, rng);
     const std::vector<int> lr = drawRows(v.lines1.rows, o.lines, rng);
-    Problem p;
-    p.points1 = selectRows(v.points1, pr); p.points2 = selectRows(v.points2, pr); p.points3 = selectRows(v.points3, pr);
-    p.lines1 = selectRows(v.lines1, lr); p.lines2 = selectRows(v.lines2, lr); p.lines3 = selectRows(v.lines3, lr);
-    p.K = v.cameraMatrices;
-    p.R12 = v.R12; p.t12 = v.t12; p.R = v.R; p.t = v.t;
-    return p;
+    return selectFeatures(threeViewProblem(v), pr, lr);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -310,17 +396,67 @@ Result timed(const Problem& p, int repeats, const std::function<bool(cv::Mat&, c
     return res;
 }
 
+cv::tripose::RansacParams ransacParams(const Options& o)
+{
+    cv::tripose::RansacParams params;
+    params.threshold = o.threshold;
+    params.seed = o.seed;
+    return params;
+}
+
+// The three-view functions on views 1-3 (of a stereo problem too: its right image at B unused).
+
 bool linearSolve(const Problem& p, cv::Mat& R, cv::Mat& t)
 {
-    return cv::tripose::estimatePoseLinePoint(p.points1, p.points2, p.points3, p.lines1, p.lines2, p.lines3, p.K,
-                                              cv::noArray(), p.R12, p.t12, R, t) > 0;
+    return cv::tripose::estimatePoseLinePoint(p.points1, p.points2, p.points3, p.lines1, p.lines2, p.lines3,
+                                              p.threeViewCameras(), cv::noArray(), p.R12, p.t12, R, t) > 0;
 }
 
 bool refineFrom(const Problem& p, cv::Mat& R, cv::Mat& t)
 {
     const double rms = cv::tripose::refinePoseLinePoint(p.points1, p.points2, p.points3, p.lines1, p.lines2,
-                                                        p.lines3, p.K, cv::noArray(), p.R12, p.t12, R, t);
+                                                        p.lines3, p.threeViewCameras(), cv::noArray(), p.R12, p.t12,
+                                                        R, t);
     return std::isfinite(rms);
+}
+
+bool ransacSolve(const Problem& p, const Options& o, cv::Mat& R, cv::Mat& t)
+{
+    return cv::tripose::estimatePoseLinePointRansac(p.points1, p.points2, p.points3, p.lines1, p.lines2, p.lines3,
+                                                    p.threeViewCameras(), cv::noArray(), p.R12, p.t12, R, t,
+                                                    ransacParams(o)) > 0;
+}
+
+// The stereo functions on the four views.
+
+bool stereoSolve(const Problem& p, int method, cv::Mat& R, cv::Mat& t)
+{
+    return cv::tripose::estimatePoseLinePointStereo(p.points1, p.points2, p.points3, p.points4, p.lines1, p.lines2,
+                                                    p.lines3, p.lines4, p.K, cv::noArray(), p.R12, p.t12, R, t,
+                                                    method) > 0;
+}
+
+bool stereoRefineFrom(const Problem& p, cv::Mat& R, cv::Mat& t)
+{
+    const double rms = cv::tripose::refinePoseLinePointStereo(p.points1, p.points2, p.points3, p.points4, p.lines1,
+                                                              p.lines2, p.lines3, p.lines4, p.K, cv::noArray(), p.R12,
+                                                              p.t12, R, t);
+    return std::isfinite(rms);
+}
+
+bool stereoRansacSolve(const Problem& p, const Options& o, cv::Mat& R, cv::Mat& t)
+{
+    return cv::tripose::estimatePoseLinePointStereoRansac(p.points1, p.points2, p.points3, p.points4, p.lines1,
+                                                          p.lines2, p.lines3, p.lines4, p.K, cv::noArray(), p.R12,
+                                                          p.t12, R, t, ransacParams(o)) > 0;
+}
+
+//! Starts from the ground truth and refines with @p refine: the accuracy limit of the cost.
+bool fromTruth(const Problem& p, cv::Mat& R, cv::Mat& t, bool (*refine)(const Problem&, cv::Mat&, cv::Mat&))
+{
+    R = p.R.clone();
+    t = p.t.clone();
+    return refine(p, R, t);
 }
 
 bool triangulateThenPnP(const Problem& p, int flags, cv::Mat& R, cv::Mat& t)
@@ -338,6 +474,7 @@ bool applies(const std::string& method, const Problem& p)
 {
     if (method == "tri+sqpnp") return p.points1.rows >= 3;
     if (method == "tri+epnp") return p.points1.rows >= 4;
+    if (method == "tri+iterative") return p.points1.rows >= 6;
     return true;
 }
 
@@ -347,26 +484,32 @@ Result runMethod(const std::string& method, const Problem& p, const Options& o)
     {
         if (method == "linear")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return linearSolve(p, R, t); });
-        if (method == "linear+refine")
+        if (method == "linear+refine" || method == "three_view_linear+refine")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return linearSolve(p, R, t) && refineFrom(p, R, t); });
         if (method == "ml_from_truth")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return fromTruth(p, R, t, refineFrom); });
+        if (method == "ransac" || method == "three_view_ransac")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return ransacSolve(p, o, R, t); });
+        if (method == "stereo_linear")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return stereoSolve(p, cv::tripose::POSE_LINEAR, R, t); });
+        if (method == "stereo_multi_start")
+            return timed(p, o.repeats,
+                         [&](cv::Mat& R, cv::Mat& t) { return stereoSolve(p, cv::tripose::POSE_LINEAR_REFINE, R, t); });
+        if (method == "stereo_linear+refine")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) {
-                R = p.R.clone(); t = p.t.clone();
-                return refineFrom(p, R, t);
+                return stereoSolve(p, cv::tripose::POSE_LINEAR, R, t) && stereoRefineFrom(p, R, t);
             });
-        if (method == "ransac")
-            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) {
-                cv::tripose::RansacParams params;
-                params.threshold = o.threshold;
-                params.seed = o.seed;
-                return cv::tripose::estimatePoseLinePointRansac(p.points1, p.points2, p.points3, p.lines1, p.lines2,
-                                                                p.lines3, p.K, cv::noArray(), p.R12, p.t12, R, t,
-                                                                params) > 0;
-            });
+        if (method == "stereo_ransac")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return stereoRansacSolve(p, o, R, t); });
+        if (method == "stereo_ml_from_truth")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return fromTruth(p, R, t, stereoRefineFrom); });
         if (method == "tri+sqpnp")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_SQPNP, R, t); });
         if (method == "tri+epnp")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_EPNP, R, t); });
+        if (method == "tri+iterative")
+            return timed(p, o.repeats,
+                         [&](cv::Mat& R, cv::Mat& t) { return triangulateThenPnP(p, cv::SOLVEPNP_ITERATIVE, R, t); });
     }
     catch (const cv::Exception& e)
     {
@@ -421,11 +564,16 @@ std::string inputsJson(const Problem& p)
     const cv::Mat X = triangulatePoints12(p);
     const cv::Mat L = triangulateLines12(p);
     const double triUs = 1e6 * double(cv::getTickCount() - t0) / cv::getTickFrequency();
-    std::string s = "{\"K\":[" + matrix(p.K[0]) + "," + matrix(p.K[1]) + "," + matrix(p.K[2]) + "]";
+    std::string s = "{\"K\":[";
+    for (size_t v = 0; v < p.K.size(); ++v)
+        s += (v ? "," : "") + matrix(p.K[v]);
+    s += "]";
     s += ",\"R12\":" + matrix(p.R12) + ",\"t12\":" + matrix(p.t12.reshape(1, 3));
     s += ",\"R_gt\":" + matrix(p.R) + ",\"t_gt\":" + matrix(p.t.reshape(1, 3));
     s += ",\"points1\":" + matrix(p.points1) + ",\"points2\":" + matrix(p.points2) + ",\"points3\":" + matrix(p.points3);
     s += ",\"lines1\":" + matrix(p.lines1) + ",\"lines2\":" + matrix(p.lines2) + ",\"lines3\":" + matrix(p.lines3);
+    if (p.stereo())
+        s += ",\"points4\":" + matrix(p.points4) + ",\"lines4\":" + matrix(p.lines4);
     s += ",\"points3d_12\":" + matrix(X) + ",\"lines3d_12\":" + matrix(L) + ",\"triangulation_us\":" + num(triUs) + "}";
     return s;
 }
@@ -453,7 +601,11 @@ int main(int argc, char** argv)
             vgg = cv::tripose::support::loadVggTriplet(o.sequence, o.views[0], o.views[1], o.views[2]);
         for (int trial = 0; trial < o.trials; ++trial)
         {
-            const Problem p = o.source == "vgg" ? vggProblem(vgg, o, trial) : syntheticProblem(o, trial);
+            const Problem p = o.source == "vgg"      ? vggProblem(vgg, o, trial)
+                              : o.source == "stereo" ? syntheticStereoProblem(o, trial)
+                                                     : syntheticProblem(o, trial);
+            // Stereo: the methods on views 1-3 get the features the left image at B sees.
+            const Problem left = p.stereo() ? seenInView3(p) : p;
             std::string line = "{\"source\":\"" + o.source + "\",\"trial\":" + std::to_string(trial) +
                                ",\"seed\":" + std::to_string(o.seed) + ",\"points\":" + std::to_string(o.points) +
                                ",\"lines\":" + std::to_string(o.lines) + ",\"repeats\":" + std::to_string(o.repeats) +
@@ -462,6 +614,9 @@ int main(int argc, char** argv)
                 line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"motion\":\"" +
                         (o.motion == cv::tripose::support::MOTION_SMALL ? "small" : "large") + "\",\"baseline12_fraction\":" +
                         num(o.baseline12Fraction) + ",\"planar\":" + (o.planar ? "true" : "false");
+            else if (o.source == "stereo")
+                line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"missing\":" +
+                        num(o.missing);
             else
                 line += ",\"sequence\":\"" + o.sequence.substr(o.sequence.find_last_of('/') + 1) + "\",\"views\":[" +
                         std::to_string(o.views[0]) + "," + std::to_string(o.views[1]) + "," +
@@ -470,9 +625,10 @@ int main(int argc, char** argv)
             bool first = true;
             for (const std::string& m : o.methods)
             {
-                if (!applies(m, p))
+                const Problem& input = m.compare(0, 7, "stereo_") == 0 ? p : left;
+                if (!applies(m, input))
                     continue;
-                const Result r = runMethod(m, p, o);
+                const Result r = runMethod(m, input, o);
                 line += std::string(first ? "" : ",") + "\"" + m + "\":{\"ok\":" + (r.ok ? "true" : "false") +
                         ",\"rot_deg\":" + (r.ok ? num(r.rot) : "null") + ",\"t_rel\":" + (r.ok ? num(r.trans) : "null") +
                         ",\"time_us\":" + num(r.timeUs) + (r.error.empty() ? "" : ",\"error\":\"" + jsonEscape(r.error) + "\"") + "}";
@@ -480,7 +636,7 @@ int main(int argc, char** argv)
             }
             line += "}";
             if (o.dumpInputs)
-                line += ",\"inputs\":" + inputsJson(p);
+                line += ",\"inputs\":" + inputsJson(left);
             std::cout << line << "}\n" << std::flush;
         }
     }

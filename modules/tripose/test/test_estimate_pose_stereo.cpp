@@ -345,6 +345,56 @@ TEST(Tripose_Stereo, refinement_of_noisy_data_reaches_the_maximum_likelihood_lim
     EXPECT_LT(median(fromLinear), 0.5 * median(linear));
 }
 
+TEST(Tripose_Stereo, ransac_reaches_the_four_view_limit_and_beats_the_alternatives)
+{
+    // The regime of issue 14 (the scene generator's defaults: a 0.1-0.5 m rig, structure at 5-30 m,
+    // motion 0.3-3 m), 1 px noise, every feature seen in both time-B views. The criterion: the
+    // median rotation error of the robust estimate within 5 % of the four-view limit (refinement
+    // from the true pose), and below the three-view estimate on views 1-3 (the right image at B
+    // must help) and triangulation from the rig at A + SQPnP on the left image at B. Measured
+    // over 500 scenes per mix (doc/evaluation.md, Stereo rig): 1.00x the limit. A single
+    // refinement from the linear estimate (refinePoseLinePointStereo) does not meet it with
+    // 10 + 10 features: the linear estimate is degrees off in some scenes, in another basin.
+    const int scenes = 30;
+    for (int n : { 4, 10 })
+    {
+        std::vector<double> ransac, limit, threeView, pnp;
+        for (int seed = 0; seed < scenes; ++seed)
+        {
+            const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(n, n, 900 + seed, 1.0));
+            Mat R, t, pointMask, lineMask;
+            ASSERT_GT(ransacStereo(s, R, t, pointMask, lineMask, seed), 0) << "seed " << 900 + seed;
+            ransac.push_back(poseError(R, t, s.R, s.t).rotationDeg);
+
+            R = s.R.clone();
+            t = s.t.clone();
+            ASSERT_TRUE(std::isfinite(refineStereo(s, R, t)));
+            limit.push_back(poseError(R, t, s.R, s.t).rotationDeg);
+
+            tripose::RansacParams params;
+            params.seed = seed;
+            const std::vector<Mat> K123(s.cameraMatrices.begin(), s.cameraMatrices.begin() + 3);
+            ASSERT_GT(tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
+                                                           s.lines3, K123, noArray(), s.R12, s.t12, R, t, params),
+                      0);
+            threeView.push_back(poseError(R, t, s.R, s.t).rotationDeg);
+
+            const Mat X = triangulateFromKnownPair(s.cameraMatrices, s.R12, s.t12, s.points1, s.points2);
+            Mat rvec;
+            ASSERT_TRUE(solvePnP(X, s.points3, s.cameraMatrices[2], noArray(), rvec, t, false, SOLVEPNP_SQPNP));
+            Rodrigues(rvec, R);
+            pnp.push_back(poseError(R, t, s.R, s.t).rotationDeg);
+        }
+        std::cout << "[ stereo   ] " << n << "P+" << n << "L, 1 px, " << scenes
+                  << " scenes: median rotation error RANSAC " << median(ransac) << " deg, four-view limit "
+                  << median(limit) << " deg, three-view RANSAC on views 1-3 " << median(threeView)
+                  << " deg, triangulation + SQPnP " << median(pnp) << " deg" << std::endl;
+        EXPECT_LE(median(ransac), 1.05 * median(limit)) << n << "P+" << n << "L";
+        EXPECT_LT(median(ransac), median(threeView)) << n << "P+" << n << "L";
+        EXPECT_LT(median(ransac), median(pnp)) << n << "P+" << n << "L";
+    }
+}
+
 //! Moves the points @p which of @p s onto the 3D line through points 0 and 1, observed exactly in all four views.
 void placeOnLine(SyntheticStereoScene& s, const std::vector<int>& which)
 {

@@ -43,6 +43,21 @@ inline Vec3d toVec3(const Mat& m)
     return Vec3d(m.ptr<double>());
 }
 
+//! Nx3 points triangulated (DLT, cv::triangulatePoints) from the first two views, view 1 at [I|0]
+//! and view 2 at [R12|t12]: the structure a user without this module would start from.
+inline Mat triangulateFromKnownPair(const std::vector<Mat>& K, const Mat& R12, const Mat& t12, const Mat& points1,
+                                    const Mat& points2)
+{
+    Mat P1 = K[0] * Mat::eye(3, 4, CV_64F), P2(3, 4, CV_64F);
+    R12.copyTo(P2.colRange(0, 3));
+    t12.copyTo(P2.col(3));
+    P2 = K[1] * P2;
+    Mat X4, X;
+    triangulatePoints(P1, P2, points1.t(), points2.t(), X4);
+    convertPointsFromHomogeneous(X4.t(), X);
+    return X.reshape(1, points1.rows);
+}
+
 using tripose::support::PoseError;
 using tripose::support::poseError;
 

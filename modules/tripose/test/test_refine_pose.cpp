@@ -296,18 +296,10 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
 //! Triangulation from views 1-2, then the pose refined on view 3 alone: what a user would do without this module.
 void triangulateThenPnpRefine(const SyntheticScene& s, Mat& R, Mat& t)
 {
-    const Mat K1 = s.cameraMatrices[0], K2 = s.cameraMatrices[1], K3 = s.cameraMatrices[2];
-    Mat P1 = K1 * Mat::eye(3, 4, CV_64F), P2(3, 4, CV_64F);
-    s.R12.copyTo(P2.colRange(0, 3));
-    s.t12.copyTo(P2.col(3));
-    P2 = K2 * P2;
-    Mat X4;
-    triangulatePoints(P1, P2, s.points1.t(), s.points2.t(), X4);
-    Mat X;
-    convertPointsFromHomogeneous(X4.t(), X);
+    const Mat X = triangulateFromKnownPair(s.cameraMatrices, s.R12, s.t12, s.points1, s.points2);
     Mat rvec;
     Rodrigues(R, rvec);
-    solvePnPRefineLM(X, s.points3, K3, noArray(), rvec, t);
+    solvePnPRefineLM(X, s.points3, s.cameraMatrices[2], noArray(), rvec, t);
     Rodrigues(rvec, R);
 }
 

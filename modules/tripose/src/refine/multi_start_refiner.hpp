@@ -45,6 +45,12 @@ public:
             refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
             return true;
         }
+        // The estimator asks again from the pose this returned, on the same features, when its
+        // inliers settle at once and then settling from all features finds them all inliers: the
+        // starts would be those of the previous call, moved by its refinement.
+        if (last_.valid && inliers.points == last_.inliers.points && inliers.lines == last_.inliers.lines &&
+            pose.R == last_.result.R && pose.t == last_.result.t)
+            return true;
         std::vector<CameraPose> starts(1, pose);
         if (solver_ && inliers.size() >= solver_->nonMinimalSize())
             solver_->estimateNonMinimal(inliers, starts);
@@ -53,14 +59,27 @@ public:
         if (!best.finite())
             return false;
         pose = best.pose;
+        last_.valid = true;
+        last_.inliers = inliers;
+        last_.result = pose;
         return true;
     }
 
 private:
+    //! The previous multi-start refinement: its features and result. State of one estimation:
+    //! a refiner is built per call and not shared between threads.
+    struct LastRefinement
+    {
+        bool valid = false;
+        FeatureSubset inliers;
+        CameraPose result;
+    };
+
     const ViewSet& set_;
     const RefineParams& params_;
     const PoseSolver* solver_;
     bool severalBasins_;
+    mutable LastRefinement last_;
 };
 
 } // namespace detail
