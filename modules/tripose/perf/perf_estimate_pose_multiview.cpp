@@ -15,14 +15,7 @@ using tripose::support::SyntheticMultiViewScene;
 //! points moved 40 px away: a tracker's frame.
 void perturb(SyntheticMultiViewScene& s, double outliers)
 {
-    RNG rng(17);
-    for (std::vector<Mat>* kind : { &s.points, &s.lines })
-        for (Mat& m : *kind)
-        {
-            Mat noise(m.size(), CV_64F);
-            rng.fill(noise, RNG::NORMAL, 0.0, 1.0);
-            m = m + noise; // NaN rows stay NaN
-        }
+    s.addNoise(1.0, 17);
     Mat& newView = s.points.back();
     for (int i = 0; i < cvRound(outliers * newView.rows); ++i)
         newView.at<double>(i, 0) += 40.0;

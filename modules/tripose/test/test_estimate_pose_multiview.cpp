@@ -259,14 +259,7 @@ TEST(Tripose_MultiView, one_free_view_is_refinePoseMultiView)
 {
     // With noise, so that the two must agree beyond exactness: the same cost and the same minimum.
     MultiViewScene s(3, 15, 15, 41);
-    RNG rng(8);
-    for (std::vector<Mat>* kind : { &s.points, &s.lines })
-        for (Mat& m : *kind)
-        {
-            Mat noise(m.size(), CV_64F);
-            rng.fill(noise, RNG::NORMAL, 0.0, 1.0);
-            m = m + noise; // NaN rows stay NaN
-        }
+    s.addNoise(1.0, 8);
     Mat rvec;
     Rodrigues(Mat(s.R), rvec);
     rvec += Mat(Vec3d(0.01, 0.0, -0.01));

@@ -102,6 +102,18 @@ SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, in
         lines.clear();
 }
 
+void SyntheticMultiViewScene::addNoise(double sigma, uint64 seed)
+{
+    RNG rng(seed);
+    for (std::vector<Mat>* kind : { &points, &lines })
+        for (Mat& m : *kind)
+        {
+            Mat noise(m.size(), CV_64F);
+            rng.fill(noise, RNG::NORMAL, 0.0, sigma);
+            m = m + noise;
+        }
+}
+
 } // namespace support
 } // namespace tripose
 } // namespace cv

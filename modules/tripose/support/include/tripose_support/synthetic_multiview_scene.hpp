@@ -32,6 +32,9 @@ struct SyntheticMultiViewScene
     Vec3d t;                        //!< The new view's world translation.
 
     SyntheticMultiViewScene(int numKnown, int numPoints, int numLines, uint64 seed, int minSeen = 2);
+
+    //! Adds Gaussian noise of standard deviation @p sigma (px) to every observed coordinate (NaN rows stay NaN).
+    void addNoise(double sigma, uint64 seed);
 };
 
 } // namespace support
