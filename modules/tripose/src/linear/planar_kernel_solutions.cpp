@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "../geometry/plane_fit.hpp"
 #include "line_end_points.hpp"
 #include "planar_kernel_solutions.hpp"
 
@@ -103,92 +104,36 @@ bool visitStructure(const ViewSet& set, const CameraPose& pose12, const std::vec
     return true;
 }
 
-/** First and second moments of positions, accumulated about the first one: about the origin the
-covariance would be a difference of two moments of the size of the squared depth, whose rounding
-alone exceeds the planarity test for thin structure. */
-struct PlaneFit
-{
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero(), sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-    int count = 0;
-
-    void add(const Eigen::Vector3d& X)
-    {
-        if (count == 0)
-            origin = X;
-        const Eigen::Vector3d d = X - origin;
-        sum += d;
-        second.noalias() += d * d.transpose();
-        ++count;
-    }
-
-    /** The least-squares plane: variances along its normal and the two directions within it
-    (ascending: @p extents(0) is the thickness squared), its unit @p normal and a point on it. */
-    bool solve(Eigen::Vector3d& extents, Eigen::Vector3d& normal, Eigen::Vector3d& centre) const
-    {
-        if (count < 4)
-            return false;
-        const Eigen::Vector3d mean = sum / count;
-        const Eigen::Matrix3d covariance = second / count - mean * mean.transpose();
-        if (!covariance.allFinite())
-            return false;
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
-        if (eigen.info() != Eigen::Success)
-            return false;
-        extents = eigen.eigenvalues();
-        normal = eigen.eigenvectors().col(0);
-        centre = origin + mean;
-        return extents.allFinite() && normal.allFinite();
-    }
-};
-
 } // namespace
 
 StructureFlatness structurePlane(const ViewSet& set, const CameraPose& pose12, const std::vector<int>* pointIndices,
                                  const std::vector<int>* lineIndices, Eigen::Vector4d& plane)
 {
     // Planar to rounding: every position counts.
-    PlaneFit fit;
-    Eigen::Vector3d extents, normal, centre;
-    if (!visitStructure(set, pose12, pointIndices, lineIndices, [&](const Eigen::Vector3d& X) { fit.add(X); }) ||
-        !fit.solve(extents, normal, centre))
+    PlaneAccumulator all;
+    Plane fit;
+    if (!visitStructure(set, pose12, pointIndices, lineIndices, [&](const Eigen::Vector3d& X) { all.add(X); }) ||
+        !all.fit(fit))
         return STRUCTURE_GENERAL;
     // A line of structure (second extent near zero too) lies on many planes and fixes none.
-    if (!(extents(1) > kPlanarTolerance * kPlanarTolerance * extents(2)))
+    if (!(fit.extents(1) > kPlanarTolerance * kPlanarTolerance * fit.extents(2)))
         return STRUCTURE_GENERAL;
     StructureFlatness flatness = STRUCTURE_PLANAR;
-    if (!(extents(0) <= kPlanarTolerance * kPlanarTolerance * extents(1)))
+    if (!(fit.extents(0) <= kPlanarTolerance * kPlanarTolerance * fit.extents(1)))
     {
-        if (!(extents(0) <= kTrimGate * kTrimGate * extents(1)))
+        if (!(fit.extents(0) <= kTrimGate * kTrimGate * fit.extents(1)))
             return STRUCTURE_GENERAL;
-        // Near a plane: noisy positions on a plane, of which a few (a point near the epipole of
-        // views 1-2, a line near an epipolar plane) triangulate far off it and tilt the fit. The
-        // plane is fitted again without the positions beyond three times the median distance from
-        // the previous fit, a few times, so that it settles on the bulk of the structure.
+        // Near a plane: judged on the bulk of the positions (trimPlaneFit()).
         std::vector<Eigen::Vector3d> structure;
         visitStructure(set, pose12, pointIndices, lineIndices,
                        [&](const Eigen::Vector3d& X) { structure.push_back(X); });
-        std::vector<double> distances(structure.size()), sorted;
-        for (int round = 0; round < kTrimRounds; ++round)
-        {
-            for (size_t k = 0; k < structure.size(); ++k)
-                distances[k] = std::abs(normal.dot(structure[k] - centre));
-            sorted = distances;
-            std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-            const double limit = 3 * sorted[sorted.size() / 2];
-            PlaneFit trimmed;
-            for (size_t k = 0; k < structure.size(); ++k)
-                if (distances[k] <= limit)
-                    trimmed.add(structure[k]);
-            if (!trimmed.solve(extents, normal, centre))
-                return STRUCTURE_GENERAL;
-        }
-        if (!(extents(0) <= kNearPlanarTolerance * kNearPlanarTolerance * extents(1)) ||
-            !(extents(1) > kPlanarTolerance * kPlanarTolerance * extents(2)))
+        if (!trimPlaneFit(structure, kTrimRounds, fit) ||
+            !(fit.extents(0) <= kNearPlanarTolerance * kNearPlanarTolerance * fit.extents(1)) ||
+            !(fit.extents(1) > kPlanarTolerance * kPlanarTolerance * fit.extents(2)))
             return STRUCTURE_GENERAL;
         flatness = STRUCTURE_NEAR_PLANAR;
     }
-    plane << normal, -normal.dot(centre);
+    plane << fit.normal, -fit.normal.dot(fit.centre);
     return plane.allFinite() ? flatness : STRUCTURE_GENERAL;
 }
 

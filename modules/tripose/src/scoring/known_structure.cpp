@@ -6,11 +6,20 @@
 
 #include <Eigen/Dense>
 
+#include "../geometry/plane_fit.hpp"
 #include "known_structure.hpp"
 
 namespace cv {
 namespace tripose {
 namespace detail {
+
+namespace {
+
+// Rounds of trimPlaneFit() before judging the thickness: noisy planar structure triangulated from
+// the known pair has a few positions far off its plane.
+constexpr int kThicknessTrimRounds = 3;
+
+} // namespace
 
 double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
 {
@@ -49,17 +58,13 @@ double structureThickness(const ViewSet& set, const PoseScorer& scorer)
         if (scorer.hasKnownLine(i))
             for (int end = 0; end < 2; ++end)
                 X.push_back(scorer.knownLineEnd(i, end));
-    if (X.size() < 4)
+    PlaneAccumulator all;
+    for (const Eigen::Vector3d& x : X)
+        all.add(x);
+    Plane plane;
+    if (!all.fit(plane) || !trimPlaneFit(X, kThicknessTrimRounds, plane))
         return 1.0;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (const Eigen::Vector3d& x : X)
-        mean += x;
-    mean /= (double)X.size();
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    for (const Eigen::Vector3d& x : X)
-        scatter.noalias() += (x - mean) * (x - mean).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter, Eigen::EigenvaluesOnly);
-    const Eigen::Vector3d values = eigen.eigenvalues().cwiseMax(0.0); // ascending
+    const Eigen::Vector3d values = plane.extents.cwiseMax(0.0); // ascending
     if (!(values(2) > 0))
         return 1.0;
     return std::sqrt(values(0) / values(2));
