@@ -369,8 +369,12 @@ TEST(Tripose_RigSolver, noise_one_pixel_ten_points_ten_lines)
     for (int s = 0; s < scenes; ++s)
     {
         const RigScene scene = makeRigScene(repeat(kPointBoth, 10) + repeat(kLineBoth, 10), 0xa0000 + s, 1.0);
+        // One candidate, or two (both signs of the solution) where noise leaves its rotation block
+        // far from a scaled rotation; the first fits the rows best.
         std::vector<CameraPose> poses;
-        ASSERT_EQ(rigPoseCandidates(scene.set, poses), 1);
+        const int n = rigPoseCandidates(scene.set, poses);
+        ASSERT_GE(n, 1);
+        ASSERT_LE(n, 2);
         ASSERT_TRUE(poses[0].allFinite());
         const Error2 e = poseErrorOf(scene.truth, poses[0]);
         rotation.push_back(e.rotation * 180 / CV_PI);

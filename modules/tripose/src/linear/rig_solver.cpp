@@ -24,6 +24,11 @@ pose (collinear points, a line with no parallax at time B) and the kernel is wid
 */
 constexpr double kRankTolerance = 1e-12;
 
+/** Determinant of the over-determined solution's rotation block, divided by the cube of its scale,
+beyond which its sign alone fixes the sign of the solution: 1 for a scaled rotation, near 0 where
+noise leaves the block far from one. */
+constexpr double kClearDeterminant = 0.5;
+
 struct ScoredCandidate
 {
     CameraPose pose;
@@ -112,7 +117,18 @@ int rigPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses, const 
         const double largest = std::abs(pivoted.matrixQR()(0, 0)), smallest = std::abs(pivoted.matrixQR()(11, 11));
         if (!(largest > 0) || !(smallest > kRankTolerance * largest))
             return 0;
-        solutions.push_back(pivoted.solve(c));
+        // The rig's translation fixes the scale of v only through the constant term, weakly for a
+        // short baseline at a long depth: noise can leave v near -lambda v_true, whose nearest
+        // rotation is turned by about pi. The sign of the rotation block's determinant tells (a
+        // rotation has +1 times the cube of its scale, a negated one -1) unless the block is far
+        // from a scaled rotation; then both signs go to the selection, where cheirality decides.
+        const Vector12d v = pivoted.solve(c);
+        const Eigen::Map<const Eigen::Matrix3d> block(v.data());
+        const double scale = block.norm() / std::sqrt(3.0);
+        const double det = block.determinant() / (scale * scale * scale);
+        solutions.push_back(det < 0 ? Vector12d(-v) : v);
+        if (!(std::abs(det) > kClearDeterminant))
+            solutions.push_back(det < 0 ? v : Vector12d(-v));
     }
     else
     {
