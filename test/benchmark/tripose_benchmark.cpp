@@ -74,13 +74,13 @@ int main(int argc, char** argv)
     }
     cv::setNumThreads(1);
 
-    typedef std::function<bool(const cv::tripose::support::SyntheticScene&, cv::Mat&, cv::Mat&)> Solver;
+    typedef std::function<bool(const cv::tripose::support::SyntheticScene&, int, cv::Mat&, cv::Mat&)> Solver;
     const std::vector<std::pair<std::string, Solver>> methods = {
-        { "linear", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "linear", [](const cv::tripose::support::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
               return cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                         s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) > 0;
           } },
-        { "lin+refine", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "lin+refine", [](const cv::tripose::support::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
               if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                      s.cameraMatrices, cv::noArray(), s.R12, s.t12, R, t) == 0)
                   return false;
@@ -88,10 +88,10 @@ int main(int argc, char** argv)
                                                                     s.lines2, s.lines3, s.cameraMatrices,
                                                                     cv::noArray(), s.R12, s.t12, R, t));
           } },
-        { "tri+SQPnP", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "tri+SQPnP", [](const cv::tripose::support::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
               return triangulateThenPnP(s, cv::SOLVEPNP_SQPNP, R, t);
           } },
-        { "tri+EPnP", [](const cv::tripose::support::SyntheticScene& s, cv::Mat& R, cv::Mat& t) {
+        { "tri+EPnP", [](const cv::tripose::support::SyntheticScene& s, int, cv::Mat& R, cv::Mat& t) {
               return triangulateThenPnP(s, cv::SOLVEPNP_EPNP, R, t);
           } },
     };
@@ -118,31 +118,14 @@ int main(int argc, char** argv)
             params.motion = motion;
             params.seed = 1000 + k;
             const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
-            std::vector<std::vector<double>> perScene(M);
-            std::vector<cv::Mat> Rs(M), ts(M);
-            std::vector<bool> ok(M, false);
-            // Interleave the methods so that frequency changes hit all of them alike.
-            for (int r = 0; r < repeats; ++r)
-                for (size_t m = 0; m < M; ++m)
-                {
-                    cv::Mat R, t;
-                    const int64 t0 = cv::getTickCount();
-                    bool good = false;
-                    try { good = methods[m].second(s, R, t); } catch (const cv::Exception&) { good = false; }
-                    const int64 t1 = cv::getTickCount();
-                    perScene[m].push_back(1e6 * double(t1 - t0) / cv::getTickFrequency());
-                    ok[m] = good && !R.empty();
-                    Rs[m] = R;
-                    ts[m] = t;
-                }
+            std::vector<double> sceneTimes;
+            std::vector<cv::tripose::support::PoseError> sceneErrors;
+            tripose_benchmark::runInterleaved(s, k, methods, repeats, 1e6, sceneTimes, sceneErrors);
             for (size_t m = 0; m < M; ++m)
             {
-                times[m].push_back(median(perScene[m]));
-                cv::tripose::support::PoseError e = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
-                if (ok[m])
-                    e = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
-                rot[m].push_back(e.rotationDeg);
-                trans[m].push_back(e.relativeTranslation);
+                times[m].push_back(sceneTimes[m]);
+                rot[m].push_back(sceneErrors[m].rotationDeg);
+                trans[m].push_back(sceneErrors[m].relativeTranslation);
             }
         }
         const double base = median(times[0]);

@@ -123,7 +123,9 @@ StructureFlatness structurePlane(const ViewSet& set, const CameraPose& pose12, c
     {
         if (!(fit.extents(0) <= kTrimGate * kTrimGate * fit.extents(1)))
             return STRUCTURE_GENERAL;
-        // Near a plane: judged on the bulk of the positions (trimPlaneFit()).
+        // Near a plane: judged on the bulk of the positions (trimPlaneFit()). They are computed a
+        // second time here rather than stored by the first pass, which every call makes and which
+        // then needs no allocation.
         std::vector<Eigen::Vector3d> structure;
         visitStructure(set, pose12, pointIndices, lineIndices,
                        [&](const Eigen::Vector3d& X) { structure.push_back(X); });

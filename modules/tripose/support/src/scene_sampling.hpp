@@ -68,6 +68,16 @@ Point2d randomImagePoint(RNG& rng, const Size& size);
 //! Distance of @p x to the infinite line through @p a and @p b.
 double distanceToLine(const Point2d& x, const Point2d& a, const Point2d& b);
 
+//! Creates the N x 2 point and M x 4 segment observation matrices (CV_64F) of @p views views.
+inline void createObservations(Mat* const* points, Mat* const* lines, int views, int N, int M)
+{
+    for (int v = 0; v < views; ++v)
+    {
+        points[v]->create(N, 2, CV_64F);
+        lines[v]->create(M, 4, CV_64F);
+    }
+}
+
 /** Checks one 3x3 intrinsic matrix given to a generator: 1-channel, finite, last row (0, 0, k) with
 k != 0 (so that the third projected coordinate is the depth); returns it scaled to k = 1. Raises
 cv::Exception "<function>: <params>::<name>: ..." otherwise.

@@ -244,11 +244,7 @@ SyntheticScene generateSyntheticScene(const SyntheticSceneParams& params)
     scene.lines3d.create(M, 6, CV_64F);
     Mat* pointObs[3] = { &scene.points1, &scene.points2, &scene.points3 };
     Mat* lineObs[3] = { &scene.lines1, &scene.lines2, &scene.lines3 };
-    for (int v = 0; v < 3; ++v)
-    {
-        pointObs[v]->create(N, 2, CV_64F);
-        lineObs[v]->create(M, 4, CV_64F);
-    }
+    createObservations(pointObs, lineObs, 3, N, M);
 
     // Points: uniform in the cube, kept if inside every image and in front of every camera.
     RNG pointRng = makeStream(params.seed, STREAM_POINTS);

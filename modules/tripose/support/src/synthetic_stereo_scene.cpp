@@ -226,11 +226,7 @@ SyntheticStereoScene generateSyntheticStereoScene(const SyntheticStereoParams& p
     scene.lines3d.create(M, 6, CV_64F);
     Mat* pointObs[4] = { &scene.points1, &scene.points2, &scene.points3, &scene.points4 };
     Mat* lineObs[4] = { &scene.lines1, &scene.lines2, &scene.lines3, &scene.lines4 };
-    for (int v = 0; v < 4; ++v)
-    {
-        pointObs[v]->create(N, 2, CV_64F);
-        lineObs[v]->create(M, 4, CV_64F);
-    }
+    createObservations(pointObs, lineObs, 4, N, M);
 
     RNG pointRng = makeStream(params.seed, STREAM_POINTS);
     for (int i = 0; i < N; ++i)

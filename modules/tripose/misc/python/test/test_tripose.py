@@ -53,6 +53,19 @@ def project(K, R, t, X):
     return p[:, :2] / p[:, 2:], c[:, 2]
 
 
+def sample(n, draw, keep):
+    """n rows of draw(batch) that keep() accepts (the scene generators' rejection sampling)."""
+    rows = [draw(0)[:0]]
+    for _ in range(1000):
+        if sum(len(r) for r in rows) >= n:
+            break
+        candidates = draw(max(64, 4 * n))
+        rows.append(candidates[keep(candidates)])
+    rows = np.concatenate(rows)
+    assert len(rows) >= n, 'the scene generator found too few visible features'
+    return rows[:n]
+
+
 def make_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, K=None, image_size=(640, 480)):
     """The synthetic protocol of the paper (Qadir & Neubert, Sec. IV-A) in numpy: points and segment
     end points uniform in a 10 m cube at the origin, three cameras (f = 800 px unless K is given) at
@@ -84,18 +97,6 @@ def make_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, K=None, ima
             x, depth = project(K, R, t, X)
             ok &= (depth > 0) & np.all((x >= margin) & (x <= np.array([width, height]) - 1 - margin), axis=1)
         return ok
-
-    def sample(n, draw, keep):
-        """n rows of draw(batch) that keep() accepts."""
-        rows = [draw(0)[:0]]
-        for _ in range(1000):
-            if sum(len(r) for r in rows) >= n:
-                break
-            candidates = draw(max(64, 4 * n))
-            rows.append(candidates[keep(candidates)])
-        rows = np.concatenate(rows)
-        assert len(rows) >= n, 'the scene generator found too few visible features'
-        return rows[:n]
 
     def long_segments(S):
         ok = visible(S[:, :3]) & visible(S[:, 3:])
@@ -188,17 +189,6 @@ def make_rig_scene(num_points, num_lines, seed, noise=0.0, outliers=0.0, missing
         for Rv, tv in poses:
             ok &= np.linalg.norm(project(K, Rv, tv, S[:, 3:])[0] - project(K, Rv, tv, S[:, :3])[0], axis=1) >= 20.0
         return ok
-
-    def sample(n, draw, keep):
-        rows = [draw(1)[:0]]
-        for _ in range(1000):
-            if sum(len(r) for r in rows) >= n:
-                break
-            candidates = draw(max(64, 4 * n))
-            rows.append(candidates[keep(candidates)])
-        rows = np.concatenate(rows)
-        assert len(rows) >= n, 'the rig scene generator found too few visible features'
-        return rows[:n]
 
     draw_segments = lambda n: np.hstack([draw_points(n), draw_points(n)])
     scene = Scene()

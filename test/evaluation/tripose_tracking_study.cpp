@@ -5,10 +5,10 @@
 // The Corridor analysis of doc/tracking.md: where registration and maximum-likelihood refinement
 // put the frames of a VGG sequence when frames 0 and 1 are given.
 //
-//   tripose_tracking_sweeps --data <sequence> --floor
+//   tripose_tracking_study --data <sequence> --floor
 //       each frame from 2 on registered (RANSAC + refinement) against every other frame at the
 //       sequence's poses: the error of registration alone, per frame in % of the path;
-//   tripose_tracking_sweeps --data <sequence> --adjust [--start track.yml] [--loss squared|huber]
+//   tripose_tracking_study --data <sequence> --adjust [--start track.yml] [--loss squared|huber]
 //       every frame from 2 on and the structure refined together (refinePosesMultiView, frames 0
 //       and 1 fixed; Huber loss at 2 px by default), started at the sequence's poses or at the poses
 //       of a tripose_track output: the maximum-likelihood estimate of the whole sequence given
@@ -51,13 +51,13 @@ int main(int argc, char** argv)
             floor = true;
         else
         {
-            std::cerr << "tripose_tracking_sweeps: unknown or incomplete argument " << arg << "\n";
+            std::cerr << "tripose_tracking_study: unknown or incomplete argument " << arg << "\n";
             return 1;
         }
     }
     if (floor == adjust || (loss != "huber" && loss != "squared"))
     {
-        std::cerr << "usage: tripose_tracking_sweeps --data <sequence> (--floor | --adjust [--start track.yml] "
+        std::cerr << "usage: tripose_tracking_study --data <sequence> (--floor | --adjust [--start track.yml] "
                      "[--loss squared|huber])\n";
         return 1;
     }
@@ -111,7 +111,7 @@ int main(int argc, char** argv)
                 fs["poses"] >> poses;
             if (poses.rows != F || poses.cols != 12 || poses.type() != CV_64F || !cv::checkRange(poses.rowRange(2, F)))
             {
-                std::cerr << "tripose_tracking_sweeps: " << start << ": expected poses, " << F
+                std::cerr << "tripose_tracking_study: " << start << ": expected poses, " << F
                           << " x 12 CV_64F, every frame tracked\n";
                 return 1;
             }
@@ -140,7 +140,7 @@ int main(int argc, char** argv)
     }
     catch (const cv::Exception& e)
     {
-        std::cerr << "tripose_tracking_sweeps: " << e.err << "\n";
+        std::cerr << "tripose_tracking_study: " << e.err << "\n";
         return 1;
     }
     return 0;
