@@ -8,8 +8,11 @@ set(TRIPOSE_TS_SHIM_DIR "${CMAKE_CURRENT_LIST_DIR}/ts_shim")
 
 function(tripose_add_module_targets)
   set(module_dir "${CMAKE_CURRENT_SOURCE_DIR}")
-  file(GLOB_RECURSE lib_sources CONFIGURE_DEPENDS "${module_dir}/src/*.cpp")
-  add_library(opencv_tripose ${lib_sources})
+  # The algorithms build as the OpenCV-free core (src/core, its own CMake project); the module is
+  # the adapter around it: the entry points (src/*.cpp) and their OpenCV conversions (src/opencv).
+  add_subdirectory("${module_dir}/src/core" "${CMAKE_CURRENT_BINARY_DIR}/core")
+  file(GLOB adapter_sources CONFIGURE_DEPENDS "${module_dir}/src/*.cpp" "${module_dir}/src/opencv/*.cpp")
+  add_library(opencv_tripose ${adapter_sources} $<TARGET_OBJECTS:tripose_core>)
   add_library(tripose::tripose ALIAS opencv_tripose)
   set_target_properties(opencv_tripose PROPERTIES
     EXPORT_NAME tripose

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates tripose's coefficient kernels (modules/tripose/src/generated/) from the specs.
+"""Regenerates tripose's coefficient kernels (modules/tripose/src/core/generated/) from the specs.
 
     python3 codegen/generate.py           # regenerate in place
     python3 codegen/generate.py --check   # regenerate into a temporary folder, print a unified
@@ -17,7 +17,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
-OUTPUT_DIR = REPO / "modules" / "tripose" / "src" / "generated"
+OUTPUT_DIR = REPO / "modules" / "tripose" / "src" / "core" / "generated"
 
 
 def _ensure_stable_hashing() -> None:
@@ -68,7 +68,7 @@ def diff_against(directory: Path, reference: Path) -> str:
     for name in names:
         old = (reference / name).read_text().splitlines(keepends=True) if (reference / name).exists() else []
         new = (directory / name).read_text().splitlines(keepends=True) if (directory / name).exists() else []
-        rel = f"modules/tripose/src/generated/{name}"
+        rel = f"modules/tripose/src/core/generated/{name}"
         out.extend(difflib.unified_diff(old, new, fromfile=f"a/{rel}", tofile=f"b/{rel}"))
     return "".join(out)
 

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 CODEGEN_DIR = Path(__file__).resolve().parents[1]
-GENERATED_DIR = CODEGEN_DIR.parent / "modules" / "tripose" / "src" / "generated"
+GENERATED_DIR = CODEGEN_DIR.parent / "modules" / "tripose" / "src" / "core" / "generated"
 
 SCRIPT = """
 import sys

@@ -15,17 +15,17 @@ PERF_TEST_P(Tripose_EstimatePoseLinear, estimate,
             testing::Values(FeatureCounts(2, 2), FeatureCounts(4, 4), FeatureCounts(5, 5), FeatureCounts(10, 10),
                             FeatureCounts(45, 45)))
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = get<0>(GetParam());
     params.numLines = get<1>(GetParam());
     params.noiseSigma = 1.0;
     params.seed = 3;
-    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
+    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
     Mat R, t;
     declare.iterations(2000);
     TEST_CYCLE()
     {
-        tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                        s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
     }
     SANITY_CHECK_NOTHING();

@@ -9,7 +9,7 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::SyntheticMultiViewScene;
+using cv::tripose::support::SyntheticMultiViewScene;
 
 //! 1 px of Gaussian noise on every observation and, in the new view, a fraction @p outliers of the
 //! points moved 40 px away: a tracker's frame.
@@ -33,7 +33,7 @@ PERF_TEST_P(Tripose_EstimatePoseMultiView, estimate, testing::Values(MultiViewCo
     declare.iterations(1000);
     TEST_CYCLE()
     {
-        tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t);
+        cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t);
     }
     SANITY_CHECK_NOTHING();
 }
@@ -49,7 +49,7 @@ PERF_TEST_P(Tripose_EstimatePoseMultiViewRansac, estimate, testing::Values(Multi
     declare.iterations(100);
     TEST_CYCLE()
     {
-        tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t);
+        cv::tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t);
     }
     SANITY_CHECK_NOTHING();
 }
@@ -83,7 +83,7 @@ PERF_TEST_P(Tripose_RefinePosesMultiView, refine, testing::Values(MultiViewCount
     declare.iterations(100);
     TEST_CYCLE()
     {
-        tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs);
+        cv::tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs);
     }
     SANITY_CHECK_NOTHING();
 }

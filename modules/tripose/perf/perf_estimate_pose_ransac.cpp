@@ -16,19 +16,19 @@ typedef perf::TestBaseWithParam<RansacCase> Tripose_EstimatePoseRansac;
 PERF_TEST_P(Tripose_EstimatePoseRansac, estimate,
             testing::Values(RansacCase(100, 40, 0.5), RansacCase(1000, 400, 0.0), RansacCase(1000, 400, 0.5)))
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = get<0>(GetParam());
     params.numLines = get<1>(GetParam());
     params.outlierRatio = get<2>(GetParam());
     params.noiseSigma = 1.0;
     params.seed = 3;
-    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
-    tripose::RansacParams ransac; // default: threshold 2 px, confidence 0.999, refinement on, seed 0
+    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
+    cv::tripose::RansacParams ransac; // default: threshold 2 px, confidence 0.999, refinement on, seed 0
     Mat R, t, pointMask, lineMask;
     declare.iterations(100);
     TEST_CYCLE()
     {
-        tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                              s.cameraMatrices, noArray(), s.R12, s.t12, R, t, ransac, pointMask,
                                              lineMask);
     }

@@ -7,16 +7,16 @@
 namespace opencv_test {
 namespace {
 
-tripose::support::SyntheticStereoScene stereoScene(int points, int lines, double outliers, int seed = 3)
+cv::tripose::support::SyntheticStereoScene stereoScene(int points, int lines, double outliers, int seed = 3)
 {
-    tripose::support::SyntheticStereoParams params;
+    cv::tripose::support::SyntheticStereoParams params;
     params.numPoints = points;
     params.numLines = lines;
     params.outlierRatio = outliers;
     params.noiseSigma = 1.0;
     params.missingRatio = 0.2;
     params.seed = seed;
-    return tripose::support::generateSyntheticStereoScene(params);
+    return cv::tripose::support::generateSyntheticStereoScene(params);
 }
 
 // (points, lines): the sizes of the three-view linear solver's perf test that the rig also meets.
@@ -25,12 +25,12 @@ typedef perf::TestBaseWithParam<StereoCounts> Tripose_EstimatePoseStereo;
 
 PERF_TEST_P(Tripose_EstimatePoseStereo, estimate, testing::Values(StereoCounts(4, 4), StereoCounts(10, 10)))
 {
-    const tripose::support::SyntheticStereoScene s = stereoScene(get<0>(GetParam()), get<1>(GetParam()), 0.0);
+    const cv::tripose::support::SyntheticStereoScene s = stereoScene(get<0>(GetParam()), get<1>(GetParam()), 0.0);
     Mat R, t;
     declare.iterations(2000);
     TEST_CYCLE()
     {
-        tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3,
+        cv::tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3,
                                              s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
     }
     SANITY_CHECK_NOTHING();
@@ -45,14 +45,14 @@ typedef perf::TestBaseWithParam<StereoRansacCase> Tripose_EstimatePoseStereoRans
 
 PERF_TEST_P(Tripose_EstimatePoseStereoRansac, estimate, testing::Values(StereoRansacCase(100, 40, 0.5, 3), StereoRansacCase(100, 40, 0.5, 4)))
 {
-    const tripose::support::SyntheticStereoScene s =
+    const cv::tripose::support::SyntheticStereoScene s =
         stereoScene(get<0>(GetParam()), get<1>(GetParam()), get<2>(GetParam()), get<3>(GetParam()));
-    tripose::RansacParams ransac;
+    cv::tripose::RansacParams ransac;
     Mat R, t, pointMask, lineMask;
     declare.iterations(100);
     TEST_CYCLE()
     {
-        tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
+        cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
                                                    s.lines3, s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R,
                                                    t, ransac, pointMask, lineMask);
     }

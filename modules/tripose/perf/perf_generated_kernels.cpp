@@ -10,15 +10,15 @@
 
 #include <vector>
 
-#include "../src/generated/beta_constraints.hpp"
-#include "../src/generated/beta_n4.hpp"
-#include "../src/generated/line_rows.hpp"
-#include "../src/generated/point_rows.hpp"
+#include "../src/core/generated/beta_constraints.hpp"
+#include "../src/core/generated/beta_n4.hpp"
+#include "../src/core/generated/line_rows.hpp"
+#include "../src/core/generated/point_rows.hpp"
 
 namespace opencv_test {
 namespace {
 
-using namespace cv::tripose::generated;
+using namespace ::tripose::generated;
 
 typedef perf::TestBaseWithParam<int> Tripose_GeneratedKernel;
 

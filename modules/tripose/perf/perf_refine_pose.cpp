@@ -4,10 +4,10 @@
 
 #include "perf_precomp.hpp"
 
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
-#include "../src/refine/ml_refinement.hpp"
-#include "../src/input/problem_input.hpp"
+#include "../src/core/refine/ml_refinement.hpp"
+#include "../src/opencv/argument_reading.hpp"
 
 namespace opencv_test {
 namespace {
@@ -20,18 +20,18 @@ typedef perf::TestBaseWithParam<FeatureCounts> Tripose_RefinePoseEngine;
 
 const FeatureCounts kSizes[] = { FeatureCounts(10, 10), FeatureCounts(100, 40), FeatureCounts(700, 280) };
 
-tripose::support::SyntheticScene makeScene(const FeatureCounts& counts)
+cv::tripose::support::SyntheticScene makeScene(const FeatureCounts& counts)
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = std::get<0>(counts);
     params.numLines = std::get<1>(counts);
     params.noiseSigma = 1.0;
     params.seed = 5;
-    return tripose::support::generateSyntheticScene(params);
+    return cv::tripose::support::generateSyntheticScene(params);
 }
 
 //! A start like the robust estimator's: the truth off by 0.5 degrees and 2 % of |t|.
-void startingPose(const tripose::support::SyntheticScene& s, Mat& R, Mat& t)
+void startingPose(const cv::tripose::support::SyntheticScene& s, Mat& R, Mat& t)
 {
     Mat dR;
     Rodrigues(Vec3d(0.5, -0.5, 0.5) * (0.5 * CV_PI / 180.0 / std::sqrt(0.75)), dR);
@@ -42,7 +42,7 @@ void startingPose(const tripose::support::SyntheticScene& s, Mat& R, Mat& t)
 //! The public function: input validation, undistortion and the refinement.
 PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
 {
-    const tripose::support::SyntheticScene s = makeScene(GetParam());
+    const cv::tripose::support::SyntheticScene s = makeScene(GetParam());
     Mat R0, t0;
     startingPose(s, R0, t0);
     Mat R, t;
@@ -51,7 +51,7 @@ PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
     {
         R0.copyTo(R);
         t0.copyTo(t);
-        tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        cv::tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                      s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
     }
     SANITY_CHECK_NOTHING();
@@ -60,24 +60,24 @@ PERF_TEST_P(Tripose_RefinePose, refinePoseLinePoint, testing::ValuesIn(kSizes))
 //! The engine alone, as the robust estimator calls it on already parsed data.
 PERF_TEST_P(Tripose_RefinePoseEngine, refinePoseAndStructure, testing::ValuesIn(kSizes))
 {
-    const tripose::support::SyntheticScene s = makeScene(GetParam());
+    const cv::tripose::support::SyntheticScene s = makeScene(GetParam());
     Mat R0, t0;
     startingPose(s, R0, t0);
-    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
+    const ::tripose::ViewSet data = cv::tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
-    tripose::detail::CameraPose start;
+    ::tripose::CameraPose start;
     for (int r = 0; r < 3; ++r)
     {
         start.t(r) = t0.at<double>(r);
         for (int c = 0; c < 3; ++c)
             start.R(r, c) = R0.at<double>(r, c);
     }
-    tripose::detail::RefinementSummary summary;
+    ::tripose::RefinementSummary summary;
     declare.iterations(500);
     TEST_CYCLE()
     {
-        tripose::detail::CameraPose pose = start;
-        summary = tripose::detail::refinePoseAndStructure(data, pose, tripose::RefineParams());
+        ::tripose::CameraPose pose = start;
+        summary = ::tripose::refinePoseAndStructure(data, pose, ::tripose::RefineOptions());
     }
     std::printf("[ PERFINFO ] %d iterations, RMS %.3f -> %.3f px\n", summary.iterations, summary.initialRms,
                 summary.finalRms);

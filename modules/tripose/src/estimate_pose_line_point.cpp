@@ -4,9 +4,11 @@
 
 #include "precomp.hpp"
 
-#include "input/problem_input.hpp"
-#include "linear/linear_pose_solver.hpp"
-#include "pipeline/pose_pipelines.hpp"
+#include "core/linear/linear_pose_solver.hpp"
+#include "core/pipeline/pose_pipelines.hpp"
+#include "opencv/argument_reading.hpp"
+#include "opencv/options_conversion.hpp"
+#include "opencv/result_writing.hpp"
 
 namespace cv {
 namespace tripose {
@@ -19,10 +21,13 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
-    const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
-                                                             cameraMatrix, distCoeffs, R12, t12);
-    const detail::LinearPoseSolver solver(views);
-    return detail::estimateCandidates(views, solver, method, R, t, Rs, ts, reprojectionErrors);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                                       cameraMatrix, distCoeffs, R12, t12);
+        const detail::core::LinearPoseSolver solver(views);
+        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+                                       R, t, Rs, ts, reprojectionErrors, "Rs", "ts");
+    });
 }
 
 } // namespace tripose

@@ -4,11 +4,12 @@
 
 #include "precomp.hpp"
 
-#include "input/problem_input.hpp"
-#include "linear/linear_pose_solver.hpp"
-#include "pipeline/pose_pipelines.hpp"
-#include "robust/hybrid_pose_solver.hpp"
-#include "scoring/pose_scorer.hpp"
+#include "core/linear/linear_pose_solver.hpp"
+#include "core/pipeline/pose_pipelines.hpp"
+#include "core/robust/hybrid_pose_solver.hpp"
+#include "opencv/argument_reading.hpp"
+#include "opencv/options_conversion.hpp"
+#include "opencv/result_writing.hpp"
 
 namespace cv {
 namespace tripose {
@@ -24,13 +25,18 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
-                                                             cameraMatrix, distCoeffs, R12, t12);
-    // The scorer's structure from views 1-2 is also what the minimal absolute-pose samples solve on.
-    const detail::PoseScorer scorer(views);
-    const detail::LinearPoseSolver linear(views);
-    const detail::HybridPoseSolver solver(views, scorer, linear);
-    return detail::estimateRobust(views, scorer, solver, params, R, t, pointInliers, lineInliers);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                                       cameraMatrix, distCoeffs, R12, t12);
+        const detail::core::RansacOptions options = detail::toCoreOptions(params);
+        // The scorer's structure from views 1-2 is also what the minimal absolute-pose samples solve on.
+        const detail::core::PoseScorer scorer(views);
+        const detail::core::LinearPoseSolver linear(views);
+        const detail::core::HybridPoseSolver solver(views, scorer, linear);
+        detail::core::RobustEstimate estimate;
+        const bool found = detail::core::estimateRobust(views, scorer, solver, options, estimate);
+        return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
+    });
 }
 
 } // namespace tripose

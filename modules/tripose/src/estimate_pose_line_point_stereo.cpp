@@ -4,19 +4,19 @@
 
 #include "precomp.hpp"
 
-#include "input/problem_input.hpp"
-#include "linear/rig_pose_solver.hpp"
-#include "pipeline/pose_pipelines.hpp"
+#include "core/linear/rig_pose_solver.hpp"
+#include "core/pipeline/pose_pipelines.hpp"
+#include "opencv/argument_reading.hpp"
+#include "opencv/options_conversion.hpp"
+#include "opencv/pose_refinement.hpp"
+#include "opencv/result_writing.hpp"
 
 namespace cv {
 namespace tripose {
 
 namespace {
 
-// Two features seen in both time-B views (two lines, or a point and a line) are the fewest that
-// determine the motion up to a few candidates.
 const int kMinStereoFeatures = 2;
-// The robust estimator draws samples of three features (RigPoseSolver::sampleSize()).
 const int kMinStereoRansacFeatures = 3;
 
 } // namespace
@@ -29,11 +29,14 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
-    const detail::ViewSet views =
-        detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
-                                   distCoeffs, R12, t12, kMinStereoFeatures);
-    const detail::RigPoseSolver solver(views);
-    return detail::estimateCandidates(views, solver, method, R, t, Rs, ts, reprojectionErrors);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
+                                       distCoeffs, R12, t12, kMinStereoFeatures);
+        const detail::core::RigPoseSolver solver(views);
+        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+                                       R, t, Rs, ts, reprojectionErrors, "Rs", "ts");
+    });
 }
 
 int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, InputArray points3, InputArray points4,
@@ -43,11 +46,16 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
                                       const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views =
-        detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
-                                   distCoeffs, R12, t12, kMinStereoRansacFeatures);
-    const detail::RigPoseSolver solver(views);
-    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
+                                       distCoeffs, R12, t12, kMinStereoRansacFeatures);
+        const detail::core::RansacOptions options = detail::toCoreOptions(params);
+        const detail::core::RigPoseSolver solver(views);
+        detail::core::RobustEstimate estimate;
+        const bool found = detail::core::estimateRobust(views, solver, options, estimate);
+        return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
+    });
 }
 
 double refinePoseLinePointStereo(InputArray points1, InputArray points2, InputArray points3, InputArray points4,
@@ -57,10 +65,12 @@ double refinePoseLinePointStereo(InputArray points1, InputArray points2, InputAr
                                  const RefineParams& params, OutputArray points3d, OutputArray lines3d)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views =
-        detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
-                                   distCoeffs, R12, t12, kMinStereoFeatures);
-    return detail::refineInitialPose(views, R, t, params, points3d, lines3d);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
+                                       distCoeffs, R12, t12, kMinStereoFeatures);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+    });
 }
 
 } // namespace tripose

@@ -4,16 +4,18 @@
 
 #include "precomp.hpp"
 
-#include "input/problem_input.hpp"
-#include "linear/multiview_pose_solver.hpp"
-#include "pipeline/pose_pipelines.hpp"
+#include "core/linear/multiview_pose_solver.hpp"
+#include "core/pipeline/pose_pipelines.hpp"
+#include "opencv/argument_reading.hpp"
+#include "opencv/options_conversion.hpp"
+#include "opencv/pose_refinement.hpp"
+#include "opencv/result_writing.hpp"
 
 namespace cv {
 namespace tripose {
 
 namespace {
 
-// Four features of any mix are the fewest the linear method solves, as with three views.
 const int kMinMultiViewFeatures = 4;
 
 } // namespace
@@ -25,10 +27,14 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
-    const detail::ViewSet views =
-        detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
-    const detail::MultiViewPoseSolver solver(views);
-    return detail::estimateCandidates(views, solver, method, R, t, candidateRs, candidateTs, reprojectionErrors);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
+        const detail::core::MultiViewPoseSolver solver(views);
+        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                       "candidateTs");
+    });
 }
 
 int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
@@ -37,10 +43,15 @@ int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays li
                                 OutputArray lineInliers)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views =
-        detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
-    const detail::MultiViewPoseSolver solver(views);
-    return detail::estimateRobust(views, solver, params, R, t, pointInliers, lineInliers);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
+        const detail::core::RansacOptions options = detail::toCoreOptions(params);
+        const detail::core::MultiViewPoseSolver solver(views);
+        detail::core::RobustEstimate estimate;
+        const bool found = detail::core::estimateRobust(views, solver, options, estimate);
+        return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
+    });
 }
 
 double refinePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
@@ -49,9 +60,11 @@ double refinePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, 
                            OutputArray lines3d)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views =
-        detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
-    return detail::refineInitialPose(views, R, t, params, points3d, lines3d);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views =
+            detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+    });
 }
 
 double refinePosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
@@ -60,11 +73,19 @@ double refinePosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines,
                             const RefineParams& params, OutputArray points3d, OutputArray lines3d)
 {
     CV_INSTRUMENT_REGION();
-    std::vector<int> poseOfView;
-    std::vector<detail::CameraPose> poses;
-    const detail::ViewSet views = detail::readSeveralPosesInput(points, lines, cameraMatrix, distCoeffs, Rs, ts,
-                                                                fixedViews, poseOfView, poses);
-    return detail::refineSeveralPoses(views, poseOfView, poses, params, refinedRs, refinedTs, points3d, lines3d);
+    return TRIPOSE_CALL_CORE([&] {
+        std::vector<int> poseOfView;
+        std::vector<detail::core::CameraPose> poses;
+        const detail::core::ViewSet views = detail::readSeveralPosesInput(points, lines, cameraMatrix, distCoeffs, Rs,
+                                                                          ts, fixedViews, poseOfView, poses);
+        const detail::core::RefineOptions options = detail::toCoreOptions(params);
+        detail::core::RefinedStructure structure;
+        const double rms = detail::core::refineSeveralPoses(views, poseOfView, poses, options, &structure);
+        detail::writePoseVectors(detail::core::allViewPoses(views, poseOfView, poses), refinedRs, refinedTs,
+                                 "refinedRs", "refinedTs");
+        detail::writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+        return rms;
+    });
 }
 
 } // namespace tripose

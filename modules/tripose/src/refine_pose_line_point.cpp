@@ -4,8 +4,11 @@
 
 #include "precomp.hpp"
 
-#include "input/problem_input.hpp"
-#include "pipeline/pose_pipelines.hpp"
+#include "core/pipeline/pose_pipelines.hpp"
+#include "opencv/argument_reading.hpp"
+#include "opencv/options_conversion.hpp"
+#include "opencv/result_writing.hpp"
+#include "opencv/pose_refinement.hpp"
 
 namespace cv {
 namespace tripose {
@@ -21,9 +24,11 @@ double refinePoseLinePoint(InputArray points1, InputArray points2, InputArray po
                            const RefineParams& params, OutputArray points3d, OutputArray lines3d)
 {
     CV_INSTRUMENT_REGION();
-    const detail::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
-                                                             cameraMatrix, distCoeffs, R12, t12, 3);
-    return detail::refineInitialPose(views, R, t, params, points3d, lines3d);
+    return TRIPOSE_CALL_CORE([&] {
+        const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
+                                                                       cameraMatrix, distCoeffs, R12, t12, 3);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+    });
 }
 
 } // namespace tripose

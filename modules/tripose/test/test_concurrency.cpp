@@ -16,19 +16,19 @@ struct Results
     double rms = 0;
 };
 
-Results runAll(const tripose::support::SyntheticScene& s)
+Results runAll(const cv::tripose::support::SyntheticScene& s)
 {
     Results r;
-    tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
+    cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
                                    noArray(), s.R12, s.t12, r.R, r.t);
-    tripose::RansacParams params;
+    cv::tripose::RansacParams params;
     params.seed = 11;
-    tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                          s.cameraMatrices, noArray(), s.R12, s.t12, r.Rrobust, r.trobust, params,
                                          r.pointMask, r.lineMask);
     r.Rrefined = r.R.clone();
     r.trefined = r.t.clone();
-    r.rms = tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    r.rms = cv::tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                          s.cameraMatrices, noArray(), s.R12, s.t12, r.Rrefined, r.trefined);
     return r;
 }
@@ -42,17 +42,17 @@ bool identical(const Mat& a, const Mat& b)
 // state, no dependence on scheduling), and the robust estimator is reproducible for a fixed seed.
 TEST(Tripose_Concurrency, threads_on_shared_inputs_give_bit_identical_results)
 {
-    std::vector<tripose::support::SyntheticScene> scenes;
+    std::vector<cv::tripose::support::SyntheticScene> scenes;
     std::vector<Results> reference;
     for (int seed = 0; seed < 4; ++seed)
     {
-        tripose::support::SyntheticSceneParams p;
+        cv::tripose::support::SyntheticSceneParams p;
         p.numPoints = 30;
         p.numLines = 15;
         p.noiseSigma = 1.0;
         p.outlierRatio = 0.3;
         p.seed = seed;
-        scenes.push_back(tripose::support::generateSyntheticScene(p));
+        scenes.push_back(cv::tripose::support::generateSyntheticScene(p));
         reference.push_back(runAll(scenes.back()));
         ASSERT_FALSE(reference.back().R.empty());
     }
@@ -87,14 +87,14 @@ struct RobustRun
     int inliers = 0;
 };
 
-RobustRun runRobust(const tripose::support::SyntheticScene& s, int seed)
+RobustRun runRobust(const cv::tripose::support::SyntheticScene& s, int seed)
 {
-    tripose::RansacParams params;
+    cv::tripose::RansacParams params;
     params.seed = seed;
     params.localOptimization = false;
     params.refine = false;
     RobustRun r;
-    r.inliers = tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    r.inliers = cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                      s.cameraMatrices, noArray(), s.R12, s.t12, r.R, r.t, params,
                                                      r.pointMask, r.lineMask);
     return r;
@@ -104,13 +104,13 @@ RobustRun runRobust(const tripose::support::SyntheticScene& s, int seed)
 // sampler drawing from cv::theRNG() would consume); and the seed does reach the sampler.
 TEST(Tripose_Concurrency, robust_estimator_is_reproducible_for_a_fixed_seed)
 {
-    tripose::support::SyntheticSceneParams p;
+    cv::tripose::support::SyntheticSceneParams p;
     p.numPoints = 40;
     p.numLines = 20;
     p.noiseSigma = 1.0;
     p.outlierRatio = 0.3;
     p.seed = 7;
-    const tripose::support::SyntheticScene scene = tripose::support::generateSyntheticScene(p);
+    const cv::tripose::support::SyntheticScene scene = cv::tripose::support::generateSyntheticScene(p);
 
     const RobustRun first = runRobust(scene, 3);
     ASSERT_GT(first.inliers, 0);

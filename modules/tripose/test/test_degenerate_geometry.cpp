@@ -4,7 +4,7 @@
 
 #include "test_pose_common.hpp"
 
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
 namespace opencv_test {
 namespace {
@@ -73,8 +73,8 @@ Solution solve(const Views& v, const Problem& pr, const std::string& what)
 {
     Solution s;
     Mat R, t;
-    EXPECT_NO_THROW(s.n = tripose::estimatePoseLinePoint(pr.p[0], pr.p[1], pr.p[2], pr.l[0], pr.l[1], pr.l[2], v.K,
-                                                         noArray(), v.R12, v.t12, R, t, tripose::POSE_LINEAR, s.Rs,
+    EXPECT_NO_THROW(s.n = cv::tripose::estimatePoseLinePoint(pr.p[0], pr.p[1], pr.p[2], pr.l[0], pr.l[1], pr.l[2], v.K,
+                                                         noArray(), v.R12, v.t12, R, t, cv::tripose::POSE_LINEAR, s.Rs,
                                                          s.ts, s.errors))
         << what;
     EXPECT_EQ(s.n == 0, R.empty()) << what;

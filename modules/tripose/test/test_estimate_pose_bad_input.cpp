@@ -27,13 +27,13 @@ struct Call
 {
     Mat p1, p2, p3, l1, l2, l3, K, dist, R12, t12;
     std::vector<Mat> Ks, dists;
-    int method = tripose::POSE_LINEAR;
+    int method = cv::tripose::POSE_LINEAR;
     bool candidatesAsMat = false;      // pass Rs as a Mat instead of a vector of Mat
-    tripose::RansacParams ransac;
-    tripose::RefineParams refine;
+    cv::tripose::RansacParams ransac;
+    cv::tripose::RefineParams refine;
     Mat R0, t0;                        // initial pose of the refinement
 
-    explicit Call(const tripose::support::SyntheticScene& s)
+    explicit Call(const cv::tripose::support::SyntheticScene& s)
         : p1(s.points1.clone()), p2(s.points2.clone()), p3(s.points3.clone()),
           l1(s.lines1.clone()), l2(s.lines2.clone()), l3(s.lines3.clone()),
           K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()),
@@ -54,17 +54,17 @@ struct Call
             std::vector<Mat> Rs;
             Mat RsMat;
             const _OutputArray candidates = candidatesAsMat ? _OutputArray(RsMat) : _OutputArray(Rs);
-            return tripose::estimatePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12, R, t,
+            return cv::tripose::estimatePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12, R, t,
                                                   method, candidates);
         }
         case RANSAC:
-            return tripose::estimatePoseLinePointRansac(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12,
+            return cv::tripose::estimatePoseLinePointRansac(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12, t12,
                                                         R, t, ransac);
         case REFINE:
         default:
             R = R0.clone();
             t = t0.clone();
-            return std::isfinite(tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12,
+            return std::isfinite(cv::tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, cameraMatrix, distCoeffs, R12,
                                                               t12, R, t, refine)) ? 1 : 0;
         }
     }
@@ -118,7 +118,7 @@ const double kInf = std::numeric_limits<double>::infinity();
 class Tripose_BadInput : public testing::Test
 {
 protected:
-    Tripose_BadInput() : call(makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 1)) {}
+    Tripose_BadInput() : call(makeScene({ 3, 3 }, cv::tripose::support::MOTION_LARGE, 0.0, 1)) {}
     void keepFeatures(int points, int lines)
     {
         call.p1 = call.p1.rowRange(0, points).clone(); call.p2 = call.p2.rowRange(0, points).clone();
@@ -270,9 +270,9 @@ struct StereoCall
 {
     Mat p[4], l[4], K, R12, t12, R0, t0;
     std::vector<Mat> Ks, dists;
-    int method = tripose::POSE_LINEAR;
+    int method = cv::tripose::POSE_LINEAR;
 
-    explicit StereoCall(const tripose::support::SyntheticStereoScene& s)
+    explicit StereoCall(const cv::tripose::support::SyntheticStereoScene& s)
         : K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()), R0(s.R.clone()), t0(s.t.clone())
     {
         const Mat* points[4] = { &s.points1, &s.points2, &s.points3, &s.points4 };
@@ -292,16 +292,16 @@ struct StereoCall
         switch (api)
         {
         case STEREO_LINEAR:
-            return tripose::estimatePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3], cameraMatrix,
+            return cv::tripose::estimatePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3], cameraMatrix,
                                                         distCoeffs, R12, t12, R, t, method);
         case STEREO_RANSAC:
-            return tripose::estimatePoseLinePointStereoRansac(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
+            return cv::tripose::estimatePoseLinePointStereoRansac(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
                                                               cameraMatrix, distCoeffs, R12, t12, R, t);
         case STEREO_REFINE:
         default:
             R = R0.clone();
             t = t0.clone();
-            return std::isfinite(tripose::refinePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
+            return std::isfinite(cv::tripose::refinePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
                                                                     cameraMatrix, distCoeffs, R12, t12, R, t))
                        ? 1 : 0;
         }
@@ -329,18 +329,18 @@ void expectStereoRejected(const StereoCall& call, const std::string& argument)
     expectStereoRejectedBy(STEREO_REFINE, call, argument);
 }
 
-tripose::support::SyntheticStereoScene stereoCatalogueScene()
+cv::tripose::support::SyntheticStereoScene stereoCatalogueScene()
 {
     // Four points and three lines, point 3 and line 2 seen by view 3 only, point 1 by view 4 only.
-    tripose::support::SyntheticStereoParams params;
+    cv::tripose::support::SyntheticStereoParams params;
     params.numPoints = 4;
     params.numLines = 3;
-    params.pointVisibility = { tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_VIEW4,
-                               tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_VIEW3 };
-    params.lineVisibility = { tripose::support::SEEN_IN_BOTH, tripose::support::SEEN_IN_BOTH,
-                              tripose::support::SEEN_IN_VIEW3 };
+    params.pointVisibility = { cv::tripose::support::SEEN_IN_BOTH, cv::tripose::support::SEEN_IN_VIEW4,
+                               cv::tripose::support::SEEN_IN_BOTH, cv::tripose::support::SEEN_IN_VIEW3 };
+    params.lineVisibility = { cv::tripose::support::SEEN_IN_BOTH, cv::tripose::support::SEEN_IN_BOTH,
+                              cv::tripose::support::SEEN_IN_VIEW3 };
     params.seed = 1;
-    return tripose::support::generateSyntheticStereoScene(params);
+    return cv::tripose::support::generateSyntheticStereoScene(params);
 }
 
 class Tripose_StereoBadInput : public testing::Test

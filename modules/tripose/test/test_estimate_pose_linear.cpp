@@ -4,7 +4,7 @@
 
 #include "test_pose_common.hpp"
 
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
 namespace opencv_test {
 namespace {
@@ -34,9 +34,9 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
     double worstSelectedRotation = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
-        tripose::support::SyntheticSceneParams params = sceneParams(mix, motion, 0.0, seed);
+        cv::tripose::support::SyntheticSceneParams params = sceneParams(mix, motion, 0.0, seed);
         params.planar = planar;
-        const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
+        const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         const int n = solveScene(s, Rs, ts, R, t);
@@ -55,7 +55,7 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
             selected += e.rotationDeg < rotationToleranceDeg && e.relativeTranslation < translationTolerance;
         }
     }
-    std::cout << mixName(mix) << (motion == tripose::support::MOTION_LARGE ? " large" : " small")
+    std::cout << mixName(mix) << (motion == cv::tripose::support::MOTION_LARGE ? " large" : " small")
               << (planar ? " planar" : "") << ": true pose among candidates " << found << "/" << scenes
               << ", selected " << selected << "/" << scenes << ", worst selected rotation error "
               << worstSelectedRotation << " deg" << std::endl;
@@ -74,7 +74,7 @@ const FeatureMix kExactMixes[] = {
 // Planar structure: the kernel has dimension 4 for every mix (5 for 2P+2L).
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
                         testing::Combine(testing::ValuesIn(kExactMixes),
-                                         testing::Values((int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL),
+                                         testing::Values((int)cv::tripose::support::MOTION_LARGE, (int)cv::tripose::support::MOTION_SMALL),
                                          testing::Values((int)STRUCTURE_GENERAL, (int)STRUCTURE_PLANAR)));
 
 // ---------------------------------------------------------------------------------------------
@@ -83,9 +83,9 @@ INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearExact,
 
 TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrinsics)
 {
-    const tripose::support::SyntheticScene s = makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 7);
+    const cv::tripose::support::SyntheticScene s = makeScene({ 3, 3 }, cv::tripose::support::MOTION_LARGE, 0.0, 7);
     Mat R, t;
-    ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                              s.cameraMatrices[0], noArray(), s.R12, s.t12, R, t), 0);
     EXPECT_EQ(R.type(), CV_64F);
     EXPECT_EQ(R.size(), Size(3, 3));
@@ -106,7 +106,7 @@ TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrin
     Mat rvec;
     Rodrigues(s.R12, rvec);
     Mat R32, t32;
-    ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices, noArray(),
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices, noArray(),
                                              rvec, s.t12, R32, t32), 0);
     // Float inputs carry ~1e-7 relative rounding: a few micro-radians at this geometry.
     const PoseError e = poseError(R32, t32, s.R, s.t);
@@ -116,7 +116,7 @@ TEST(Tripose_LinearInputs, float_and_two_channel_inputs_rvec_and_per_view_intrin
 
 TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
 {
-    const tripose::support::SyntheticScene s = makeScene({ 2, 4 }, tripose::support::MOTION_SMALL, 0.0, 3);
+    const cv::tripose::support::SyntheticScene s = makeScene({ 2, 4 }, cv::tripose::support::MOTION_SMALL, 0.0, 3);
     Mat homogeneous[3];
     const Mat* lines[3] = { &s.lines1, &s.lines2, &s.lines3 };
     for (int v = 0; v < 3; ++v)
@@ -132,7 +132,7 @@ TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
         }
     }
     Mat R, t;
-    ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, homogeneous[0], homogeneous[1],
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, homogeneous[0], homogeneous[1],
                                              homogeneous[2], s.cameraMatrices, noArray(), s.R12, s.t12, R, t), 0);
     const PoseError e = poseError(R, t, s.R, s.t);
     EXPECT_LT(e.rotationDeg, degrees(1e-6));
@@ -141,7 +141,7 @@ TEST(Tripose_LinearInputs, homogeneous_lines_give_the_same_pose_as_segments)
 
 TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
 {
-    const tripose::support::SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 0.0, 5);
+    const cv::tripose::support::SyntheticScene s = makeScene({ 10, 10 }, cv::tripose::support::MOTION_LARGE, 0.0, 5);
     const Mat dist = (Mat_<double>(1, 5) << -0.3, 0.1, 0.001, -0.0005, 0.0);
     const Mat K = s.cameraMatrices[0];
     // Distort every observation: pixel -> normalised -> projectPoints with the model.
@@ -161,25 +161,25 @@ TEST(Tripose_LinearInputs, distorted_observations_are_undistorted)
                  distort(s.lines3.reshape(1, s.lines3.rows * 2)).reshape(1, s.lines3.rows) };
     ASSERT_GT(cv::norm(p[2], s.points3, NORM_INF), 2.0) << "the distortion must move the points";
     Mat R, t;
-    ASSERT_GT(tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, dist, s.R12, s.t12, R, t), 0);
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, dist, s.R12, s.t12, R, t), 0);
     // Straight 3D lines are curved in distorted images; their end points undistort exactly.
     const PoseError e = poseError(R, t, s.R, s.t);
     EXPECT_LT(e.rotationDeg, degrees(1e-6));
     EXPECT_LT(e.relativeTranslation, 1e-6);
 
     Mat Rbad, tbad; // Ignoring the distortion must cost accuracy, or the test above proves nothing.
-    tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, noArray(), s.R12, s.t12, Rbad, tbad);
+    cv::tripose::estimatePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], K, noArray(), s.R12, s.t12, Rbad, tbad);
     EXPECT_TRUE(Rbad.empty() || poseError(Rbad, tbad, s.R, s.t).rotationDeg > degrees(1e-4));
 }
 
 TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_error)
 {
-    const tripose::support::SyntheticScene s = makeScene({ 2, 2 }, tripose::support::MOTION_LARGE, 1.0, 21);
+    const cv::tripose::support::SyntheticScene s = makeScene({ 2, 2 }, cv::tripose::support::MOTION_LARGE, 1.0, 21);
     std::vector<Mat> Rs, ts;
     Mat R, t, errors;
-    const int n = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    const int n = cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                  s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                                 tripose::POSE_LINEAR, Rs, ts, errors);
+                                                 cv::tripose::POSE_LINEAR, Rs, ts, errors);
     ASSERT_GT(n, 0);
     ASSERT_EQ((int)Rs.size(), n);
     ASSERT_EQ((int)ts.size(), n);
@@ -200,12 +200,12 @@ TEST(Tripose_LinearOutputs, candidates_are_rotations_sorted_by_reprojection_erro
 // 100 small-motion 5P+5L scenes must drop below the plain linear solver's.
 TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
 {
-    const tripose::support::SyntheticScene exact = makeScene({ 3, 3 }, tripose::support::MOTION_LARGE, 0.0, 5);
+    const cv::tripose::support::SyntheticScene exact = makeScene({ 3, 3 }, cv::tripose::support::MOTION_LARGE, 0.0, 5);
     std::vector<Mat> Rs, ts;
     Mat R, t, errors;
-    const int n = tripose::estimatePoseLinePoint(exact.points1, exact.points2, exact.points3, exact.lines1,
+    const int n = cv::tripose::estimatePoseLinePoint(exact.points1, exact.points2, exact.points3, exact.lines1,
                                                  exact.lines2, exact.lines3, exact.cameraMatrices, noArray(),
-                                                 exact.R12, exact.t12, R, t, tripose::POSE_LINEAR_REFINE, Rs, ts, errors);
+                                                 exact.R12, exact.t12, R, t, cv::tripose::POSE_LINEAR_REFINE, Rs, ts, errors);
     ASSERT_GT(n, 0);
     EXPECT_LT(poseError(R, t, exact.R, exact.t).rotationDeg, degrees(1e-8));
     EXPECT_LT(errors.at<double>(0), 1e-6);
@@ -215,15 +215,15 @@ TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
     std::vector<double> linear, refined;
     for (int seed = 0; seed < 100; ++seed)
     {
-        const tripose::support::SyntheticScene s = makeScene({ 5, 5 }, tripose::support::MOTION_SMALL, 1.0, 300 + seed);
-        for (int method : { (int)tripose::POSE_LINEAR, (int)tripose::POSE_LINEAR_REFINE })
+        const cv::tripose::support::SyntheticScene s = makeScene({ 5, 5 }, cv::tripose::support::MOTION_SMALL, 1.0, 300 + seed);
+        for (int method : { (int)cv::tripose::POSE_LINEAR, (int)cv::tripose::POSE_LINEAR_REFINE })
         {
             Mat Rm, tm;
-            const int found = tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2,
+            const int found = cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                              s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12,
                                                              Rm, tm, method);
             const double error = found > 0 ? poseError(Rm, tm, s.R, s.t).rotationDeg : 180.0;
-            (method == tripose::POSE_LINEAR ? linear : refined).push_back(error);
+            (method == cv::tripose::POSE_LINEAR ? linear : refined).push_back(error);
         }
     }
     std::nth_element(linear.begin(), linear.begin() + 50, linear.end());

@@ -16,9 +16,9 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::poseError;
+using cv::tripose::support::poseError;
 
-typedef tripose::support::SyntheticMultiViewScene MultiViewScene;
+typedef cv::tripose::support::SyntheticMultiViewScene MultiViewScene;
 
 // Exact data: the linear method is exact to rounding, amplified by the conditioning of a system of
 // a few features (the three-view tests allow the same).
@@ -40,18 +40,18 @@ TEST(Tripose_MultiView, exact_on_noise_free_scenes_with_partial_visibility)
             SCOPED_TRACE(cv::format("%d known views, %d points, %d lines, seed %d", c.known, c.points, c.lines, seed));
             const MultiViewScene s(c.known, c.points, c.lines, 1000 * c.known + 10 * c.points + c.lines + seed);
             Mat R, t;
-            ASSERT_GT(tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t), 0);
-            const tripose::support::PoseError e = poseError(R, t, Mat(s.R), Mat(s.t));
+            ASSERT_GT(cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t), 0);
+            const cv::tripose::support::PoseError e = poseError(R, t, Mat(s.R), Mat(s.t));
             EXPECT_LT(e.rotationDeg, kExactRotationDeg);
             EXPECT_LT(e.relativeTranslation, kExactTranslation);
 
             if (c.points + c.lines < 6)
                 continue; // RANSAC's samples need redundancy to score
             Mat Rr, tr, pointInliers, lineInliers;
-            const int inliers = tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, Rr,
-                                                                     tr, tripose::RansacParams(), pointInliers, lineInliers);
+            const int inliers = cv::tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, Rr,
+                                                                     tr, cv::tripose::RansacParams(), pointInliers, lineInliers);
             EXPECT_EQ(c.points + c.lines, inliers);
-            const tripose::support::PoseError er = poseError(Rr, tr, Mat(s.R), Mat(s.t));
+            const cv::tripose::support::PoseError er = poseError(Rr, tr, Mat(s.R), Mat(s.t));
             EXPECT_LT(er.rotationDeg, kExactRotationDeg);
             EXPECT_LT(er.relativeTranslation, kExactTranslation);
         }
@@ -65,10 +65,10 @@ TEST(Tripose_MultiView, refinement_returns_to_the_exact_pose)
     rvec += Mat(Vec3d(0.01, -0.01, 0.005));
     Mat t = Mat(s.t) + Mat(Vec3d(0.2, -0.1, 0.3));
     Mat points3d, lines3d;
-    const double rms = tripose::refinePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, rvec, t,
-                                                    tripose::RefineParams(), points3d, lines3d);
+    const double rms = cv::tripose::refinePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, rvec, t,
+                                                    cv::tripose::RefineParams(), points3d, lines3d);
     EXPECT_LT(rms, 1e-6);
-    const tripose::support::PoseError e = poseError(rvec, t, Mat(s.R), Mat(s.t));
+    const cv::tripose::support::PoseError e = poseError(rvec, t, Mat(s.R), Mat(s.t));
     EXPECT_LT(e.rotationDeg, 1e-6);
     EXPECT_LT(e.relativeTranslation, 1e-7);
     EXPECT_EQ(Size(3, 15), points3d.size());
@@ -78,7 +78,7 @@ TEST(Tripose_MultiView, refinement_returns_to_the_exact_pose)
 TEST(Tripose_MultiView, two_known_views_are_the_three_view_problem)
 {
     // Noisy, so that the two must agree beyond exactness: the same rows, kernel and selection.
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = 12;
     params.numLines = 12;
     params.noiseSigma = 1.0;
@@ -86,14 +86,14 @@ TEST(Tripose_MultiView, two_known_views_are_the_three_view_problem)
     {
         SCOPED_TRACE(cv::format("seed %d", seed));
         params.seed = seed;
-        const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
+        const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
         Mat R3, t3, R, t;
-        ASSERT_GT(tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        ASSERT_GT(cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                  s.cameraMatrices, noArray(), s.R12, s.t12, R3, t3),
                   0);
         const std::vector<Mat> points = { s.points1, s.points2, s.points3 }, lines = { s.lines1, s.lines2, s.lines3 };
         const std::vector<Mat> Rs = { Mat::eye(3, 3, CV_64F), s.R12 }, ts = { Mat::zeros(3, 1, CV_64F), s.t12 };
-        ASSERT_GT(tripose::estimatePoseMultiView(points, lines, s.cameraMatrices, noArray(), Rs, ts, R, t), 0);
+        ASSERT_GT(cv::tripose::estimatePoseMultiView(points, lines, s.cameraMatrices, noArray(), Rs, ts, R, t), 0);
         EXPECT_LT(cv::norm(R, R3, NORM_INF), 1e-9);
         EXPECT_LT(cv::norm(t, t3, NORM_INF), 1e-9 * cv::norm(s.t12, NORM_L2));
     }
@@ -104,7 +104,7 @@ TEST(Tripose_MultiView, the_world_frame_is_arbitrary)
     // Moving the world frame moves every pose with it: the estimate follows to rounding.
     const MultiViewScene s(3, 10, 10, 5);
     Mat R, t;
-    ASSERT_GT(tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t), 0);
+    ASSERT_GT(cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t), 0);
     Mat G;
     Rodrigues(Mat(Vec3d(0.3, -1.2, 0.7)), G);
     const Mat g = (Mat_<double>(3, 1) << 1000, -2000, 500); // X = G^T (X' - g): new world X'
@@ -115,7 +115,7 @@ TEST(Tripose_MultiView, the_world_frame_is_arbitrary)
         ts.push_back(s.ts[k] - s.Rs[k] * G.t() * g);
     }
     Mat R2, t2;
-    ASSERT_GT(tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R2, t2), 0);
+    ASSERT_GT(cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R2, t2), 0);
     EXPECT_LT(cv::norm(R2, R * G.t(), NORM_INF), 1e-7);
     EXPECT_LT(cv::norm(t2, Mat(t - R * G.t() * g), NORM_INF), 1e-6 * cv::norm(g, NORM_L2));
 }
@@ -139,7 +139,7 @@ TEST(Tripose_MultiView, bad_input_is_named)
     Mat R, t;
     auto run = [&](const std::vector<Mat>& points, const std::vector<Mat>& lines, const std::vector<Mat>& Rs,
                    const std::vector<Mat>& ts) {
-        return [=, &R, &t]() { tripose::estimatePoseMultiView(points, lines, s.K, noArray(), Rs, ts, R, t); };
+        return [=, &R, &t]() { cv::tripose::estimatePoseMultiView(points, lines, s.K, noArray(), Rs, ts, R, t); };
     };
     // One known view only.
     expectNamed(run({ s.points[0], s.points[3] }, { s.lines[0], s.lines[3] }, { s.Rs[0] }, { s.ts[0] }), "Rs");
@@ -196,7 +196,7 @@ TEST(Tripose_MultiView, degenerate_known_views_give_no_pose_not_nan)
     std::vector<Mat> Rs = s.Rs, ts = s.ts;
     ts[1] = Rs[1] * Rs[0].t() * ts[0]; // view 1 at view 0's centre
     Mat R, t;
-    const int n = tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R, t);
+    const int n = cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R, t);
     if (n > 0)
     {
         EXPECT_TRUE(cv::checkRange(R));
@@ -239,15 +239,15 @@ TEST(Tripose_MultiView, several_poses_return_to_the_exact_poses)
     const Mat fixed = (Mat_<uchar>(5, 1) << 1, 1, 0, 0, 0);
     std::vector<Mat> refinedRs, refinedTs;
     Mat points3d, lines3d;
-    const double rms = tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs,
-                                                     refinedTs, tripose::RefineParams(), points3d, lines3d);
+    const double rms = cv::tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs,
+                                                     refinedTs, cv::tripose::RefineParams(), points3d, lines3d);
     EXPECT_LT(rms, 1e-6);
     ASSERT_EQ(5u, refinedRs.size());
     ASSERT_EQ(5u, refinedTs.size());
     for (size_t v = 0; v < refinedRs.size(); ++v)
     {
         SCOPED_TRACE(cv::format("view %d", (int)v));
-        const tripose::support::PoseError e = poseError(refinedRs[v], refinedTs[v], truth.Rs[v], truth.ts[v]);
+        const cv::tripose::support::PoseError e = poseError(refinedRs[v], refinedTs[v], truth.Rs[v], truth.ts[v]);
         EXPECT_LT(e.rotationDeg, 1e-6);
         EXPECT_LT(e.relativeTranslation, 1e-7);
     }
@@ -267,13 +267,13 @@ TEST(Tripose_MultiView, one_free_view_is_refinePoseMultiView)
     std::vector<Mat> Rs = s.Rs, ts = s.ts;
     Rs.push_back(rvec.clone());
     ts.push_back(t.clone());
-    tripose::RefineParams params;
+    cv::tripose::RefineParams params;
     params.tolerance = 1e-14;
-    const double single = tripose::refinePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, rvec, t, params);
+    const double single = cv::tripose::refinePoseMultiView(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, rvec, t, params);
     std::vector<Mat> refinedRs, refinedTs;
     const Mat fixed = (Mat_<uchar>(4, 1) << 1, 1, 1, 0);
     const double joint =
-        tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs, params);
+        cv::tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs, params);
     EXPECT_NEAR(single, joint, 1e-9 * single);
     Mat R;
     Rodrigues(rvec, R);
@@ -294,7 +294,7 @@ TEST(Tripose_MultiView, several_poses_bad_input_is_named)
     auto run = [&](const std::vector<Mat>& points, const std::vector<Mat>& lines, const std::vector<Mat>& R,
                    const std::vector<Mat>& t, const Mat& fixed) {
         return [=, &Rs, &ts]() {
-            tripose::refinePosesMultiView(points, lines, s.K, noArray(), R, t, fixed, Rs, ts);
+            cv::tripose::refinePosesMultiView(points, lines, s.K, noArray(), R, t, fixed, Rs, ts);
         };
     };
     const Mat twoFixed = (Mat_<uchar>(4, 1) << 1, 1, 0, 0);
@@ -322,10 +322,10 @@ TEST(Tripose_MultiView, several_poses_bad_input_is_named)
     }
     expectNamed(run(once, s.lines, all.Rs, all.ts, twoFixed), "point 4");
     // Bad refinement parameters.
-    tripose::RefineParams params;
+    cv::tripose::RefineParams params;
     params.maxIterations = 0;
     expectNamed([&]() {
-        tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), all.Rs, all.ts, twoFixed, Rs, ts, params);
+        cv::tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), all.Rs, all.ts, twoFixed, Rs, ts, params);
     }, "maxIterations");
 }
 
@@ -333,7 +333,7 @@ TEST(Tripose_MultiView, several_poses_bad_input_is_named)
 //! (RANSAC + refinement) against the last @p window frames, on the features it shares with two of them.
 double trackingDrift(const std::string& name, int window)
 {
-    const tripose::support::VggSequence seq = tripose::support::loadVggSequence(findDataDirectory("vgg/" + name));
+    const cv::tripose::support::VggSequence seq = cv::tripose::support::loadVggSequence(findDataDirectory("vgg/" + name));
     const int F = (int)seq.Rs.size();
     std::vector<Mat> Rs = { seq.Rs[0], seq.Rs[1] }, ts = { seq.ts[0], seq.ts[1] };
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -371,7 +371,7 @@ double trackingDrift(const std::string& name, int window)
             }
         }
         Mat R, t;
-        EXPECT_GT(tripose::estimatePoseMultiViewRansac(p, l, K, noArray(), knownR, knownT, R, t), 0) << "frame " << k;
+        EXPECT_GT(cv::tripose::estimatePoseMultiViewRansac(p, l, K, noArray(), knownR, knownT, R, t), 0) << "frame " << k;
         if (R.empty())
             return std::numeric_limits<double>::infinity();
         Rs.push_back(R);

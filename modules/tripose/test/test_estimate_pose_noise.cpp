@@ -23,30 +23,30 @@ struct NoiseReference
 };
 
 const NoiseReference kReferences[] = {
-    { { 2, 2 }, tripose::support::MOTION_LARGE, 0.5, 1.169, 0.0189, 290 },
-    { { 2, 2 }, tripose::support::MOTION_LARGE, 1.0, 2.727, 0.0457, 285 },
-    { { 2, 2 }, tripose::support::MOTION_LARGE, 2.0, 6.239, 0.1158, 285 },
-    { { 3, 3 }, tripose::support::MOTION_LARGE, 0.5, 0.412, 0.0051, 297 },
-    { { 3, 3 }, tripose::support::MOTION_LARGE, 1.0, 0.842, 0.0109, 297 },
-    { { 3, 3 }, tripose::support::MOTION_LARGE, 2.0, 2.010, 0.0324, 297 },
-    { { 4, 4 }, tripose::support::MOTION_LARGE, 0.5, 0.290, 0.0040, 297 },
-    { { 4, 4 }, tripose::support::MOTION_LARGE, 1.0, 0.583, 0.0084, 297 },
-    { { 4, 4 }, tripose::support::MOTION_LARGE, 2.0, 1.157, 0.0170, 297 },
-    { { 10, 10 }, tripose::support::MOTION_LARGE, 0.5, 0.160, 0.0022, 297 },
-    { { 10, 10 }, tripose::support::MOTION_LARGE, 1.0, 0.326, 0.0043, 297 },
-    { { 10, 10 }, tripose::support::MOTION_LARGE, 2.0, 0.669, 0.0086, 297 },
-    { { 2, 2 }, tripose::support::MOTION_SMALL, 0.5, 1.355, 0.1418, 290 },
-    { { 2, 2 }, tripose::support::MOTION_SMALL, 1.0, 3.133, 0.3357, 288 },
-    { { 2, 2 }, tripose::support::MOTION_SMALL, 2.0, 6.214, 0.6600, 288 },
-    { { 3, 3 }, tripose::support::MOTION_SMALL, 0.5, 0.425, 0.0446, 297 },
-    { { 3, 3 }, tripose::support::MOTION_SMALL, 1.0, 0.918, 0.0962, 297 },
-    { { 3, 3 }, tripose::support::MOTION_SMALL, 2.0, 2.145, 0.2241, 297 },
-    { { 4, 4 }, tripose::support::MOTION_SMALL, 0.5, 0.323, 0.0342, 297 },
-    { { 4, 4 }, tripose::support::MOTION_SMALL, 1.0, 0.679, 0.0722, 297 },
-    { { 4, 4 }, tripose::support::MOTION_SMALL, 2.0, 1.435, 0.1563, 296 },
-    { { 10, 10 }, tripose::support::MOTION_SMALL, 0.5, 0.169, 0.0164, 297 },
-    { { 10, 10 }, tripose::support::MOTION_SMALL, 1.0, 0.373, 0.0374, 297 },
-    { { 10, 10 }, tripose::support::MOTION_SMALL, 2.0, 0.878, 0.0943, 296 },
+    { { 2, 2 }, cv::tripose::support::MOTION_LARGE, 0.5, 1.169, 0.0189, 290 },
+    { { 2, 2 }, cv::tripose::support::MOTION_LARGE, 1.0, 2.727, 0.0457, 285 },
+    { { 2, 2 }, cv::tripose::support::MOTION_LARGE, 2.0, 6.239, 0.1158, 285 },
+    { { 3, 3 }, cv::tripose::support::MOTION_LARGE, 0.5, 0.412, 0.0051, 297 },
+    { { 3, 3 }, cv::tripose::support::MOTION_LARGE, 1.0, 0.842, 0.0109, 297 },
+    { { 3, 3 }, cv::tripose::support::MOTION_LARGE, 2.0, 2.010, 0.0324, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_LARGE, 0.5, 0.290, 0.0040, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_LARGE, 1.0, 0.583, 0.0084, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_LARGE, 2.0, 1.157, 0.0170, 297 },
+    { { 10, 10 }, cv::tripose::support::MOTION_LARGE, 0.5, 0.160, 0.0022, 297 },
+    { { 10, 10 }, cv::tripose::support::MOTION_LARGE, 1.0, 0.326, 0.0043, 297 },
+    { { 10, 10 }, cv::tripose::support::MOTION_LARGE, 2.0, 0.669, 0.0086, 297 },
+    { { 2, 2 }, cv::tripose::support::MOTION_SMALL, 0.5, 1.355, 0.1418, 290 },
+    { { 2, 2 }, cv::tripose::support::MOTION_SMALL, 1.0, 3.133, 0.3357, 288 },
+    { { 2, 2 }, cv::tripose::support::MOTION_SMALL, 2.0, 6.214, 0.6600, 288 },
+    { { 3, 3 }, cv::tripose::support::MOTION_SMALL, 0.5, 0.425, 0.0446, 297 },
+    { { 3, 3 }, cv::tripose::support::MOTION_SMALL, 1.0, 0.918, 0.0962, 297 },
+    { { 3, 3 }, cv::tripose::support::MOTION_SMALL, 2.0, 2.145, 0.2241, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_SMALL, 0.5, 0.323, 0.0342, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_SMALL, 1.0, 0.679, 0.0722, 297 },
+    { { 4, 4 }, cv::tripose::support::MOTION_SMALL, 2.0, 1.435, 0.1563, 296 },
+    { { 10, 10 }, cv::tripose::support::MOTION_SMALL, 0.5, 0.169, 0.0164, 297 },
+    { { 10, 10 }, cv::tripose::support::MOTION_SMALL, 1.0, 0.373, 0.0374, 297 },
+    { { 10, 10 }, cv::tripose::support::MOTION_SMALL, 2.0, 0.878, 0.0943, 296 },
 };
 
 double median(std::vector<double> v)
@@ -66,7 +66,7 @@ TEST_P(Tripose_LinearNoise, median_errors_stay_at_the_measured_level)
     double meanRotation = 0, meanTranslation = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
-        const tripose::support::SyntheticScene s = makeScene(ref.mix, ref.motion, ref.sigma, seed);
+        const cv::tripose::support::SyntheticScene s = makeScene(ref.mix, ref.motion, ref.sigma, seed);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         if (solveScene(s, Rs, ts, R, t) == 0)
@@ -84,7 +84,7 @@ TEST_P(Tripose_LinearNoise, median_errors_stay_at_the_measured_level)
         meanTranslation += translation.back();
     }
     const double medianRotation = median(rotation), medianTranslation = median(translation);
-    std::cout << mixName(ref.mix) << (ref.motion == tripose::support::MOTION_LARGE ? " large" : " small") << " sigma "
+    std::cout << mixName(ref.mix) << (ref.motion == cv::tripose::support::MOTION_LARGE ? " large" : " small") << " sigma "
               << ref.sigma << ": median rotation " << medianRotation << " deg (mean " << meanRotation / std::max(solved, 1)
               << "), median translation " << medianTranslation << " (mean " << meanTranslation / std::max(solved, 1)
               << "), solved " << solved << "/" << scenes << std::endl;
@@ -118,9 +118,9 @@ TEST_P(Tripose_LinearPlanarNoise, near_planar_structure_keeps_the_planar_closed_
     int gross = 0;
     for (int seed = 0; seed < 300; ++seed)
     {
-        tripose::support::SyntheticSceneParams params = sceneParams(ref.mix, tripose::support::MOTION_LARGE, 1.0, seed);
+        cv::tripose::support::SyntheticSceneParams params = sceneParams(ref.mix, cv::tripose::support::MOTION_LARGE, 1.0, seed);
         params.planar = true;
-        const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(params);
+        const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
         std::vector<Mat> Rs, ts;
         Mat R, t;
         const double error = solveScene(s, Rs, ts, R, t) > 0 ? poseError(R, t, s.R, s.t).rotationDeg : 180.0;

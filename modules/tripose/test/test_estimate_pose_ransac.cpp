@@ -7,21 +7,21 @@
 namespace opencv_test {
 namespace {
 
-tripose::support::SyntheticScene outlierScene(double outlierRatio, int seed)
+cv::tripose::support::SyntheticScene outlierScene(double outlierRatio, int seed)
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = 100;
     params.numLines = 40;
     params.noiseSigma = 1.0;
     params.outlierRatio = outlierRatio;
     params.seed = seed;
-    return tripose::support::generateSyntheticScene(params);
+    return cv::tripose::support::generateSyntheticScene(params);
 }
 
-int runRansac(const tripose::support::SyntheticScene& s, const tripose::RansacParams& params, Mat& R, Mat& t,
+int runRansac(const cv::tripose::support::SyntheticScene& s, const cv::tripose::RansacParams& params, Mat& R, Mat& t,
               Mat& pointMask, Mat& lineMask)
 {
-    return tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    return cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                 s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params,
                                                 pointMask, lineMask);
 }
@@ -38,8 +38,8 @@ TEST_P(Tripose_Ransac, recovers_the_pose_and_the_inliers)
     std::vector<double> rotationErrors;
     for (int seed = 0; seed < trials; ++seed)
     {
-        const tripose::support::SyntheticScene s = outlierScene(outlierRatio, seed);
-        tripose::RansacParams params;
+        const cv::tripose::support::SyntheticScene s = outlierScene(outlierRatio, seed);
+        cv::tripose::RansacParams params;
         params.seed = seed;
         Mat R, t, pointMask, lineMask;
         const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
@@ -74,8 +74,8 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
     for (const FeatureMix& mix : mixes)
         for (int seed = 0; seed < 20; ++seed)
         {
-            const tripose::support::SyntheticScene s = makeScene(mix, tripose::support::MOTION_LARGE, 0.0, seed);
-            tripose::RansacParams params;
+            const cv::tripose::support::SyntheticScene s = makeScene(mix, cv::tripose::support::MOTION_LARGE, 0.0, seed);
+            cv::tripose::RansacParams params;
             params.seed = seed;
             Mat R, t, pointMask, lineMask;
             const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
@@ -88,8 +88,8 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
 
 TEST(Tripose_RansacDeterminism, same_seed_same_result)
 {
-    const tripose::support::SyntheticScene s = outlierScene(0.4, 77);
-    tripose::RansacParams params;
+    const cv::tripose::support::SyntheticScene s = outlierScene(0.4, 77);
+    cv::tripose::RansacParams params;
     params.seed = 5;
     Mat R1, t1, p1, l1, R2, t2, p2, l2;
     runRansac(s, params, R1, t1, p1, l1);
@@ -103,9 +103,9 @@ TEST(Tripose_RansacDeterminism, same_seed_same_result)
 
 TEST(Tripose_RansacParams, invalid_parameters_are_named)
 {
-    const tripose::support::SyntheticScene s = outlierScene(0.0, 1);
+    const cv::tripose::support::SyntheticScene s = outlierScene(0.0, 1);
     Mat R, t, pm, lm;
-    auto expectNamed = [&](const tripose::RansacParams& p, const std::string& name) {
+    auto expectNamed = [&](const cv::tripose::RansacParams& p, const std::string& name) {
         try
         {
             runRansac(s, p, R, t, pm, lm);
@@ -116,19 +116,19 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
             EXPECT_NE(e.err.find(name), std::string::npos) << e.err;
         }
     };
-    tripose::RansacParams p;
+    cv::tripose::RansacParams p;
     p.threshold = 0;
     expectNamed(p, "params.threshold");
-    p = tripose::RansacParams();
+    p = cv::tripose::RansacParams();
     p.threshold = -1;
     expectNamed(p, "params.threshold");
-    p = tripose::RansacParams();
+    p = cv::tripose::RansacParams();
     p.confidence = 1.0;
     expectNamed(p, "params.confidence");
-    p = tripose::RansacParams();
+    p = cv::tripose::RansacParams();
     p.confidence = 0.0;
     expectNamed(p, "params.confidence");
-    p = tripose::RansacParams();
+    p = cv::tripose::RansacParams();
     p.maxIterations = 0;
     expectNamed(p, "params.maxIterations");
 }
@@ -138,13 +138,13 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
 // by the sanitizer build, scripts/test_sanitizers.sh; a release build stopped sampling at once).
 TEST(Tripose_RansacRegression, iteration_bound_with_a_tiny_inlier_ratio)
 {
-    tripose::support::SyntheticSceneParams sp;
+    cv::tripose::support::SyntheticSceneParams sp;
     sp.numPoints = 100000;
     sp.numLines = 0;
     sp.outlierRatio = 0.99995;   // 5 true matches
     sp.seed = 3;
-    const tripose::support::SyntheticScene s = tripose::support::generateSyntheticScene(sp);
-    tripose::RansacParams params;
+    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(sp);
+    cv::tripose::RansacParams params;
     params.threshold = 1.0;      // a few wrong matches fall within it by chance
     params.maxIterations = 20;
     params.refine = false;

@@ -10,14 +10,14 @@
 
 #include "test_pose_common.hpp"
 
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::support::SyntheticStereoParams;
-using tripose::support::SyntheticStereoScene;
-using tripose::support::generateSyntheticStereoScene;
+using cv::tripose::support::SyntheticStereoParams;
+using cv::tripose::support::SyntheticStereoScene;
+using cv::tripose::support::generateSyntheticStereoScene;
 
 //! Noise-free: far above the round-off of the stacked system, far below any real error (the bound
 //! of the rig solver's suite and of the three-view tests).
@@ -37,10 +37,10 @@ SyntheticStereoParams stereoParams(int points, int lines, int seed, double noise
     return p;
 }
 
-int solveStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, int method = tripose::POSE_LINEAR,
+int solveStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, int method = cv::tripose::POSE_LINEAR,
                 std::vector<Mat>* Rs = nullptr, std::vector<Mat>* ts = nullptr, Mat* errors = nullptr)
 {
-    return tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
+    return cv::tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
                                                 s.lines3, s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
                                                 method, Rs ? _OutputArray(*Rs) : _OutputArray(noArray()),
                                                 ts ? _OutputArray(*ts) : _OutputArray(noArray()),
@@ -50,16 +50,16 @@ int solveStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, int method = trip
 double refineStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, OutputArray points3d = noArray(),
                     OutputArray lines3d = noArray())
 {
-    return tripose::refinePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
+    return cv::tripose::refinePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
                                               s.lines3, s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                              tripose::RefineParams(), points3d, lines3d);
+                                              cv::tripose::RefineParams(), points3d, lines3d);
 }
 
 int ransacStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, Mat& pointMask, Mat& lineMask, int seed = 0)
 {
-    tripose::RansacParams params;
+    cv::tripose::RansacParams params;
     params.seed = seed;
-    return tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1,
+    return cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1,
                                                       s.lines2, s.lines3, s.lines4, s.cameraMatrices, noArray(),
                                                       s.R12, s.t12, R, t, params, pointMask, lineMask);
 }
@@ -102,9 +102,9 @@ SyntheticStereoParams mixParams(const StereoMix& mix, int seed)
     return p;
 }
 
-using tripose::support::SEEN_IN_BOTH;
-using tripose::support::SEEN_IN_VIEW3;
-using tripose::support::SEEN_IN_VIEW4;
+using cv::tripose::support::SEEN_IN_BOTH;
+using cv::tripose::support::SEEN_IN_VIEW3;
+using cv::tripose::support::SEEN_IN_VIEW4;
 
 typedef testing::TestWithParam<StereoMix> Tripose_StereoExact;
 
@@ -122,7 +122,7 @@ TEST_P(Tripose_StereoExact, true_pose_first_in_every_scene)
         const SyntheticStereoScene s = generateSyntheticStereoScene(mixParams(mix, 1000 + seed));
         Mat R, t, errors;
         std::vector<Mat> Rs, ts;
-        const int n = solveStereo(s, R, t, tripose::POSE_LINEAR, &Rs, &ts, &errors);
+        const int n = solveStereo(s, R, t, cv::tripose::POSE_LINEAR, &Rs, &ts, &errors);
         ASSERT_EQ((int)Rs.size(), n);
         ASSERT_EQ((int)errors.total(), n);
         candidates += n;
@@ -165,7 +165,7 @@ TEST(Tripose_Stereo, missing_rows_may_be_float_and_empty_views_see_nothing)
     p.lineVisibility.assign(6, SEEN_IN_VIEW4);
     const SyntheticStereoScene s = generateSyntheticStereoScene(p);
     Mat R, t;
-    ASSERT_GE(tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, Mat(), s.lines1, s.lines2, Mat(),
+    ASSERT_GE(cv::tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, Mat(), s.lines1, s.lines2, Mat(),
                                                    s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R, t), 1);
     EXPECT_TRUE(isExact(R, t, s));
     Mat f[8];
@@ -173,7 +173,7 @@ TEST(Tripose_Stereo, missing_rows_may_be_float_and_empty_views_see_nothing)
     for (int i = 0; i < 8; ++i)
         in[i]->convertTo(f[i], CV_32F);
     ASSERT_TRUE(cvIsNaN(f[3].at<float>(0, 0)));
-    ASSERT_GE(tripose::estimatePoseLinePointStereo(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], s.cameraMatrices[0],
+    ASSERT_GE(cv::tripose::estimatePoseLinePointStereo(f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], s.cameraMatrices[0],
                                                    noArray(), s.R12, s.t12, R, t), 1);
     // float32 pixels carry ~1e-5 px of rounding.
     const PoseError e = poseError(R, t, s.R, s.t);
@@ -204,14 +204,14 @@ TEST(Tripose_Stereo, linear_refine_is_exact_on_exact_data_and_improves_noisy_est
     {
         const SyntheticStereoScene exact = generateSyntheticStereoScene(stereoParams(4, 4, 200 + seed, 0, 0, 0.25));
         Mat R, t, errors;
-        ASSERT_GE(solveStereo(exact, R, t, tripose::POSE_LINEAR_REFINE, nullptr, nullptr, &errors), 1);
+        ASSERT_GE(solveStereo(exact, R, t, cv::tripose::POSE_LINEAR_REFINE, nullptr, nullptr, &errors), 1);
         EXPECT_TRUE(isExact(R, t, exact)) << "seed " << seed;
         EXPECT_LT(errors.at<double>(0), 1e-6);
 
         const SyntheticStereoScene noisy = generateSyntheticStereoScene(stereoParams(10, 10, 300 + seed, 1.0));
-        ASSERT_GE(solveStereo(noisy, R, t, tripose::POSE_LINEAR), 1);
+        ASSERT_GE(solveStereo(noisy, R, t, cv::tripose::POSE_LINEAR), 1);
         linear.push_back(poseError(R, t, noisy.R, noisy.t).rotationDeg);
-        ASSERT_GE(solveStereo(noisy, R, t, tripose::POSE_LINEAR_REFINE), 1);
+        ASSERT_GE(solveStereo(noisy, R, t, cv::tripose::POSE_LINEAR_REFINE), 1);
         refined.push_back(poseError(R, t, noisy.R, noisy.t).rotationDeg);
     }
     std::cout << "[ stereo   ] 10P+10L, 1 px, 40 scenes: median rotation error linear " << median(linear)
@@ -285,7 +285,7 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
 TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
 {
     RNG rng(31);
-    tripose::RefineParams params;
+    cv::tripose::RefineParams params;
     // From 2 degrees and 10 % off, the weakly determined depth of far features (a 0.1-0.5 m rig
     // at up to 30 m) makes the descent slow: one of these scenes needs more than the default 30 steps.
     params.maxIterations = 100;
@@ -294,7 +294,7 @@ TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
         const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(8, 8, 500 + seed, 0, 0, 0.3));
         Mat R, t;
         perturbPose(s.R, s.t, 2.0, 0.1, rng, R, t);
-        const double rms = tripose::refinePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1,
+        const double rms = cv::tripose::refinePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1,
                                                               s.lines2, s.lines3, s.lines4, s.cameraMatrices,
                                                               noArray(), s.R12, s.t12, R, t, params);
         EXPECT_LT(rms, 1e-6) << "seed " << seed;
@@ -371,10 +371,10 @@ TEST(Tripose_Stereo, ransac_reaches_the_four_view_limit_and_beats_the_alternativ
             ASSERT_TRUE(std::isfinite(refineStereo(s, R, t)));
             limit.push_back(poseError(R, t, s.R, s.t).rotationDeg);
 
-            tripose::RansacParams params;
+            cv::tripose::RansacParams params;
             params.seed = seed;
             const std::vector<Mat> K123(s.cameraMatrices.begin(), s.cameraMatrices.begin() + 3);
-            ASSERT_GT(tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
+            ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                            s.lines3, K123, noArray(), s.R12, s.t12, R, t, params),
                       0);
             threeView.push_back(poseError(R, t, s.R, s.t).rotationDeg);
@@ -423,7 +423,7 @@ TEST(Tripose_Stereo, degenerate_input_gives_no_candidate)
     std::vector<Mat> Rs, ts;
     // Two points seen in both time-B views: a turn about the line through them is free.
     const SyntheticStereoScene two = generateSyntheticStereoScene(stereoParams(2, 0, 41));
-    EXPECT_EQ(solveStereo(two, R, t, tripose::POSE_LINEAR, &Rs, &ts), 0);
+    EXPECT_EQ(solveStereo(two, R, t, cv::tripose::POSE_LINEAR, &Rs, &ts), 0);
     EXPECT_TRUE(R.empty() && t.empty() && Rs.empty() && ts.empty());
 
     // Four points on one 3D line, seen by both time-B views: the robust estimator finds no pose.
@@ -449,7 +449,7 @@ TEST(Tripose_Stereo, degenerate_input_gives_no_candidate)
     SyntheticStereoScene same = generateSyntheticStereoScene(stereoParams(5, 0, 44));
     for (Mat* m : { &same.points1, &same.points2, &same.points3, &same.points4 })
         *m = Mat(5, 2, CV_64F, Scalar(320, 240));
-    const int n = solveStereo(same, R, t, tripose::POSE_LINEAR, &Rs, &ts);
+    const int n = solveStereo(same, R, t, cv::tripose::POSE_LINEAR, &Rs, &ts);
     for (int i = 0; i < n; ++i)
         EXPECT_TRUE(cv::checkRange(Rs[i]) && cv::checkRange(ts[i]));
 }

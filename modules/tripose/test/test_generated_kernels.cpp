@@ -12,15 +12,15 @@
 
 #include <Eigen/Dense>
 
-#include "../src/generated/beta_constraints.hpp"
-#include "../src/generated/beta_n4.hpp"
-#include "../src/generated/line_rows.hpp"
-#include "../src/generated/point_rows.hpp"
+#include "../src/core/generated/beta_constraints.hpp"
+#include "../src/core/generated/beta_n4.hpp"
+#include "../src/core/generated/line_rows.hpp"
+#include "../src/core/generated/point_rows.hpp"
 
 namespace opencv_test {
 namespace {
 
-using namespace cv::tripose::generated;
+using namespace ::tripose::generated;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 using Eigen::Vector4d;

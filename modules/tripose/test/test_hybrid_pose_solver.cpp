@@ -4,36 +4,36 @@
 
 #include "test_pose_common.hpp"
 
-#include "../src/input/problem_input.hpp"
-#include "../src/linear/linear_pose_solver.hpp"
-#include "../src/robust/hybrid_pose_solver.hpp"
-#include "../src/scoring/pose_scorer.hpp"
+#include "../src/opencv/argument_reading.hpp"
+#include "../src/core/linear/linear_pose_solver.hpp"
+#include "../src/core/robust/hybrid_pose_solver.hpp"
+#include "../src/core/scoring/pose_scorer.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::detail::CameraPose;
-using tripose::detail::FeatureSubset;
-using tripose::detail::HybridPoseSolver;
-using tripose::detail::LinearPoseSolver;
-using tripose::detail::PoseScorer;
-using tripose::detail::ViewSet;
+using ::tripose::CameraPose;
+using ::tripose::FeatureSubset;
+using ::tripose::HybridPoseSolver;
+using ::tripose::LinearPoseSolver;
+using ::tripose::PoseScorer;
+using ::tripose::ViewSet;
 
-tripose::support::SyntheticScene scene(int points, int lines, int motion, double smallMotionRadius, int seed)
+cv::tripose::support::SyntheticScene scene(int points, int lines, int motion, double smallMotionRadius, int seed)
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = points;
     params.numLines = lines;
     params.motion = motion;
     params.smallMotionRadius = smallMotionRadius;
     params.noiseSigma = 0.0;
     params.seed = seed;
-    return tripose::support::generateSyntheticScene(params);
+    return cv::tripose::support::generateSyntheticScene(params);
 }
 
-ViewSet readScene(const tripose::support::SyntheticScene& s)
+ViewSet readScene(const cv::tripose::support::SyntheticScene& s)
 {
-    return tripose::detail::readThreeViewInput(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    return cv::tripose::detail::readThreeViewInput(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                s.cameraMatrices, noArray(), s.R12, s.t12);
 }
 
@@ -43,7 +43,7 @@ TEST(Tripose_HybridPoseSolver, point_samples_on_wide_baselines_contain_the_true_
 {
     for (int seed = 0; seed < 20; ++seed)
     {
-        const tripose::support::SyntheticScene s = scene(30, 10, tripose::support::MOTION_LARGE, 5.0, seed);
+        const cv::tripose::support::SyntheticScene s = scene(30, 10, cv::tripose::support::MOTION_LARGE, 5.0, seed);
         const ViewSet views = readScene(s);
         const PoseScorer scorer(views);
         const LinearPoseSolver linear(views);
@@ -84,7 +84,7 @@ TEST(Tripose_HybridPoseSolver, linear_samples_on_narrow_baselines_and_few_points
     int narrow = 0;
     for (int seed = 0; seed < 20; ++seed)
     {
-        const tripose::support::SyntheticScene s = scene(30, 10, tripose::support::MOTION_SMALL, 0.2, seed);
+        const cv::tripose::support::SyntheticScene s = scene(30, 10, cv::tripose::support::MOTION_SMALL, 0.2, seed);
         const ViewSet views = readScene(s);
         const PoseScorer scorer(views);
         const LinearPoseSolver linear(views);
@@ -96,7 +96,7 @@ TEST(Tripose_HybridPoseSolver, linear_samples_on_narrow_baselines_and_few_points
         EXPECT_EQ(views.numFeatures(), solver.samplePool(views.numFeatures()));
     }
     EXPECT_EQ(20, narrow);
-    const tripose::support::SyntheticScene s = scene(6, 40, tripose::support::MOTION_LARGE, 5.0, 1);
+    const cv::tripose::support::SyntheticScene s = scene(6, 40, cv::tripose::support::MOTION_LARGE, 5.0, 1);
     const ViewSet views = readScene(s);
     const PoseScorer scorer(views);
     const LinearPoseSolver linear(views);

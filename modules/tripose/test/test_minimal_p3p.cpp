@@ -6,13 +6,13 @@
 
 #include <Eigen/Geometry>
 
-#include "../src/minimal/p3p.hpp"
+#include "../src/core/minimal/p3p.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::detail::CameraPose;
-using tripose::detail::solveP3P;
+using ::tripose::CameraPose;
+using ::tripose::solveP3P;
 
 Eigen::Vector3d randomVector(RNG& rng, double lo, double hi)
 {

@@ -13,9 +13,9 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::SyntheticScene;
-using tripose::support::SyntheticSceneParams;
-using tripose::support::generateSyntheticScene;
+using cv::tripose::support::SyntheticScene;
+using cv::tripose::support::SyntheticSceneParams;
+using cv::tripose::support::generateSyntheticScene;
 
 const int kScenes = 20;
 // The refined RMS of an estimate at the optimum matches the reference to the refinement's
@@ -25,7 +25,7 @@ const double kRmsTolerance = 1e-3;
 
 double refinedRms(const SyntheticScene& s, Mat& R, Mat& t)
 {
-    return tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    return cv::tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                         s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
 }
 
@@ -57,18 +57,18 @@ TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
         Mat Rml = s.R.clone(), tml = s.t.clone();
         const double reference = refinedRms(s, Rml, tml);
 
-        tripose::RansacParams ransac;
+        cv::tripose::RansacParams ransac;
         ransac.threshold = 4.0;
         Mat R, t;
-        if (tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        if (cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                  s.cameraMatrices, noArray(), s.R12, s.t12, R, t, ransac) > 0)
             ransacReached += refinedRms(s, R, t) <= reference + kRmsTolerance;
 
         R.release();
         t.release();
-        if (tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+        if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                            s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                           tripose::POSE_LINEAR_REFINE) > 0)
+                                           cv::tripose::POSE_LINEAR_REFINE) > 0)
             linearReached += refinedRms(s, R, t) <= reference + kRmsTolerance;
     }
     std::cout << regime.name << " 10P+10L 1 px: RMS at or below the optimum from the truth: RANSAC "
@@ -82,17 +82,17 @@ TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
 }
 
 INSTANTIATE_TEST_CASE_P(Regimes, Tripose_MlOptimum,
-                        testing::Values(Regime{ "narrow 1 %", tripose::support::MOTION_SMALL, 0.01, false },
-                                        Regime{ "narrow 0.5 %", tripose::support::MOTION_SMALL, 0.005, false },
-                                        Regime{ "planar large", tripose::support::MOTION_LARGE, 0.0, true },
-                                        Regime{ "planar small", tripose::support::MOTION_SMALL, 0.0, true }));
+                        testing::Values(Regime{ "narrow 1 %", cv::tripose::support::MOTION_SMALL, 0.01, false },
+                                        Regime{ "narrow 0.5 %", cv::tripose::support::MOTION_SMALL, 0.005, false },
+                                        Regime{ "planar large", cv::tripose::support::MOTION_LARGE, 0.0, true },
+                                        Regime{ "planar small", cv::tripose::support::MOTION_SMALL, 0.0, true }));
 
 TEST(Tripose_SyntheticRegimes, narrow_baseline_and_planar_structure)
 {
     SyntheticSceneParams params;
     params.numPoints = 6;
     params.numLines = 6;
-    params.motion = tripose::support::MOTION_SMALL;
+    params.motion = cv::tripose::support::MOTION_SMALL;
     params.baseline12Fraction = 0.01;
     params.planar = true;
     params.planeTilt = 30.0;

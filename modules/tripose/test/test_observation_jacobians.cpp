@@ -11,14 +11,14 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
-#include "../src/geometry/line_parameterization.hpp"
-#include "../src/geometry/residuals.hpp"
-#include "../src/refine/observation_model.hpp"
+#include "../src/core/geometry/line_parameterization.hpp"
+#include "../src/core/geometry/residuals.hpp"
+#include "../src/core/refine/observation_model.hpp"
 
 namespace opencv_test {
 namespace {
 
-using namespace cv::tripose::detail;
+using namespace ::tripose;
 
 typedef Eigen::Matrix<double, 6, 1> Vector6d; // a left increment (omega, dt) of the estimated pose
 

@@ -4,12 +4,12 @@
 
 #include "test_precomp.hpp"
 
-#include "../src/linear/polynomial_roots.hpp"
+#include "../src/core/linear/polynomial_roots.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::detail::solveRealPolynomialRoots;
+using ::tripose::solveRealPolynomialRoots;
 
 //! Coefficients (ascending) of lead * prod (x - r_i) * (x^2 + 1)^complexPairs.
 std::vector<double> polynomialFromRoots(const std::vector<double>& roots, int complexPairs, double lead)

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "test_precomp.hpp"
-#include "../src/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
+#include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
 
 namespace opencv_test {
 
@@ -58,8 +58,8 @@ inline Mat triangulateFromKnownPair(const std::vector<Mat>& K, const Mat& R12, c
     return X.reshape(1, points1.rows);
 }
 
-using tripose::support::PoseError;
-using tripose::support::poseError;
+using cv::tripose::support::PoseError;
+using cv::tripose::support::poseError;
 
 //! An angle in radians in degrees, the unit of PoseError: noise-free bounds are stated in radians,
 //! as in the Python tests.
@@ -80,10 +80,10 @@ inline std::string mixName(const FeatureMix& m)
     return cv::format("%dP%dL", m.points, m.lines);
 }
 
-inline tripose::support::SyntheticSceneParams sceneParams(const FeatureMix& mix, int motion, double noise, int seed,
+inline cv::tripose::support::SyntheticSceneParams sceneParams(const FeatureMix& mix, int motion, double noise, int seed,
                                                           double outlierRatio = 0)
 {
-    tripose::support::SyntheticSceneParams params;
+    cv::tripose::support::SyntheticSceneParams params;
     params.numPoints = mix.points;
     params.numLines = mix.lines;
     params.motion = motion;
@@ -93,18 +93,18 @@ inline tripose::support::SyntheticSceneParams sceneParams(const FeatureMix& mix,
     return params;
 }
 
-inline tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed,
+inline cv::tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int motion, double noise, int seed,
                                                   double outlierRatio = 0)
 {
-    return tripose::support::generateSyntheticScene(sceneParams(mix, motion, noise, seed, outlierRatio));
+    return cv::tripose::support::generateSyntheticScene(sceneParams(mix, motion, noise, seed, outlierRatio));
 }
 
 //! Solves a scene with the linear method; all candidates best first.
-inline int solveScene(const tripose::support::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
+inline int solveScene(const cv::tripose::support::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
 {
-    return tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    return cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                           s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                          tripose::POSE_LINEAR, Rs, ts);
+                                          cv::tripose::POSE_LINEAR, Rs, ts);
 }
 
 } // namespace opencv_test

@@ -9,7 +9,7 @@
 
 #include <functional>
 
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
 namespace opencv_test {
 namespace {

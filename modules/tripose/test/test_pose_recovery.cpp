@@ -9,12 +9,12 @@
 
 #include <Eigen/Dense>
 
-#include "../src/linear/pose_recovery.hpp"
+#include "../src/core/linear/pose_recovery.hpp"
 
 namespace opencv_test {
 namespace {
 
-using cv::tripose::detail::nearestRotation;
+using ::tripose::nearestRotation;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 

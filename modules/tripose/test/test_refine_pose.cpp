@@ -5,20 +5,20 @@
 #include "test_pose_common.hpp"
 
 #include <Eigen/Dense>
-#include "../src/opencv_compat.hpp"
+#include "../src/opencv/opencv_compat.hpp"
 
-#include "../src/geometry/line_parameterization.hpp"
-#include "../src/refine/ml_refinement.hpp"
-#include "../src/input/problem_input.hpp"
+#include "../src/core/geometry/line_parameterization.hpp"
+#include "../src/core/refine/ml_refinement.hpp"
+#include "../src/opencv/argument_reading.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::RefineParams;
-using tripose::support::SyntheticScene;
+using cv::tripose::RefineParams;
+using cv::tripose::support::SyntheticScene;
 
-using tripose::support::PoseError;
-using tripose::support::poseError;
+using cv::tripose::support::PoseError;
+using cv::tripose::support::poseError;
 
 //! Appends the errors of (R, t) against (Rref, tref): rotation (deg) and relative translation.
 void appendErrors(const Mat& R, const Mat& t, const Mat& Rref, const Mat& tref, std::vector<double>& rotation,
@@ -39,7 +39,7 @@ double median(std::vector<double> v)
 double refineScene(const SyntheticScene& s, Mat& R, Mat& t, const RefineParams& params = RefineParams(),
                    OutputArray points3d = noArray(), OutputArray lines3d = noArray())
 {
-    return tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+    return cv::tripose::refinePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                         s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params, points3d, lines3d);
 }
 
@@ -58,18 +58,18 @@ struct Setting
 
 std::string settingName(const Setting& s)
 {
-    return format("%dP+%dL %s", s.points, s.lines, s.motion == tripose::support::MOTION_LARGE ? "large" : "small");
+    return format("%dP+%dL %s", s.points, s.lines, s.motion == cv::tripose::support::MOTION_LARGE ? "large" : "small");
 }
 
 const Setting kPaperSettings[] = {
-    { 3, 3, tripose::support::MOTION_LARGE }, { 4, 4, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_LARGE },
-    { 3, 3, tripose::support::MOTION_SMALL }, { 4, 4, tripose::support::MOTION_SMALL }, { 10, 10, tripose::support::MOTION_SMALL },
+    { 3, 3, cv::tripose::support::MOTION_LARGE }, { 4, 4, cv::tripose::support::MOTION_LARGE }, { 10, 10, cv::tripose::support::MOTION_LARGE },
+    { 3, 3, cv::tripose::support::MOTION_SMALL }, { 4, 4, cv::tripose::support::MOTION_SMALL }, { 10, 10, cv::tripose::support::MOTION_SMALL },
 };
 
 TEST(Tripose_LineParameterization, chart_jacobian_matches_finite_differences)
 {
-    using tripose::detail::OrthonormalLine;
-    using tripose::detail::PluckerLine;
+    using ::tripose::OrthonormalLine;
+    using ::tripose::PluckerLine;
     RNG rng(17);
     double worst = 0;
     for (int trial = 0; trial < 100; ++trial)
@@ -109,7 +109,7 @@ TEST(Tripose_LineParameterization, chart_jacobian_matches_finite_differences)
 
 TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
 {
-    using tripose::detail::PluckerLine;
+    using ::tripose::PluckerLine;
     // The line through A and B, seen from three centres: its planes through each centre.
     const Eigen::Vector3d A(1, 2, 20), B(-3, 1, 24);
     const Eigen::Vector3d centres[3] = { Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 0, 1), Eigen::Vector3d(0, -3, 2) };
@@ -120,28 +120,28 @@ TEST(Tripose_LineParameterization, line_from_planes_and_closest_points)
         planes[v] << n, -n.dot(centres[v]);
     }
     PluckerLine L;
-    ASSERT_TRUE(tripose::detail::lineFromPlanes(planes, 3, L));
-    ASSERT_TRUE(tripose::detail::lineFromPlanes(planes, 2, L));
+    ASSERT_TRUE(::tripose::lineFromPlanes(planes, 3, L));
+    ASSERT_TRUE(::tripose::lineFromPlanes(planes, 2, L));
     // A and B lie on it: X x d = m.
     EXPECT_LT((A.cross(L.d) - L.m).norm(), 1e-12 * L.m.norm());
     EXPECT_LT((B.cross(L.d) - L.m).norm(), 1e-12 * L.m.norm());
     // The ray through A meets the line at A.
-    EXPECT_LT((tripose::detail::closestPointToRay(L, 3.0 * A) - A).norm(), 1e-9);
+    EXPECT_LT((::tripose::closestPointToRay(L, 3.0 * A) - A).norm(), 1e-9);
     // Two copies of one plane do not define a line.
     const Eigen::Vector4d same[2] = { planes[0], planes[0] };
-    EXPECT_FALSE(tripose::detail::lineFromPlanes(same, 2, L));
+    EXPECT_FALSE(::tripose::lineFromPlanes(same, 2, L));
 }
 
 TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 {
-    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_LARGE, 1.0, 8);
-    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
+    const SyntheticScene s = makeScene({ 4, 4 }, cv::tripose::support::MOTION_LARGE, 1.0, 8);
+    const ::tripose::ViewSet data = cv::tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
-    tripose::detail::CameraPose pose;
+    ::tripose::CameraPose pose;
     pose.t(1) = std::numeric_limits<double>::quiet_NaN();
-    tripose::detail::RefinedStructure structure;
-    const tripose::detail::RefinementSummary summary =
-        tripose::detail::refinePoseAndStructure(data, pose, RefineParams(), nullptr, nullptr, &structure);
+    ::tripose::RefinedStructure structure;
+    const ::tripose::RefinementSummary summary =
+        ::tripose::refinePoseAndStructure(data, pose, ::tripose::RefineOptions(), nullptr, nullptr, &structure);
     EXPECT_TRUE(std::isinf(summary.finalRms));
     EXPECT_EQ(summary.iterations, 0);
     EXPECT_TRUE(pose.R.isIdentity());
@@ -154,8 +154,8 @@ TEST(Tripose_RefinePose, engine_leaves_a_non_finite_pose_alone)
 TEST(Tripose_RefinePose, noise_free_returns_the_truth_from_a_perturbed_start)
 {
     const Setting settings[] = {
-        { 3, 3, tripose::support::MOTION_LARGE }, { 10, 10, tripose::support::MOTION_SMALL }, { 6, 0, tripose::support::MOTION_LARGE },
-        { 0, 6, tripose::support::MOTION_SMALL }, { 2, 1, tripose::support::MOTION_LARGE },
+        { 3, 3, cv::tripose::support::MOTION_LARGE }, { 10, 10, cv::tripose::support::MOTION_SMALL }, { 6, 0, cv::tripose::support::MOTION_LARGE },
+        { 0, 6, cv::tripose::support::MOTION_SMALL }, { 2, 1, cv::tripose::support::MOTION_LARGE },
     };
     RNG rng(7);
     for (const Setting& setting : settings)
@@ -195,7 +195,7 @@ TEST(Tripose_RefinePose, noise_free_lines3d_are_the_view1_end_points)
 {
     // The ends of a generated segment are observed exactly in view 1, so the returned points of each
     // line (closest to the view-1 end rays) are the true 3D end points.
-    const SyntheticScene s = makeScene({ 3, 5 }, tripose::support::MOTION_LARGE, 0.0, 3);
+    const SyntheticScene s = makeScene({ 3, 5 }, cv::tripose::support::MOTION_LARGE, 0.0, 3);
     Mat R = s.R.clone(), t = s.t.clone(), L;
     refineScene(s, R, t, RefineParams(), noArray(), L);
     EXPECT_LT(cv::norm(L, s.lines3d, NORM_INF), 1e-6);
@@ -218,7 +218,7 @@ TEST(Tripose_RefinePose, sigma1_converges_to_the_ml_estimate_of_the_truth)
             Mat R, t;
             // Several times the ML errors: in small motion (|t| of a few metres) the ML translation error
             // alone is ~7 % of |t|.
-            perturbPose(s.R, s.t, 2.0, setting.motion == tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
+            perturbPose(s.R, s.t, 2.0, setting.motion == cv::tripose::support::MOTION_SMALL ? 0.2 : 0.05, rng, R, t);
             appendErrors(R, t, s.R, s.t, startRot, startTrans);
             refineScene(s, R, t);
             ASSERT_TRUE(checkRange(R) && checkRange(t));
@@ -264,7 +264,7 @@ TEST(Tripose_RefinePose, linear_then_refined_is_within_5_percent_of_ml_from_trut
             appendErrors(Rml, tml, s.R, s.t, mlRot, mlTrans);
 
             Mat R, t;
-            if (tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+            if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                s.cameraMatrices, noArray(), s.R12, s.t12, R, t) == 0)
             {
                 linRot.push_back(180.0);
@@ -306,7 +306,7 @@ void triangulateThenPnpRefine(const SyntheticScene& s, Mat& R, Mat& t)
 TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
 {
     const int scenes = 200;
-    for (int motion : { (int)tripose::support::MOTION_LARGE, (int)tripose::support::MOTION_SMALL })
+    for (int motion : { (int)cv::tripose::support::MOTION_LARGE, (int)cv::tripose::support::MOTION_SMALL })
     {
         for (int points : { 6, 20 })
         {
@@ -325,7 +325,7 @@ TEST(Tripose_RefinePose, beats_triangulation_then_view3_pose_refinement)
                 triangulateThenPnpRefine(s, R, t);
                 appendErrors(R, t, s.R, s.t, pnpRot, pnpTrans);
             }
-            const std::string name = format("%dP %s", points, motion == tripose::support::MOTION_LARGE ? "large" : "small");
+            const std::string name = format("%dP %s", points, motion == cv::tripose::support::MOTION_LARGE ? "large" : "small");
             SCOPED_TRACE(name);
             std::cout << format("[ %-10s ] three-view ML %.4f deg %.5f | triangulate + solvePnPRefineLM %.4f deg %.5f\n",
                                 name.c_str(), median(oursRot), median(oursTrans), median(pnpRot), median(pnpTrans));
@@ -343,10 +343,10 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
     for (int seed = 0; seed < scenes; ++seed)
     {
         // 2 of 10 points and 2 of 10 lines are wrong matches in view 3 (at least 20 px off).
-        const SyntheticScene s = makeScene({ 10, 10 }, tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
+        const SyntheticScene s = makeScene({ 10, 10 }, cv::tripose::support::MOTION_LARGE, 1.0, seed, 0.2);
         Mat R0, t0;
         perturbPose(s.R, s.t, 1.0, 0.02, rng, R0, t0);
-        for (int loss = tripose::LOSS_SQUARED; loss <= tripose::LOSS_CAUCHY; ++loss)
+        for (int loss = cv::tripose::LOSS_SQUARED; loss <= cv::tripose::LOSS_CAUCHY; ++loss)
         {
             RefineParams params;
             params.loss = loss;
@@ -362,11 +362,11 @@ TEST(Tripose_RefinePose, robust_loss_resists_gross_outliers)
     for (int loss = 0; loss < 3; ++loss)
         std::cout << format("[ %-7s ] median rotation error %.4f deg, translation %.5f\n", names[loss],
                             median(errors[loss][0]), median(errors[loss][1]));
-    for (int loss = tripose::LOSS_HUBER; loss <= tripose::LOSS_CAUCHY; ++loss)
+    for (int loss = cv::tripose::LOSS_HUBER; loss <= cv::tripose::LOSS_CAUCHY; ++loss)
     {
         SCOPED_TRACE(names[loss]);
-        EXPECT_LT(median(errors[loss][0]), 0.8 * median(errors[tripose::LOSS_SQUARED][0]));
-        EXPECT_LT(median(errors[loss][1]), 0.8 * median(errors[tripose::LOSS_SQUARED][1]));
+        EXPECT_LT(median(errors[loss][0]), 0.8 * median(errors[cv::tripose::LOSS_SQUARED][0]));
+        EXPECT_LT(median(errors[loss][1]), 0.8 * median(errors[cv::tripose::LOSS_SQUARED][1]));
     }
 }
 
@@ -374,7 +374,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 {
     // The robust estimator refines over its inliers by index; the result must be that of a problem
     // holding only those features.
-    const SyntheticScene s = makeScene({ 12, 8 }, tripose::support::MOTION_SMALL, 1.0, 21);
+    const SyntheticScene s = makeScene({ 12, 8 }, cv::tripose::support::MOTION_SMALL, 1.0, 21);
     const std::vector<int> pointIdx = { 0, 2, 3, 5, 8, 11 }, lineIdx = { 1, 4, 6 };
     Mat p1, p2, p3, l1, l2, l3;
     for (int i : pointIdx)
@@ -390,21 +390,21 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
         l3.push_back(s.lines3.row(i));
     }
     Mat R = s.R.clone(), t = s.t.clone();
-    const double rms = tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, s.cameraMatrices, noArray(), s.R12,
+    const double rms = cv::tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, s.cameraMatrices, noArray(), s.R12,
                                                     s.t12, R, t);
 
-    const tripose::detail::ViewSet data = tripose::detail::readThreeViewInput(
+    const ::tripose::ViewSet data = cv::tripose::detail::readThreeViewInput(
         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
-    tripose::detail::CameraPose pose;
+    ::tripose::CameraPose pose;
     for (int r = 0; r < 3; ++r)
     {
         pose.t(r) = s.t.at<double>(r);
         for (int c = 0; c < 3; ++c)
             pose.R(r, c) = s.R.at<double>(r, c);
     }
-    tripose::detail::RefinedStructure structure;
-    const tripose::detail::RefinementSummary summary =
-        tripose::detail::refinePoseAndStructure(data, pose, RefineParams(), &pointIdx, &lineIdx, &structure);
+    ::tripose::RefinedStructure structure;
+    const ::tripose::RefinementSummary summary =
+        ::tripose::refinePoseAndStructure(data, pose, ::tripose::RefineOptions(), &pointIdx, &lineIdx, &structure);
     EXPECT_NEAR(summary.finalRms, rms, 1e-12);
     EXPECT_LE(summary.finalRms, summary.initialRms);
     EXPECT_GT(summary.iterations, 0);
@@ -421,7 +421,7 @@ TEST(Tripose_RefinePose, subset_refinement_matches_refining_the_subset_alone)
 TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 {
     // At the returned estimate, recompute the residuals from points3d / lines3d independently.
-    const SyntheticScene s = makeScene({ 5, 4 }, tripose::support::MOTION_LARGE, 1.0, 9);
+    const SyntheticScene s = makeScene({ 5, 4 }, cv::tripose::support::MOTION_LARGE, 1.0, 9);
     Mat R = s.R.clone(), t = s.t.clone(), X, L;
     const double rms = refineScene(s, R, t, RefineParams(), X, L);
     const Mat Rs[3] = { Mat::eye(3, 3, CV_64F), s.R12, R }, ts[3] = { Mat::zeros(3, 1, CV_64F), s.t12, t };
@@ -460,7 +460,7 @@ TEST(Tripose_RefinePose, rms_is_the_rms_of_all_three_views)
 
 TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 {
-    const SyntheticScene s = makeScene({ 4, 3 }, tripose::support::MOTION_LARGE, 0.5, 4);
+    const SyntheticScene s = makeScene({ 4, 3 }, cv::tripose::support::MOTION_LARGE, 0.5, 4);
     RNG rng(1);
     Mat R0, t0;
     perturbPose(s.R, s.t, 1.0, 0.02, rng, R0, t0);
@@ -496,7 +496,7 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
     t0.convertTo(t32, CV_32F);
     s.cameraMatrices[0].convertTo(K32, CV_32F);
     Mat t1x3 = t32.t();
-    tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, K32, noArray(), s.R12, s.t12, R32, t1x3);
+    cv::tripose::refinePoseLinePoint(p1, p2, p3, l1, l2, l3, K32, noArray(), s.R12, s.t12, R32, t1x3);
     ASSERT_EQ(R32.type(), CV_64F);
     ASSERT_EQ(t1x3.type(), CV_64F);
     ASSERT_EQ(t1x3.size(), Size(1, 3));
@@ -507,12 +507,12 @@ TEST(Tripose_RefinePose, rotation_forms_and_input_types)
 
 TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 {
-    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_SMALL, 1.0, 2);
+    const SyntheticScene s = makeScene({ 4, 4 }, cv::tripose::support::MOTION_SMALL, 1.0, 2);
     // Every view sees the same image: the views 1-2 baseline cannot triangulate anything consistently,
     // and views 2, 3 are contradicted.
     {
         Mat R = s.R.clone(), t = s.t.clone(), X, L;
-        const double rms = tripose::refinePoseLinePoint(s.points1, s.points1, s.points1, s.lines1, s.lines1, s.lines1,
+        const double rms = cv::tripose::refinePoseLinePoint(s.points1, s.points1, s.points1, s.lines1, s.lines1, s.lines1,
                                                         s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
                                                         RefineParams(), X, L);
         EXPECT_FALSE(cvIsNaN(rms));
@@ -529,7 +529,7 @@ TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
             l[v] = repeat(sl[v]->row(0), 3, 1);
         }
         Mat R = s.R.clone(), t = s.t.clone(), X, L;
-        const double rms = tripose::refinePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices,
+        const double rms = cv::tripose::refinePoseLinePoint(p[0], p[1], p[2], l[0], l[1], l[2], s.cameraMatrices,
                                                         noArray(), s.R12, s.t12, R, t, RefineParams(), X, L);
         EXPECT_FALSE(cvIsNaN(rms));
         EXPECT_TRUE(checkRange(R) && checkRange(t) && checkRange(X) && checkRange(L));
@@ -548,7 +548,7 @@ TEST(Tripose_RefinePose, degenerate_input_gives_finite_output)
 
 TEST(Tripose_RefinePose, bad_params_and_inputs_throw_naming_the_argument)
 {
-    const SyntheticScene s = makeScene({ 4, 4 }, tripose::support::MOTION_LARGE, 0.0, 1);
+    const SyntheticScene s = makeScene({ 4, 4 }, cv::tripose::support::MOTION_LARGE, 0.0, 1);
     auto expectThrow = [&](const RefineParams& params, Mat R, Mat t, const std::string& name) {
         try
         {
@@ -594,18 +594,18 @@ TEST(Tripose_RefinePose, bad_params_and_inputs_throw_naming_the_argument)
 
     // The shared input checks, with three features as the minimum.
     Mat R2 = R.clone(), t2 = t.clone();
-    EXPECT_THROW(tripose::refinePoseLinePoint(s.points1.rowRange(0, 1), s.points2.rowRange(0, 1),
+    EXPECT_THROW(cv::tripose::refinePoseLinePoint(s.points1.rowRange(0, 1), s.points2.rowRange(0, 1),
                                               s.points3.rowRange(0, 1), s.lines1.rowRange(0, 1),
                                               s.lines2.rowRange(0, 1), s.lines3.rowRange(0, 1), s.cameraMatrices,
                                               noArray(), s.R12, s.t12, R2, t2),
                  cv::Exception);
-    EXPECT_NO_THROW(tripose::refinePoseLinePoint(s.points1.rowRange(0, 2), s.points2.rowRange(0, 2),
+    EXPECT_NO_THROW(cv::tripose::refinePoseLinePoint(s.points1.rowRange(0, 2), s.points2.rowRange(0, 2),
                                                  s.points3.rowRange(0, 2), s.lines1.rowRange(0, 1),
                                                  s.lines2.rowRange(0, 1), s.lines3.rowRange(0, 1), s.cameraMatrices,
                                                  noArray(), s.R12, s.t12, R2, t2));
     try
     {
-        tripose::refinePoseLinePoint(s.points1, s.points2.rowRange(0, 3), s.points3, s.lines1, s.lines2, s.lines3,
+        cv::tripose::refinePoseLinePoint(s.points1, s.points2.rowRange(0, 3), s.points3, s.lines1, s.lines2, s.lines3,
                                      s.cameraMatrices, noArray(), s.R12, s.t12, R2, t2);
         ADD_FAILURE() << "no exception for mismatched points2";
     }

@@ -14,22 +14,22 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
-#include "../src/input/problem_input.hpp"
-#include "../src/linear/rig_pose_solver.hpp"
-#include "../src/linear/rig_solver.hpp"
-#include "../src/linear/rig_system.hpp"
+#include "../src/opencv/argument_reading.hpp"
+#include "../src/core/linear/rig_pose_solver.hpp"
+#include "../src/core/linear/rig_solver.hpp"
+#include "../src/core/linear/rig_system.hpp"
 
 namespace opencv_test {
 namespace {
 
-using cv::tripose::detail::CameraPose;
-using cv::tripose::detail::FeatureSubset;
-using cv::tripose::detail::Intrinsics;
-using cv::tripose::detail::RigPoseSolver;
-using cv::tripose::detail::View;
-using cv::tripose::detail::ViewSet;
-const int kRigView4 = cv::tripose::detail::ViewSet::kRigRightB;
-using cv::tripose::detail::rigPoseCandidates;
+using ::tripose::CameraPose;
+using ::tripose::FeatureSubset;
+using ::tripose::Intrinsics;
+using ::tripose::RigPoseSolver;
+using ::tripose::View;
+using ::tripose::ViewSet;
+const int kRigView4 = ::tripose::ViewSet::kRigRightB;
+using ::tripose::rigPoseCandidates;
 using Eigen::Matrix3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
@@ -127,7 +127,7 @@ RigScene makeRigScene(const std::vector<FeatureSpec>& features, int seed, double
     rig.t = toEigen3(s.t12);
     scene.truth.R = toEigen33(s.R);
     scene.truth.t = toEigen3(s.t);
-    scene.cameras = { CameraPose(), rig, scene.truth, cv::tripose::detail::composePose(rig, scene.truth) };
+    scene.cameras = { CameraPose(), rig, scene.truth, ::tripose::composePose(rig, scene.truth) };
     return scene;
 }
 

@@ -6,12 +6,12 @@
 
 #include <set>
 
-#include "../src/robust/sample_generator.hpp"
+#include "../src/core/robust/sample_generator.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::detail::SampleGenerator;
+using ::tripose::SampleGenerator;
 
 std::vector<std::vector<int>> drawAll(SampleGenerator& generator, int limit)
 {

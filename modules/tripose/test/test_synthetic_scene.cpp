@@ -8,9 +8,9 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::SyntheticScene;
-using tripose::support::SyntheticSceneParams;
-using tripose::support::generateSyntheticScene;
+using cv::tripose::support::SyntheticScene;
+using cv::tripose::support::SyntheticSceneParams;
+using cv::tripose::support::generateSyntheticScene;
 
 //! The three poses of a scene: view 1 = [I|0].
 void scenePoses(const SyntheticScene& s, Matx33d R[3], Vec3d t[3])
@@ -100,7 +100,7 @@ TEST(Tripose_SyntheticScene, defaults_follow_the_paper)
     const SyntheticSceneParams p;
     EXPECT_EQ(p.numPoints, 4);
     EXPECT_EQ(p.numLines, 4);
-    EXPECT_EQ(p.motion, tripose::support::MOTION_LARGE);
+    EXPECT_EQ(p.motion, cv::tripose::support::MOTION_LARGE);
     EXPECT_EQ(p.noiseSigma, 0.0);
     EXPECT_EQ(p.outlierRatio, 0.0);
     EXPECT_EQ(p.cubeSize, 10.0);
@@ -119,7 +119,7 @@ TEST(Tripose_SyntheticScene, defaults_follow_the_paper)
 
 TEST(Tripose_SyntheticScene, shapes_and_types)
 {
-    const SyntheticScene s = generateSyntheticScene(makeParams(7, 5, tripose::support::MOTION_LARGE, 3));
+    const SyntheticScene s = generateSyntheticScene(makeParams(7, 5, cv::tripose::support::MOTION_LARGE, 3));
     for (const Mat* m : { &s.points1, &s.points2, &s.points3 })
     {
         EXPECT_EQ(m->size(), Size(2, 7));
@@ -142,10 +142,10 @@ TEST(Tripose_SyntheticScene, shapes_and_types)
     EXPECT_EQ(s.t.size(), Size(1, 3));
 
     // Points only and lines only keep the other kind's column count.
-    const SyntheticScene pointsOnly = generateSyntheticScene(makeParams(3, 0, tripose::support::MOTION_SMALL, 1));
+    const SyntheticScene pointsOnly = generateSyntheticScene(makeParams(3, 0, cv::tripose::support::MOTION_SMALL, 1));
     EXPECT_EQ(pointsOnly.lines1.size(), Size(4, 0));
     EXPECT_EQ(pointsOnly.lines3d.size(), Size(6, 0));
-    const SyntheticScene linesOnly = generateSyntheticScene(makeParams(0, 3, tripose::support::MOTION_SMALL, 1));
+    const SyntheticScene linesOnly = generateSyntheticScene(makeParams(0, 3, cv::tripose::support::MOTION_SMALL, 1));
     EXPECT_EQ(linesOnly.points3.size(), Size(2, 0));
     EXPECT_EQ(linesOnly.points3d.size(), Size(3, 0));
 }
@@ -153,7 +153,7 @@ TEST(Tripose_SyntheticScene, shapes_and_types)
 TEST(Tripose_SyntheticScene, poses_are_proper_rotations)
 {
     for (int seed = 0; seed < 50; ++seed)
-        for (int motion : { tripose::support::MOTION_LARGE, tripose::support::MOTION_SMALL })
+        for (int motion : { cv::tripose::support::MOTION_LARGE, cv::tripose::support::MOTION_SMALL })
         {
             const SyntheticScene s = generateSyntheticScene(makeParams(1, 0, motion, seed));
             for (const Mat* R : { &s.R12, &s.R })
@@ -168,7 +168,7 @@ TEST(Tripose_SyntheticScene, poses_are_proper_rotations)
 // Every feature, before noise, lies inside every image (with the margin) and in front of every camera.
 TEST(Tripose_SyntheticScene, features_project_inside_the_images_and_in_front)
 {
-    for (int motion : { tripose::support::MOTION_LARGE, tripose::support::MOTION_SMALL })
+    for (int motion : { cv::tripose::support::MOTION_LARGE, cv::tripose::support::MOTION_SMALL })
         for (int seed = 0; seed < 40; ++seed)
         {
             const SyntheticScene s = generateSyntheticScene(makeParams(20, 20, motion, seed));
@@ -203,7 +203,7 @@ TEST(Tripose_SyntheticScene, features_project_inside_the_images_and_in_front)
 TEST(Tripose_SyntheticScene, noise_free_observations_reproject_exactly)
 {
     double worst = 0;
-    for (int motion : { tripose::support::MOTION_LARGE, tripose::support::MOTION_SMALL })
+    for (int motion : { cv::tripose::support::MOTION_LARGE, cv::tripose::support::MOTION_SMALL })
         for (int seed = 0; seed < 100; ++seed)
             worst = std::max(worst, maxReprojectionError(generateSyntheticScene(makeParams(10, 10, motion, seed))));
     EXPECT_LT(worst, 1e-9);
@@ -211,7 +211,7 @@ TEST(Tripose_SyntheticScene, noise_free_observations_reproject_exactly)
 
 TEST(Tripose_SyntheticScene, same_seed_same_scene_different_seed_different_scene)
 {
-    SyntheticSceneParams p = makeParams(6, 6, tripose::support::MOTION_LARGE, 1234);
+    SyntheticSceneParams p = makeParams(6, 6, cv::tripose::support::MOTION_LARGE, 1234);
     p.noiseSigma = 1.0;
     p.outlierRatio = 0.3;
     const SyntheticScene a = generateSyntheticScene(p);
@@ -233,7 +233,7 @@ TEST(Tripose_SyntheticScene, same_seed_same_scene_different_seed_different_scene
 // change the points (so sweeps over one parameter compare like with like).
 TEST(Tripose_SyntheticScene, parameters_sweep_over_the_same_geometry)
 {
-    SyntheticSceneParams p = makeParams(5, 5, tripose::support::MOTION_LARGE, 77);
+    SyntheticSceneParams p = makeParams(5, 5, cv::tripose::support::MOTION_LARGE, 77);
     const SyntheticScene clean = generateSyntheticScene(p);
     p.noiseSigma = 2.0;
     const SyntheticScene noisy = generateSyntheticScene(p);
@@ -259,7 +259,7 @@ TEST(Tripose_SyntheticScene, camera_placement_follows_the_motion_regime)
     double largestSmallMotion = 0;
     for (int seed = 0; seed < 200; ++seed)
     {
-        for (int motion : { tripose::support::MOTION_LARGE, tripose::support::MOTION_SMALL })
+        for (int motion : { cv::tripose::support::MOTION_LARGE, cv::tripose::support::MOTION_SMALL })
         {
             const SyntheticScene s = generateSyntheticScene(makeParams(4, 4, motion, seed));
             Matx33d R[3];
@@ -270,7 +270,7 @@ TEST(Tripose_SyntheticScene, camera_placement_follows_the_motion_regime)
                 const Vec3d c = R[v] * centre + t[v];   // cube centre seen from view v
                 EXPECT_LT(std::abs(c[0]) + std::abs(c[1]), 1e-9) << "view " << v + 1 << " does not look at the cube centre";
                 const Vec3d cameraCentre = -(R[v].t() * t[v]); // in the frame of view 1
-                if (motion == tripose::support::MOTION_LARGE)
+                if (motion == cv::tripose::support::MOTION_LARGE)
                     EXPECT_NEAR(c[2], d, 1e-9) << "view " << v + 1 << " seed " << seed;
                 else
                 {
@@ -298,7 +298,7 @@ TEST(Tripose_SyntheticScene, camera_placement_follows_the_motion_regime)
 TEST(Tripose_SyntheticScene, noise_has_the_requested_standard_deviation)
 {
     const double sigma = 1.5;
-    SyntheticSceneParams p = makeParams(300, 300, tripose::support::MOTION_LARGE, 5);
+    SyntheticSceneParams p = makeParams(300, 300, cv::tripose::support::MOTION_LARGE, 5);
     const SyntheticScene clean = generateSyntheticScene(p);
     p.noiseSigma = sigma;
     const SyntheticScene noisy = generateSyntheticScene(p);
@@ -328,7 +328,7 @@ TEST(Tripose_SyntheticScene, outliers_have_the_requested_count_and_are_marked)
     struct Case { int n; double ratio; int expected; };
     for (const Case& c : { Case{ 10, 0.3, 3 }, Case{ 7, 0.5, 4 }, Case{ 20, 0.0, 0 }, Case{ 4, 0.9, 4 }, Case{ 3, 0.1, 0 } })
     {
-        SyntheticSceneParams p = makeParams(c.n, c.n, tripose::support::MOTION_LARGE, 9);
+        SyntheticSceneParams p = makeParams(c.n, c.n, cv::tripose::support::MOTION_LARGE, 9);
         p.outlierRatio = c.ratio;
         const SyntheticScene s = generateSyntheticScene(p);
         p.outlierRatio = 0;
@@ -373,7 +373,7 @@ TEST(Tripose_SyntheticScene, outliers_are_chosen_at_random)
     std::vector<int> hits(10, 0);
     for (int seed = 0; seed < 100; ++seed)
     {
-        SyntheticSceneParams p = makeParams(10, 0, tripose::support::MOTION_LARGE, seed);
+        SyntheticSceneParams p = makeParams(10, 0, cv::tripose::support::MOTION_LARGE, seed);
         p.outlierRatio = 0.3;
         const SyntheticScene s = generateSyntheticScene(p);
         for (int i = 0; i < 10; ++i)
@@ -385,7 +385,7 @@ TEST(Tripose_SyntheticScene, outliers_are_chosen_at_random)
 
 TEST(Tripose_SyntheticScene, per_view_intrinsics_are_honoured)
 {
-    SyntheticSceneParams p = makeParams(15, 15, tripose::support::MOTION_SMALL, 21);
+    SyntheticSceneParams p = makeParams(15, 15, cv::tripose::support::MOTION_SMALL, 21);
     p.imageSize = Size(1024, 768);
     p.cameraMatrices = { Mat(Matx33d(700, 0, 500, 0, 720, 380, 0, 0, 1)),
                          Mat(Matx33d(1200, 0.5, 530, 0, 1190, 400, 0, 0, 1)),
@@ -457,7 +457,7 @@ TEST(Tripose_SyntheticScene, bad_parameters_throw_naming_the_parameter)
     p.smallMotionRadius = -1;
     expectBadParam(p, "smallMotionRadius");
     p = SyntheticSceneParams();
-    p.motion = tripose::support::MOTION_SMALL;
+    p.motion = cv::tripose::support::MOTION_SMALL;
     p.smallMotionRadius = 12; // could bring views 2, 3 into the cube
     expectBadParam(p, "smallMotionRadius");
     p = SyntheticSceneParams();
@@ -483,7 +483,7 @@ TEST(Tripose_SyntheticScene, bad_parameters_throw_naming_the_parameter)
 // accept is theirs to check, on scenes made with any camera.
 TEST(Tripose_SyntheticScene, intrinsics_the_estimators_reject_still_make_scenes)
 {
-    SyntheticSceneParams p = makeParams(6, 6, tripose::support::MOTION_LARGE, 8);
+    SyntheticSceneParams p = makeParams(6, 6, cv::tripose::support::MOTION_LARGE, 8);
     const Matx33d mirrored(800, 0, 319.5, 0, -800, 239.5, 0, 0, 1); // negative focal length: y flipped
     p.cameraMatrices = { Mat(mirrored) };
     const SyntheticScene s = generateSyntheticScene(p);
@@ -492,7 +492,7 @@ TEST(Tripose_SyntheticScene, intrinsics_the_estimators_reject_still_make_scenes)
     Mat R, t;
     try
     {
-        tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
+        cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
                                        noArray(), s.R12, s.t12, R, t);
         ADD_FAILURE() << "the estimator accepted a negative focal length";
     }
@@ -543,7 +543,7 @@ TEST(Tripose_SyntheticScene, concurrent_generation_is_deterministic)
 
 TEST(Tripose_SyntheticScene, large_scenes_are_generated)
 {
-    SyntheticSceneParams p = makeParams(2000, 2000, tripose::support::MOTION_SMALL, 4);
+    SyntheticSceneParams p = makeParams(2000, 2000, cv::tripose::support::MOTION_SMALL, 4);
     p.noiseSigma = 0.5;
     p.outlierRatio = 0.5;
     const SyntheticScene s = generateSyntheticScene(p);

@@ -10,12 +10,12 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::SyntheticStereoParams;
-using tripose::support::SyntheticStereoScene;
-using tripose::support::generateSyntheticStereoScene;
-using tripose::support::SEEN_IN_BOTH;
-using tripose::support::SEEN_IN_VIEW3;
-using tripose::support::SEEN_IN_VIEW4;
+using cv::tripose::support::SyntheticStereoParams;
+using cv::tripose::support::SyntheticStereoScene;
+using cv::tripose::support::generateSyntheticStereoScene;
+using cv::tripose::support::SEEN_IN_BOTH;
+using cv::tripose::support::SEEN_IN_VIEW3;
+using cv::tripose::support::SEEN_IN_VIEW4;
 
 struct RigPoses
 {

@@ -15,9 +15,9 @@
 namespace opencv_test {
 namespace {
 
-using tripose::support::VggTriplet;
-using tripose::support::loadVggTriplet;
-using tripose::support::vggSequenceViewCount;
+using cv::tripose::support::VggTriplet;
+using cv::tripose::support::loadVggTriplet;
+using cv::tripose::support::vggSequenceViewCount;
 
 //! A sequence of the bundled data (test/data/vgg, see ATTRIBUTION.md there) and the number of
 //! features seen in all three views of each consecutive triplet (views i, i+1, i+2), counted from
@@ -293,7 +293,7 @@ TEST(Tripose_VggDataset, sequence_agrees_with_its_triplets)
     for (const char* name : { "Corridor", "Model-House", "Wadham-College" })
     {
         const std::string dir = findDataDirectory(std::string("vgg/") + name);
-        const tripose::support::VggSequence seq = tripose::support::loadVggSequence(dir);
+        const cv::tripose::support::VggSequence seq = cv::tripose::support::loadVggSequence(dir);
         ASSERT_EQ(vggSequenceViewCount(dir), (int)seq.Rs.size()) << name;
         const int views[3] = { 0, 2, 4 };
         const VggTriplet triplet = loadVggTriplet(dir, views[0], views[1], views[2]);
@@ -333,7 +333,7 @@ TEST(Tripose_VggDataset, sequence_agrees_with_its_triplets)
 
 TEST(Tripose_VggDataset, sequence_folder_errors_are_named)
 {
-    const std::string message = expectThrowMessage([] { tripose::support::loadVggSequence("/nonexistent-sequence"); });
+    const std::string message = expectThrowMessage([] { cv::tripose::support::loadVggSequence("/nonexistent-sequence"); });
     EXPECT_NE(std::string::npos, message.find("/nonexistent-sequence")) << message;
 }
 

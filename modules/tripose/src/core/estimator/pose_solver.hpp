@@ -1,0 +1,55 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_ESTIMATOR_POSE_SOLVER_HPP
+#define TRIPOSE_CORE_ESTIMATOR_POSE_SOLVER_HPP
+
+#include <vector>
+
+#include "../geometry/camera.hpp"
+#include "feature_subset.hpp"
+
+namespace tripose {
+
+/** The seam between a pose problem and the robust estimator (as calib3d's USAC separates them): the
+estimator loop draws samples, asks the solver for models, judges them with the PoseScorer and hands
+the best to the refiner; a new problem (another arrangement of views) supplies these two.
+*/
+class PoseSolver
+{
+public:
+    virtual ~PoseSolver() {}
+    //! Features in a minimal sample.
+    virtual int sampleSize() const = 0;
+    //! Fewest features estimateNonMinimal() accepts (it is over-determined from there).
+    virtual int nonMinimalSize() const = 0;
+    /** Samples are drawn from the first samplePool() of the @p numFeatures features in the single
+    index range (points first, see FeatureSubset): a solver for points alone returns the number of
+    points. The stopping rule counts the inliers among these features.
+    */
+    virtual int samplePool(int numFeatures) const { return numFeatures; }
+    /** Appends the candidate poses of a minimal sample to @p models; returns how many. @p exhaustive:
+    every distinct sample is drawn once (few features), so nothing else will repair a poor
+    hypothesis and a solver may spend more per sample.
+    */
+    virtual int estimateMinimal(const FeatureSubset& sample, bool exhaustive, std::vector<CameraPose>& models) const = 0;
+    //! Appends candidate poses from a larger set of features (local optimisation, fallback).
+    virtual int estimateNonMinimal(const FeatureSubset& features, std::vector<CameraPose>& models) const = 0;
+};
+
+class PoseRefiner
+{
+public:
+    virtual ~PoseRefiner() {}
+    //! Refines @p pose on @p inliers; false (pose unchanged) when it could not.
+    virtual bool refine(const FeatureSubset& inliers, CameraPose& pose) const = 0;
+    /** True when the problem's cost has several basins (see scoring/known_structure.hpp), so that
+    the estimator should also settle its final pose from all the features, not only from the
+    hypothesis' inliers. */
+    virtual bool searchesSeveralBasins() const { return false; }
+};
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_ESTIMATOR_POSE_SOLVER_HPP

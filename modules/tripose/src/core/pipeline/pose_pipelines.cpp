@@ -1,0 +1,121 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "pose_pipelines.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "../refine/multi_start_refinement.hpp"
+#include "../refine/multi_start_refiner.hpp"
+#include "../scoring/candidate_ranking.hpp"
+#include "../scoring/known_structure.hpp"
+
+namespace tripose {
+
+namespace {
+
+// Refined candidates closer than this (rotation in radians, translation relative to its norm) are
+// one local minimum reached twice.
+constexpr double kSameMinimum = 1e-7;
+
+bool sameMinimum(const CameraPose& a, const CameraPose& b)
+{
+    const double scale = std::max(1e-300, std::max(a.t.norm(), b.t.norm()));
+    return (a.R - b.R).norm() <= kSameMinimum && (a.t - b.t).norm() <= kSameMinimum * scale;
+}
+
+/** Refines every candidate over every view and, when the problem has several basins
+(@p severalBasins: a narrow known pair or planar structure, scoring/known_structure.hpp), from the
+26 starts around the best-ranked one that keep its rotation and move the centre of the estimated
+camera (refine/multi_start_refinement.hpp); each is re-triangulated until it settles. Returns the distinct minima that use as many features as
+the best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
+known pair or planar structure the linear candidates alone lead refinement to another minimum in
+most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
+void refineCandidates(const ViewSet& views, bool severalBasins, std::vector<ScoredPose>& candidates)
+{
+    const RefineOptions params;
+    std::vector<CameraPose> starts;
+    for (const ScoredPose& candidate : candidates)
+        starts.push_back(candidate.pose);
+    if (severalBasins && !candidates.empty())
+        centreDirectionStarts(views, candidates.front().pose, starts);
+    std::vector<LocalMinimum> minima;
+    refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
+    std::stable_sort(minima.begin(), minima.end(),
+                     [](const LocalMinimum& a, const LocalMinimum& b) { return a.betterThan(b); });
+    std::vector<ScoredPose> refined;
+    for (const LocalMinimum& m : minima)
+    {
+        bool repeated = false;
+        for (const ScoredPose& r : refined)
+            repeated = repeated || sameMinimum(r.pose, m.pose);
+        if (repeated || m.used < minima.front().used)
+            continue;
+        ScoredPose p;
+        p.pose = m.pose;
+        p.rms = m.rms;
+        refined.push_back(p);
+    }
+    candidates.swap(refined);
+}
+
+} // namespace
+
+std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolver& solver, bool refine)
+{
+    std::vector<CameraPose> poses;
+    solver.estimateNonMinimal(FeatureSubset::all(views.numPoints, views.numLines), poses);
+    const PoseScorer scorer(views);
+    std::vector<ScoredPose> ranked = rankCandidates(scorer, poses);
+    if (refine)
+        refineCandidates(views, hasSeveralBasins(views, scorer), ranked);
+    return ranked;
+}
+
+bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
+                    RobustEstimate& estimate)
+{
+    const PoseScorer scorer(views);
+    return estimateRobust(views, scorer, solver, options, estimate);
+}
+
+bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
+                    const RansacOptions& options, RobustEstimate& estimate)
+{
+    checkRansacOptions(options);
+    const MultiStartRefiner refiner(views, options.refineOptions, &solver, hasSeveralBasins(views, scorer));
+    if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
+        return true;
+    estimate = RobustEstimate();
+    estimate.pointInliers.assign(views.numPoints, 0);
+    estimate.lineInliers.assign(views.numLines, 0);
+    return false;
+}
+
+double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
+                         RefinedStructure* structure)
+{
+    checkRefineOptions(options);
+    return refinePoseAndStructure(views, pose, options, nullptr, nullptr, structure).finalRms;
+}
+
+double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
+                          const RefineOptions& options, RefinedStructure* structure)
+{
+    checkRefineOptions(options);
+    return refinePosesAndStructure(views, poseOfView, poses, options, structure).finalRms;
+}
+
+std::vector<CameraPose> allViewPoses(const ViewSet& views, const std::vector<int>& poseOfView,
+                                     const std::vector<CameraPose>& poses)
+{
+    std::vector<CameraPose> all(views.views.size());
+    for (size_t v = 0; v < all.size(); ++v)
+        all[v] = poseOfView[v] >= 0 ? poses[poseOfView[v]] : views.views[v].pose;
+    return all;
+}
+
+} // namespace tripose

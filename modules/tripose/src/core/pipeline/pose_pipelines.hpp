@@ -1,0 +1,61 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_PIPELINE_POSE_PIPELINES_HPP
+#define TRIPOSE_CORE_PIPELINE_POSE_PIPELINES_HPP
+
+#include <vector>
+
+#include "../estimator/pose_solver.hpp"
+#include "../estimator/scored_pose.hpp"
+#include "../geometry/view_set.hpp"
+#include "../refine/ml_refinement.hpp"
+#include "../robust/robust_estimator.hpp"
+#include "../scoring/pose_scorer.hpp"
+#include "../support/options.hpp"
+
+namespace tripose {
+
+/** What every entry point does once its arguments are a ViewSet and it has chosen the PoseSolver of
+its arrangement of views (three-view, stereo rig, several known views). The adapters (the OpenCV
+module, the Python package) read their arguments into a ViewSet (problem/), call one of these and
+write the result in their own types.
+*/
+
+/** The solver's candidates from all features, ranked by their reprojection error (best first,
+rankCandidates()); with @p refine, each refined over every view (and, where the cost may have
+several basins, from starts around the best one), the distinct minima ranked by their RMS.
+*/
+std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolver& solver, bool refine);
+
+/** The robust estimate: RANSAC over @p solver's samples scored by @p scorer, then the refinement
+that @p options asks for. @p options is checked first (Error naming "params.<field>").
+Returns false (and @p estimate's masks all zero) when no pose was found.
+*/
+bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
+                    const RansacOptions& options, RobustEstimate& estimate);
+
+//! estimateRobust() with the scorer built from @p views.
+bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
+                    RobustEstimate& estimate);
+
+/** Refines @p pose (in place) and the structure over every view of @p views; @p options is checked
+first. Returns the final RMS reprojection error (px).
+*/
+double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
+                         RefinedStructure* structure = nullptr);
+
+/** Refines several poses (@p poseOfView, @p poses as in refinePosesAndStructure()) and the
+structure; @p options is checked first. Returns the final RMS reprojection error (px).
+*/
+double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
+                          const RefineOptions& options, RefinedStructure* structure = nullptr);
+
+//! Every view's pose after refineSeveralPoses(): the refined ones from @p poses, the fixed ones as given.
+std::vector<CameraPose> allViewPoses(const ViewSet& views, const std::vector<int>& poseOfView,
+                                     const std::vector<CameraPose>& poses);
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_PIPELINE_POSE_PIPELINES_HPP

@@ -1,0 +1,116 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "../support/error.hpp"
+
+#include "multi_start_refinement.hpp"
+
+namespace tripose {
+
+namespace {
+
+// Re-triangulation settles in one or two rounds when it changes anything; the bound only guards
+// against cycling between two structures of equal cost.
+constexpr int kMaxRetriangulations = 5;
+// RMS changes below this (px) are rounding, not a different minimum.
+constexpr double kSameRms = 1e-9;
+
+int countUsed(const RefinedStructure& s)
+{
+    int used = 0;
+    for (unsigned char u : s.pointUsed)
+        used += u;
+    for (unsigned char u : s.lineUsed)
+        used += u;
+    return used;
+}
+
+} // namespace
+
+LocalMinimum refineRetriangulating(const ViewSet& set, const CameraPose& start, const RefineOptions& params,
+                                   const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
+{
+    LocalMinimum best;
+    CameraPose pose = start;
+    for (int round = 0; round < kMaxRetriangulations; ++round)
+    {
+        RefinedStructure structure;
+        const RefinementSummary summary =
+            refinePoseAndStructure(set, pose, params, pointIndices, lineIndices, &structure);
+        LocalMinimum current;
+        current.pose = pose;
+        current.rms = summary.finalRms;
+        current.used = countUsed(structure);
+        if (!current.finite())
+            break;
+        const bool settled = round > 0 && current.used == best.used && std::abs(current.rms - best.rms) <= kSameRms;
+        if (current.betterThan(best))
+            best = current;
+        if (settled)
+            break;
+    }
+    return best;
+}
+
+void centreDirectionStarts(const ViewSet& set, const CameraPose& pose, std::vector<CameraPose>& starts)
+{
+    Eigen::Vector3d pivot = Eigen::Vector3d::Zero(), other = Eigen::Vector3d::Zero();
+    int known = 0;
+    for (const View& view : set.views)
+    {
+        if (view.estimated)
+            continue;
+        if (known == 0)
+            pivot = view.pose.centre();
+        else if (known == 1)
+            other = view.pose.centre();
+        ++known;
+    }
+    double distance = (pose.centre() - pivot).norm();
+    // At the pivot itself the direction is meaningless; the known pair's baseline sets the scale.
+    if (!(distance > 0) || !std::isfinite(distance))
+        distance = (other - pivot).norm();
+    if (!(distance > 0) || !std::isfinite(distance))
+        return;
+    for (int a = -1; a <= 1; ++a)
+        for (int b = -1; b <= 1; ++b)
+            for (int c = -1; c <= 1; ++c)
+            {
+                if (a == 0 && b == 0 && c == 0)
+                    continue;
+                const Eigen::Vector3d centre = pivot + distance * Eigen::Vector3d(a, b, c).normalized();
+                CameraPose start;
+                start.R = pose.R;
+                start.t = -(pose.R * centre);
+                starts.push_back(start);
+            }
+}
+
+LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+                              const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
+                              std::vector<LocalMinimum>* minima)
+{
+    LocalMinimum best;
+    for (const CameraPose& start : starts)
+    {
+        if (!start.allFinite())
+            continue;
+        const LocalMinimum m = refineRetriangulating(set, start, params, pointIndices, lineIndices);
+        if (!m.finite())
+            continue;
+        if (minima)
+            minima->push_back(m);
+        if (m.betterThan(best))
+            best = m;
+    }
+    return best;
+}
+
+} // namespace tripose

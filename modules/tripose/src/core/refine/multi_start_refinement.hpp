@@ -1,0 +1,59 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_REFINE_MULTI_START_REFINEMENT_HPP
+#define OPENCV_TRIPOSE_REFINE_MULTI_START_REFINEMENT_HPP
+
+#include <vector>
+
+#include "ml_refinement.hpp"
+
+namespace tripose {
+
+//! A local minimum of the maximum-likelihood cost.
+struct LocalMinimum
+{
+    CameraPose pose;
+    double rms = std::numeric_limits<double>::infinity(); //!< RMS reprojection error (px) over the used features.
+    int used = 0;                                         //!< Features that entered the cost.
+
+    bool finite() const { return std::isfinite(rms) && pose.allFinite(); }
+    /** Lower cost first; a minimum that leaves features out of the cost (behind a view, or not
+    determined at the structure it started from) loses against one that uses more, whatever its RMS,
+    since its RMS is over fewer residuals. */
+    bool betterThan(const LocalMinimum& other) const
+    {
+        if (finite() != other.finite())
+            return finite();
+        return used != other.used ? used > other.used : rms < other.rms;
+    }
+};
+
+/** refinePoseAndStructure(), repeated from the refined pose with the structure triangulated afresh
+there until that changes nothing: the structure triangulated at a poor start can sit in a minimum
+of its own (a point pulled to the wrong depth, a feature left out of the cost) that the joint
+iteration does not leave, though the pose is already in the right basin.
+*/
+LocalMinimum refineRetriangulating(const ViewSet& set, const CameraPose& start, const RefineOptions& params,
+                                   const std::vector<int>* pointIndices = nullptr,
+                                   const std::vector<int>* lineIndices = nullptr);
+
+/** Starts that keep the rotation of @p pose and move the estimated camera's centre to each of the
+26 directions of a 3x3x3 grid around the first known view, at the distance @p pose puts it from
+that view: when the known pair's baseline is narrow or the structure is planar, the linear
+estimate's rotation is close but its translation direction may be far off, in another basin.
+Appends to @p starts.
+*/
+void centreDirectionStarts(const ViewSet& set, const CameraPose& pose, std::vector<CameraPose>& starts);
+
+/** The best of the minima that refineRetriangulating() reaches from each of @p starts (see
+LocalMinimum::betterThan()); non-finite when none was usable. */
+LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+                              const std::vector<int>* pointIndices = nullptr,
+                              const std::vector<int>* lineIndices = nullptr,
+                              std::vector<LocalMinimum>* minima = nullptr);
+
+} // namespace tripose
+
+#endif // OPENCV_TRIPOSE_REFINE_MULTI_START_REFINEMENT_HPP

@@ -1,0 +1,207 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_REFINE_SCHUR_SYSTEM_HPP
+#define OPENCV_TRIPOSE_REFINE_SCHUR_SYSTEM_HPP
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/StdVector>
+
+#include "../support/error.hpp"
+
+namespace tripose {
+
+typedef Eigen::Matrix<double, 6, 1> Vector6d;
+typedef Eigen::Matrix<double, 6, 6> Matrix6d;
+
+/** The normal-equation pieces of one feature whose structure has D parameters, in a system of
+P pose parameters (6 per pose: 6 for one camera, Eigen::Dynamic for several). */
+template <int D, int P = 6>
+struct StructureBlock
+{
+    EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+    Eigen::Matrix<double, D, D> V;    //!< Structure-structure block J_s^T w J_s.
+    Eigen::Matrix<double, P, D> W;    //!< Pose-structure block J_p^T w J_s.
+    Eigen::Matrix<double, D, 1> g;    //!< Structure gradient J_s^T w r.
+    Eigen::Matrix<double, D, D> Vinv; //!< Inverse of the damped V (set per damping value).
+    Eigen::Matrix<double, D, 1> diag; //!< Marquardt scaling of the damping.
+    Eigen::Matrix<double, D, 1> step; //!< Structure increment of the last solve.
+    bool active = false;              //!< Takes part in the system (else: no step).
+};
+
+/** Damped Gauss-Newton normal equations of the poses (6 parameters each: P = 6 for one pose, or
+Eigen::Dynamic for any number) and many independent structure blocks (3 per point, 4 per line),
+solved with every structure block eliminated (Schur complement to a system in the poses alone), so
+that a step costs time linear in the number of features.
+
+Fill it with clear() and add(); solve() for a damping value; read the pose step and each block's
+step. The damping is Marquardt's (lambda times the diagonal), so the step does not depend on the
+units of the parameters. An observation depends on one pose at most: the poses are coupled only
+through the structure they share.
+*/
+template <int P = 6>
+class SchurSystem
+{
+public:
+    typedef Eigen::Matrix<double, P, P> PoseMatrix;
+    typedef Eigen::Matrix<double, P, 1> PoseVector;
+
+    //! Sizes the system for @p points and @p lines structure blocks and @p poses poses (1 when P = 6).
+    void resize(size_t points, size_t lines, int poses = 1)
+    {
+        TRIPOSE_DEBUG_ASSERT(P == Eigen::Dynamic || 6 * poses == P);
+        const int n = 6 * poses;
+        points_.resize(points);
+        lines_.resize(lines);
+        for (StructureBlock<3, P>& b : points_)
+            b.W.resize(n, 3);
+        for (StructureBlock<4, P>& b : lines_)
+            b.W.resize(n, 4);
+        U_.resize(n, n);
+        gPose_.resize(n);
+        poseDiag_.resize(n);
+        poseStep_.resize(n);
+    }
+
+    //! Zeroes the pose blocks and marks every structure block inactive.
+    void clear()
+    {
+        U_.setZero();
+        gPose_.setZero();
+        for (StructureBlock<3, P>& b : points_)
+            b.active = false;
+        for (StructureBlock<4, P>& b : lines_)
+            b.active = false;
+    }
+
+    //! Starts the structure block of a feature (zeroed, active).
+    template <int D>
+    StructureBlock<D, P>& begin(StructureBlock<D, P>& block)
+    {
+        block.V.setZero();
+        block.W.setZero();
+        block.g.setZero();
+        block.active = true;
+        return block;
+    }
+    StructureBlock<3, P>& point(size_t k) { return points_[k]; }
+    StructureBlock<4, P>& line(size_t k) { return lines_[k]; }
+    const StructureBlock<3, P>& point(size_t k) const { return points_[k]; }
+    const StructureBlock<4, P>& line(size_t k) const { return lines_[k]; }
+
+    /** Adds one observation with residual @p r, IRLS weight @p weight, d(r)/d(structure) @p Js and,
+    when the observation depends on pose @p pose, d(r)/d(that pose) @p Jp.
+    */
+    template <int D>
+    void add(StructureBlock<D, P>& block, const Eigen::Matrix<double, 2, D>& Js, const Eigen::Matrix<double, 2, 6>* Jp,
+             const Eigen::Vector2d& r, double weight, int pose = 0)
+    {
+        const Eigen::Matrix<double, 2, D> wJs = weight * Js;
+        block.V.noalias() += Js.transpose() * wJs;
+        block.g.noalias() += wJs.transpose() * r;
+        if (Jp)
+        {
+            const int o = 6 * pose;
+            block.W.template middleRows<6>(o).noalias() += Jp->transpose() * wJs;
+            U_.template block<6, 6>(o, o).noalias() += Jp->transpose() * (weight * *Jp);
+            gPose_.template segment<6>(o).noalias() += Jp->transpose() * (weight * r);
+        }
+    }
+
+    /** Solves the system damped by @p lambda; @p predicted receives the decrease of the cost that
+    the linear model predicts (Madsen, Nielsen & Tingleff, eq. 3.10). False when the reduced system
+    is not positive definite or a value is not finite.
+    */
+    bool solve(double lambda, double& predicted)
+    {
+        poseDiag_ = dampingDiagonal<P>(U_);
+        PoseMatrix S = U_;
+        S.diagonal() += lambda * poseDiag_;
+        PoseVector b = -gPose_;
+        for (StructureBlock<3, P>& block : points_)
+            eliminate<3>(block, lambda, S, b);
+        for (StructureBlock<4, P>& block : lines_)
+            eliminate<4>(block, lambda, S, b);
+        Eigen::LDLT<PoseMatrix> ldlt(S);
+        if (ldlt.info() != Eigen::Success)
+            return false;
+        poseStep_ = ldlt.solve(b);
+        if (!poseStep_.allFinite())
+            return false;
+        predicted = poseStep_.dot(lambda * poseDiag_.cwiseProduct(poseStep_) - gPose_);
+        for (StructureBlock<3, P>& block : points_)
+            predicted += backSubstitute<3>(block, lambda, poseStep_);
+        for (StructureBlock<4, P>& block : lines_)
+            predicted += backSubstitute<4>(block, lambda, poseStep_);
+        return std::isfinite(predicted);
+    }
+
+    //! The step of all poses (6 per pose: omega, dt).
+    const PoseVector& poseStep() const { return poseStep_; }
+
+private:
+    template <typename T>
+    using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
+
+    //! Damping scale for each diagonal entry: the entry itself, kept away from zero so that
+    //! directions the data do not constrain are still damped.
+    template <int D>
+    static Eigen::Matrix<double, D, 1> dampingDiagonal(const Eigen::Matrix<double, D, D>& H)
+    {
+        const Eigen::Matrix<double, D, 1> d = H.diagonal();
+        const double floor = std::max(1e-12 * d.maxCoeff(), 1e-300);
+        return d.cwiseMax(floor);
+    }
+
+    template <int D>
+    static void eliminate(StructureBlock<D, P>& block, double lambda, PoseMatrix& S, PoseVector& b)
+    {
+        if (!block.active)
+            return;
+        block.diag = dampingDiagonal<D>(block.V);
+        Eigen::Matrix<double, D, D> damped = block.V;
+        damped.diagonal() += lambda * block.diag;
+        // A non-positive determinant means the block is singular even with damping (rounding):
+        // this structure then stays where it is for this step.
+        const double det = damped.determinant();
+        block.Vinv.setZero();
+        if (!(det > 0) || !std::isfinite(det))
+            return;
+        block.Vinv = damped.inverse();
+        if (!block.Vinv.allFinite())
+        {
+            block.Vinv.setZero();
+            return;
+        }
+        const Eigen::Matrix<double, P, D> Y = block.W * block.Vinv;
+        S.noalias() -= Y * block.W.transpose();
+        b.noalias() += Y * block.g;
+    }
+
+    //! The block's step given the pose step; returns its share of the predicted decrease.
+    template <int D>
+    static double backSubstitute(StructureBlock<D, P>& block, double lambda, const PoseVector& poseStep)
+    {
+        if (!block.active)
+        {
+            block.step.setZero();
+            return 0;
+        }
+        block.step.noalias() = -block.Vinv * (block.g + block.W.transpose() * poseStep);
+        return block.step.dot(lambda * block.diag.cwiseProduct(block.step) - block.g);
+    }
+
+    AlignedVector<StructureBlock<3, P>> points_;
+    AlignedVector<StructureBlock<4, P>> lines_;
+    PoseMatrix U_;
+    PoseVector gPose_, poseDiag_, poseStep_;
+};
+
+} // namespace tripose
+
+#endif // OPENCV_TRIPOSE_REFINE_SCHUR_SYSTEM_HPP

@@ -1,0 +1,58 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP
+#define OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP
+
+#include "../geometry/view_set.hpp"
+#include "pose_scorer.hpp"
+
+namespace tripose {
+
+/** How well the known views pin the structure down, from the structure PoseScorer triangulates
+from them. It decides how much the estimators search: where the known pair's rays are nearly
+parallel (a narrow baseline) or the structure is one plane, the cost over the estimated pose has
+several basins and a single refinement from the best hypothesis often stops in the wrong one.
+*/
+
+//! Median over the points with structure of the angle (deg) between their rays from the first two
+//! known views; 0 when there are none.
+double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer);
+
+//! Smallest over largest singular value of the centred structure (points and line end points),
+//! without the positions far off its plane (trimPlaneFit()): near 0 for coplanar structure, noisy or
+//! not; 1 when there are fewer than four structure points.
+double structureThickness(const ViewSet& set, const PoseScorer& scorer);
+
+//! Below this median angle the known pair's depth is poor (1-2 % of the depth as baseline).
+constexpr double kWeakTriangulationAngleDeg = 2.0;
+//! Below this thickness the structure counts as planar (a facade seen with noise).
+constexpr double kPlanarThickness = 0.05;
+/** With a moderate triangulation angle (the paper's small motion: about 8 degrees) noisy depths
+thicken planar structure: a median of 0.08 and a tenth of the scenes above 0.3 at 1 px, against 0.4
+to 0.6 for structure in a cube (a tenth below 0.18-0.35). Below this angle, structure up to this
+thickness counts as planar: the cube scenes it takes in pay the multi-start search, which leaves
+their errors as they are (doc/accuracy.md has the figures). */
+constexpr double kModerateTriangulationAngleDeg = 15.0;
+constexpr double kNoisyPlanarThickness = 0.35;
+
+/** True for the regimes with several basins: a weak triangulation angle, planar structure, or
+mostly lines (under a quarter of the features are points: a line's residuals leave the motion
+along it free, and a planar target seen through lines alone has a mirrored motion that explains
+most of them nearly as well, doc/stereo.md).
+*/
+inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+{
+    if (4 * set.numPoints < set.numFeatures())
+        return true;
+    const double angle = medianTriangulationAngleDeg(set, scorer);
+    if (angle < kWeakTriangulationAngleDeg)
+        return true;
+    const double thickness = structureThickness(set, scorer);
+    return thickness < kPlanarThickness || (angle < kModerateTriangulationAngleDeg && thickness < kNoisyPlanarThickness);
+}
+
+} // namespace tripose
+
+#endif // OPENCV_TRIPOSE_SCORING_KNOWN_STRUCTURE_HPP

@@ -1,0 +1,119 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_SCORING_POSE_SCORER_HPP
+#define OPENCV_TRIPOSE_SCORING_POSE_SCORER_HPP
+
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "../geometry/view_set.hpp"
+#include "../estimator/feature_subset.hpp"
+
+namespace tripose {
+
+//! How well a pose explains the observations of the estimated views (see PoseScorer::score()).
+struct PoseScore
+{
+    //! MSAC cost: over the observations in the estimated views, the sum of min(r^2, threshold^2);
+    //! an observation whose feature has no structure, or lies behind the camera, costs threshold^2.
+    //! +inf when the score was abandoned at its bound.
+    double cost = 0;
+    int inliers = 0;        //!< Observations with r^2 < threshold^2.
+    double sumSquares = 0;  //!< Sum of the squared pixel residuals of the observations that could be measured.
+    int residuals = 0;      //!< Their number: one per point distance, one per line end-point distance.
+    int behind = 0;         //!< Structure points (point features, line ends) behind an estimated view.
+    int considered = 0;     //!< Structure points that could be checked.
+
+    //! RMS reprojection error (px) over the measured residuals; +inf when there are none.
+    double rms() const;
+};
+
+/** The one scorer of candidate poses, for the linear solver's selection, the robust estimator's
+hypotheses and its final inlier test.
+
+The structure is triangulated once, from the views whose pose is known (geometry/triangulation:
+points by depth-weighted least squares, lines as the lift of the first known view's end points
+onto the other known views' planes). A pose is then judged by the residuals (geometry/residuals)
+of the estimated views that see each feature. The squared residual r^2 of an observation is, for a
+point, its squared pixel distance, and for a line the mean of the squared distances of its two
+observed end points to the projected line.
+
+refitResiduals() judges a pose instead by re-triangulating every feature from all views, the
+estimated ones at that pose: it does not carry the triangulation error of the known views into the
+estimated ones, at the price of a triangulation per feature and pose.
+*/
+class PoseScorer
+{
+public:
+    explicit PoseScorer(const ViewSet& set);
+
+    /** Score of @p pose of the estimated camera with inlier threshold @p threshold (px; +inf: plain
+    least squares, nothing truncated). Scoring stops, with cost +inf, as soon as the cost exceeds
+    @p bound: most hypotheses of a robust estimator are bad. @p inliers, when given, receives the
+    features with an inlier observation (complete only when the score was not abandoned).
+    */
+    PoseScore score(const CameraPose& pose, double threshold = std::numeric_limits<double>::infinity(),
+                    double bound = std::numeric_limits<double>::infinity(), FeatureSubset* inliers = nullptr) const;
+
+    /** Per feature: the RMS over the estimated views that see it of sqrt(r^2), in pixels; +inf where
+    the feature has no structure or lies behind an estimated view.
+    */
+    void residuals(const CameraPose& pose, std::vector<double>& pointResiduals, std::vector<double>& lineResiduals) const;
+
+    /** Per feature: the RMS reprojection error (px) over every view that sees it and every coordinate
+    (a point: 2 per view; a line: its 2 end-point distances per view), the feature triangulated from
+    all of them with the estimated views at @p pose; +inf where it cannot be triangulated or lies
+    behind a view.
+    */
+    void refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,
+                        std::vector<double>& lineResiduals) const;
+
+    const ViewSet& views() const { return set_; }
+
+    /** The structure triangulated from the known views, which every score uses: point @p i and the
+    two end points of line @p i (on the first known view's rays), valid when the known views pin the
+    feature down in front of them. Minimal solvers reuse it rather than triangulate again.
+    */
+    const Eigen::Vector3d& knownPoint(int i) const { return points_[i]; }
+    bool hasKnownPoint(int i) const { return pointValid_[i] != 0; }
+    const Eigen::Vector3d& knownLineEnd(int i, int end) const { return lineEnds_[2 * i + end]; }
+    bool hasKnownLine(int i) const { return lineValid_[i] != 0; }
+
+private:
+    struct PointTerm
+    {
+        int feature;
+        Eigen::Vector3d X;
+        Eigen::Vector2d observed;
+    };
+    struct LineTerm
+    {
+        int feature;
+        Eigen::Vector3d A, B;
+        Eigen::Vector2d end0, end1;
+    };
+    //! What one estimated view measures: terms of the features with structure, the count of those without.
+    struct EstimatedView
+    {
+        int view;
+        std::vector<PointTerm> points;
+        std::vector<LineTerm> lines;
+        int unmeasured = 0;
+    };
+
+    void triangulateKnown();
+
+    const ViewSet& set_;
+    double minDepth_;
+    std::vector<Eigen::Vector3d> points_, lineEnds_;
+    std::vector<unsigned char> pointValid_, lineValid_;
+    std::vector<EstimatedView> estimated_;
+};
+
+} // namespace tripose
+
+#endif // OPENCV_TRIPOSE_SCORING_POSE_SCORER_HPP

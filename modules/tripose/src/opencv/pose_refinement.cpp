@@ -1,0 +1,35 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "../precomp.hpp"
+
+#include "../core/pipeline/pose_pipelines.hpp"
+#include "argument_reading.hpp"
+#include "options_conversion.hpp"
+#include "pose_refinement.hpp"
+#include "result_writing.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
+                       OutputArray points3d, OutputArray lines3d)
+{
+    RotationForm form;
+    core::CameraPose pose;
+    pose.R = readInitialRotation(R, form);
+    pose.t = readTranslation(t, "t", false);
+    const core::RefineOptions options = toCoreOptions(params);
+    core::RefinedStructure structure;
+    const double rms = core::refineInitialPose(views, pose, options, &structure);
+    writeRotation(pose.R, form, R);
+    Mat(Matx31d(pose.t.x(), pose.t.y(), pose.t.z())).copyTo(t);
+    writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+    return rms;
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv

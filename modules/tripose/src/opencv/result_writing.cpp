@@ -1,0 +1,158 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "../precomp.hpp"
+
+#include "opencv_compat.hpp"
+#include "argument_reading.hpp"
+#include "result_writing.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+namespace {
+
+Mat toMat(const Eigen::Matrix3d& R)
+{
+    Mat m(3, 3, CV_64F);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            m.at<double>(r, c) = R(r, c);
+    return m;
+}
+
+Mat toMat(const Eigen::Vector3d& t)
+{
+    return (Mat_<double>(3, 1) << t.x(), t.y(), t.z());
+}
+
+void writeMask(const std::vector<unsigned char>& mask, OutputArray out)
+{
+    if (out.needed())
+        Mat((int)mask.size(), 1, CV_8U, (void*)mask.data()).copyTo(out);
+}
+
+} // namespace
+
+void writePose(const core::CameraPose* pose, OutputArray R, OutputArray t)
+{
+    if (!pose)
+    {
+        R.release();
+        t.release();
+        return;
+    }
+    R.create(3, 3, CV_64F);
+    Mat Rm = R.getMat();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            Rm.at<double>(r, c) = pose->R(r, c);
+    t.create(3, 1, CV_64F);
+    Mat tm = t.getMat();
+    for (int r = 0; r < 3; ++r)
+        tm.at<double>(r) = pose->t(r);
+}
+
+void writePoseVectors(const std::vector<core::CameraPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                      const char* RsName, const char* tsName)
+{
+    const int n = (int)poses.size();
+    if (Rs.needed())
+    {
+        if (Rs.kind() != _InputArray::STD_VECTOR_MAT)
+            CV_Error_(Error::StsBadArg, ("%s must be a std::vector<Mat>", RsName));
+        Rs.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            Rs.getMatRef(i) = toMat(poses[i].R);
+    }
+    if (ts.needed())
+    {
+        if (ts.kind() != _InputArray::STD_VECTOR_MAT)
+            CV_Error_(Error::StsBadArg, ("%s must be a std::vector<Mat>", tsName));
+        ts.create(n, 1, CV_64F, -1, true);
+        for (int i = 0; i < n; ++i)
+            ts.getMatRef(i) = toMat(poses[i].t);
+    }
+}
+
+int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray R, OutputArray t,
+                    OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray errors, const char* RsName,
+                    const char* tsName)
+{
+    const int n = (int)candidates.size();
+    writePose(n > 0 ? &candidates[0].pose : nullptr, R, t);
+    std::vector<core::CameraPose> poses(n);
+    for (int i = 0; i < n; ++i)
+        poses[i] = candidates[i].pose;
+    writePoseVectors(poses, Rs, ts, RsName, tsName);
+    if (errors.needed())
+    {
+        Mat values(n, 1, CV_64F);
+        for (int i = 0; i < n; ++i)
+            values.at<double>(i) = candidates[i].rms;
+        values.copyTo(errors);
+    }
+    return n;
+}
+
+int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,
+                        OutputArray pointInliers, OutputArray lineInliers)
+{
+    writePose(found ? &estimate.pose : nullptr, R, t);
+    writeMask(estimate.pointInliers, pointInliers);
+    writeMask(estimate.lineInliers, lineInliers);
+    return found ? estimate.numInliers : 0;
+}
+
+void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
+                    OutputArray lines3d)
+{
+    if (points3d.needed())
+    {
+        points3d.create(numPoints, 3, CV_64F);
+        Mat out = points3d.getMat();
+        for (int i = 0; i < numPoints; ++i)
+            for (int c = 0; c < 3; ++c)
+                out.at<double>(i, c) = structure.points[i](c);
+    }
+    if (lines3d.needed())
+    {
+        lines3d.create(numLines, 6, CV_64F);
+        Mat out = lines3d.getMat();
+        for (int i = 0; i < numLines; ++i)
+            for (int c = 0; c < 3; ++c)
+            {
+                out.at<double>(i, c) = structure.lineEnds[2 * i](c);
+                out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
+            }
+    }
+}
+
+Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
+{
+    const Mat m = arr.getMat();
+    form.rodrigues = m.total() * m.channels() == 3;
+    form.rows = m.rows;
+    form.cols = m.cols;
+    // Validated like R12; returned as an exact rotation, which the multiplicative update needs.
+    return readRotation(arr, "R");
+}
+
+void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out)
+{
+    const Mat R = toMat(rotation);
+    if (!form.rodrigues)
+    {
+        R.copyTo(out);
+        return;
+    }
+    Mat rvec;
+    Rodrigues(R, rvec);
+    rvec.reshape(1, form.rows).copyTo(out);
+}
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv

@@ -1,0 +1,62 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_OPENCV_RESULT_WRITING_HPP
+#define OPENCV_TRIPOSE_OPENCV_RESULT_WRITING_HPP
+
+#include <vector>
+
+#include "opencv2/core.hpp"
+
+#include "../core/estimator/scored_pose.hpp"
+#include "../core/refine/ml_refinement.hpp"
+#include "../core/robust/robust_estimator.hpp"
+#include "core_calls.hpp"
+
+namespace cv {
+namespace tripose {
+namespace detail {
+
+//! R (3x3) and t (3x1) as CV_64F; both released when @p pose is null.
+void writePose(const core::CameraPose* pose, OutputArray R, OutputArray t);
+
+/** @p poses into vectors of 3x3 rotations and 3x1 translations (CV_64F), where wanted;
+@p RsName / @p tsName are the caller's names of the outputs, for errors.
+*/
+void writePoseVectors(const std::vector<core::CameraPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                      const char* RsName, const char* tsName);
+
+/** Ranked candidates as the candidate functions return them: the best in R, t (released when
+there is none), all in the vectors, their RMS errors in @p errors. Returns their number.
+*/
+int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray R, OutputArray t,
+                    OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray errors, const char* RsName,
+                    const char* tsName);
+
+//! A robust estimate (or none: @p found false) and its inlier masks (Nx1 CV_8U). Returns the inlier count.
+int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,
+                        OutputArray pointInliers, OutputArray lineInliers);
+
+//! The refined structure (Nx3 points, Mx6 line end points, CV_64F), where wanted.
+void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
+                    OutputArray lines3d);
+
+//! How the caller gave a rotation (3x3 matrix or Rodrigues vector), so that it is written back so.
+struct RotationForm
+{
+    bool rodrigues = false;
+    int rows = 3, cols = 3;
+};
+
+//! The initial rotation of a refinement (named "R" in errors) and the form it came in.
+Eigen::Matrix3d readInitialRotation(InputArray R, RotationForm& form);
+
+//! @p rotation written to @p out in @p form.
+void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out);
+
+} // namespace detail
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_OPENCV_RESULT_WRITING_HPP
