@@ -1,0 +1,228 @@
+"""tripose: the pose of a calibrated camera from point and line correspondences seen by cameras
+whose poses are known.
+
+Conventions (the same as the C++ API, doc/conventions.md):
+
+* A pose (R, t) maps world coordinates into the camera: x_cam = R @ X + t. R is a 3x3 float64
+  array, t has shape (3,).
+* Three views: view 1 is at [I|0], view 2 at [R12|t12] (its pose relative to view 1; t12 != 0 fixes
+  the metric scale), and the estimated pose is that of view 3 in the frame of view 1.
+* Stereo rig: views 1 and 2 are the left and right cameras at time A (left at [I|0], right at
+  [R12|t12]: the rig), views 3 and 4 the same cameras at time B; the estimate is the left camera's
+  pose at time B. A row of NaN in points3/points4/lines3/lines4 marks a feature that view does not see.
+* Several known views: points[k], lines[k] hold view k's observations (the known views first, then
+  the new view), NaN rows where a view does not see a feature; Rs[k], ts[k] are the known views'
+  world poses; the estimate is the new view's world pose.
+* Observations are pixels: points of shape (N, 2), lines of shape (M, 4) (segments x0 y0 x1 y1) or
+  (M, 3) (homogeneous lines a b c, not with dist). float32 or float64, any memory layout; None or an
+  empty array where a view has none of that kind.
+* K: one 3x3 camera matrix shared by every view, or a sequence of one per view. dist: None, or
+  OpenCV's distortion coefficients (4, 5, 8, 12 or 14 values), shared or one per view; the
+  observations are undistorted as cv2.undistortPoints does.
+* Bad input raises ValueError (or TypeError for a wrong type) whose message names the argument.
+* Estimation releases the GIL: threads run estimates in parallel.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _tripose_ext as _ext
+
+__all__ = [
+    "estimate_pose_line_point",
+    "estimate_pose_line_point_ransac",
+    "refine_pose_line_point",
+    "estimate_pose_line_point_stereo",
+    "estimate_pose_line_point_stereo_ransac",
+    "refine_pose_line_point_stereo",
+    "estimate_pose_multiview",
+    "estimate_pose_multiview_ransac",
+    "refine_pose_multiview",
+    "refine_poses_multiview",
+]
+
+ArrayLike = Union[np.ndarray, Sequence[Any], None]
+Pose = Tuple[np.ndarray, np.ndarray]
+
+
+def _array(value: Any) -> Any:
+    """numpy arrays pass through untouched (the extension reads any layout); lists are converted."""
+    if value is None or type(value) is np.ndarray:
+        return value
+    if isinstance(value, (list, tuple)) and (len(value) == 0 or not isinstance(value[0], np.ndarray)):
+        return np.asarray(value, dtype=np.float64)
+    return value
+
+
+def _per_view(value: Any) -> Any:
+    """K or dist: one array, or a list/tuple of one per view."""
+    if isinstance(value, (list, tuple)) and len(value) > 0 and isinstance(value[0], np.ndarray):
+        return list(value)
+    return _array(value)
+
+
+def _view_list(value: Any) -> Any:
+    if value is None:
+        return None
+    if not isinstance(value, (list, tuple)):
+        raise TypeError("a list of arrays, one per view, is required")
+    return [_array(v) for v in value]
+
+
+def estimate_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
+                             lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
+                             K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
+                             dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+    """Pose of view 3 from points and lines seen in views 1, 2 (known) and 3, without outliers.
+
+    The unified linear method on all features (at least four: points + lines); with refine=True
+    each candidate is then refined by maximum likelihood over the three views.
+
+    Returns the candidate poses as a list of (R, t), best first (lowest reprojection error in
+    view 3); empty when the geometry determines no pose.
+    """
+    return _ext.estimate_pose_line_point(_array(points1), _array(points2), _array(points3), _array(lines1),
+                                         _array(lines2), _array(lines3), _per_view(K), _array(R12), _array(t12),
+                                         _per_view(dist), bool(refine))
+
+
+def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
+                                    lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
+                                    K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
+                                    dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
+                                    max_iterations: int = 10000, refine: bool = True,
+                                    seed: int = 0) -> Dict[str, Any]:
+    """Robust pose of view 3 from point and line triplets with wrong matches (RANSAC).
+
+    threshold: inlier threshold in pixels (a feature's RMS reprojection error over the three views,
+    re-triangulated with the pose); confidence: probability of drawing an all-inlier sample;
+    max_iterations: most samples drawn; refine: finish with the maximum-likelihood refinement over
+    the inliers; seed: the same seed gives the same result.
+
+    Returns a dict: R (3x3) and t (3,) (None when no pose was found), num_inliers, point_inliers and
+    line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels).
+    """
+    return _ext.estimate_pose_line_point_ransac(_array(points1), _array(points2), _array(points3), _array(lines1),
+                                                _array(lines2), _array(lines3), _per_view(K), _array(R12),
+                                                _array(t12), _per_view(dist), float(threshold), float(confidence),
+                                                int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+
+
+def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
+                           lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
+                           K: ArrayLike, R12: ArrayLike, t12: ArrayLike, R: ArrayLike, t: ArrayLike, *,
+                           dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
+                           loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+    """Maximum-likelihood refinement of the pose (R, t) of view 3 and of the structure.
+
+    Minimises the reprojection error in pixels in all three views (Levenberg-Marquardt, structure
+    eliminated). R: 3x3 or a rotation vector. loss: 'squared', 'huber' or 'cauchy' with scale
+    loss_scale pixels; tolerance: stop when a step lowers the cost by less than this fraction.
+
+    Returns a dict: R (3x3), t (3,), rms (final RMS reprojection error, px), points3d (N, 3),
+    lines3d (M, 6: two 3D end points per line).
+    """
+    return _ext.refine_pose_line_point(_array(points1), _array(points2), _array(points3), _array(lines1),
+                                       _array(lines2), _array(lines3), _per_view(K), _array(R12), _array(t12),
+                                       _array(R), _array(t), _per_view(dist), int(max_iterations), str(loss),
+                                       float(loss_scale), float(tolerance))
+
+
+def estimate_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
+                                    lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike, lines4: ArrayLike,
+                                    K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
+                                    dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+    """Motion of a calibrated stereo rig (the left camera's pose at time B), without outliers.
+
+    Views 1, 2: left and right at time A; views 3, 4: left and right at time B (NaN rows where one
+    of them does not see a feature; every feature must be seen in view 3 or 4). (R12, t12): the rig.
+    Returns the candidates as a list of (R, t), best first.
+    """
+    return _ext.estimate_pose_line_point_stereo(_array(points1), _array(points2), _array(points3), _array(points4),
+                                                _array(lines1), _array(lines2), _array(lines3), _array(lines4),
+                                                _per_view(K), _array(R12), _array(t12), _per_view(dist),
+                                                bool(refine))
+
+
+def estimate_pose_line_point_stereo_ransac(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
+                                           points4: ArrayLike, lines1: ArrayLike, lines2: ArrayLike,
+                                           lines3: ArrayLike, lines4: ArrayLike, K: ArrayLike, R12: ArrayLike,
+                                           t12: ArrayLike, *, dist: ArrayLike = None, threshold: float = 2.0,
+                                           confidence: float = 0.999, max_iterations: int = 10000,
+                                           refine: bool = True, seed: int = 0) -> Dict[str, Any]:
+    """Robust motion of a stereo rig (see estimate_pose_line_point_stereo and
+    estimate_pose_line_point_ransac for the arguments). Returns the dict of
+    estimate_pose_line_point_ransac."""
+    return _ext.estimate_pose_line_point_stereo_ransac(
+        _array(points1), _array(points2), _array(points3), _array(points4), _array(lines1), _array(lines2),
+        _array(lines3), _array(lines4), _per_view(K), _array(R12), _array(t12), _per_view(dist), float(threshold),
+        float(confidence), int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+
+
+def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
+                                  lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike, lines4: ArrayLike,
+                                  K: ArrayLike, R12: ArrayLike, t12: ArrayLike, R: ArrayLike, t: ArrayLike, *,
+                                  dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
+                                  loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+    """Maximum-likelihood refinement of a stereo rig's motion over its four views (arguments and
+    result as refine_pose_line_point)."""
+    return _ext.refine_pose_line_point_stereo(
+        _array(points1), _array(points2), _array(points3), _array(points4), _array(lines1), _array(lines2),
+        _array(lines3), _array(lines4), _per_view(K), _array(R12), _array(t12), _array(R), _array(t),
+        _per_view(dist), int(max_iterations), str(loss), float(loss_scale), float(tolerance))
+
+
+def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                            K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
+                            dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+    """World pose of a new view from features seen by V >= 2 views of known world poses Rs, ts.
+
+    points, lines: one array per view (the known views, then the new view), NaN rows where a view
+    does not see a feature; every feature must be seen by the new view and two known views.
+    Returns the candidates as a list of (R, t), best first.
+    """
+    return _ext.estimate_pose_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
+                                        _view_list(ts), _per_view(dist), bool(refine))
+
+
+def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                                   K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
+                                   dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
+                                   max_iterations: int = 10000, refine: bool = True,
+                                   seed: int = 0) -> Dict[str, Any]:
+    """Robust world pose of a new view against several known views (arguments as
+    estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
+    return _ext.estimate_pose_multiview_ransac(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
+                                               _view_list(ts), _per_view(dist), float(threshold), float(confidence),
+                                               int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+
+
+def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                          K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], R: ArrayLike,
+                          t: ArrayLike, *, dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
+                          loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+    """Maximum-likelihood refinement of a new view's world pose (R, t) and the structure over every
+    view, the known views fixed (result as refine_pose_line_point)."""
+    return _ext.refine_pose_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
+                                      _view_list(ts), _array(R), _array(t), _per_view(dist), int(max_iterations),
+                                      str(loss), float(loss_scale), float(tolerance))
+
+
+def refine_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                           K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike],
+                           fixed_views: Sequence[bool], *, dist: ArrayLike = None, max_iterations: int = 30,
+                           loss: str = "squared", loss_scale: float = 1.0,
+                           tolerance: float = 1e-10) -> Dict[str, Any]:
+    """Local adjustment: the world poses of the views not in fixed_views and the structure refined
+    together (at least two fixed views at distinct centres fix the frame and the scale).
+
+    Rs, ts: every view's world pose (the initial values of the free ones). Returns a dict: Rs, ts
+    (every view's pose, the fixed ones as given), rms, points3d, lines3d.
+    """
+    flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
+    return _ext.refine_poses_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
+                                       _view_list(ts), flags, _per_view(dist), int(max_iterations), str(loss),
+                                       float(loss_scale), float(tolerance))
