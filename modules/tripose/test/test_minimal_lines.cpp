@@ -144,14 +144,15 @@ void expectValidRotations(const std::vector<CameraPose>& poses)
 struct SuiteResult
 {
     int trials = 0, found = 0, noSolution = 0, notAmongSolutions = 0, maxSolutions = 0;
-    double worstMissRotationDeg = 0;
+    double worstMissRotationDeg = 0, worstMissRelativeTranslation = 0;
     std::map<int, int> solutionCounts;
 
     void print(const char* name) const
     {
         std::cout << name << ": true pose found in " << found << " of " << trials << "; failures: " << noSolution
                   << " without any solution, " << notAmongSolutions << " with solutions none within tolerance"
-                  << " (the worst of these " << worstMissRotationDeg << " deg off); solutions per instance:";
+                  << " (the worst of these " << worstMissRotationDeg << " deg and " << worstMissRelativeTranslation
+                  << " relative translation off); solutions per instance:";
         for (const auto& c : solutionCounts)
             std::cout << " " << c.first << "x" << c.second;
         std::cout << std::endl;
@@ -201,6 +202,7 @@ SuiteResult runExactSuite(
         {
             result.notAmongSolutions++;
             result.worstMissRotationDeg = std::max(result.worstMissRotationDeg, best.rotationDeg);
+            result.worstMissRelativeTranslation = std::max(result.worstMissRelativeTranslation, best.relativeTranslation);
         }
     }
     return result;
@@ -284,6 +286,252 @@ TEST(Tripose_MinimalLines, p3l_true_pose_among_solutions_noise_free)
     const SuiteResult r = runExactSuite(rng, 1000, 8, makeP3L, solveP3LObservations);
     r.print("P3L");
     expectHighSuccess(r);
+}
+
+//! A camera-frame segment through @p Zc along @p dc, both end points at positive depth.
+void segmentThrough(RNG& rng, const Eigen::Vector3d& Zc, const Eigen::Vector3d& dc, Eigen::Vector3d& Ac,
+                    Eigen::Vector3d& Bc)
+{
+    // Depths are at least 2 and |dc| is 1: steps below 1 keep both ends in front.
+    const Eigen::Vector3d d = dc.normalized();
+    Ac = Zc + rng.uniform(0.2, 0.9) * d;
+    Bc = Zc - rng.uniform(0.2, 0.9) * d;
+}
+
+Eigen::Vector3d randomDirection(RNG& rng)
+{
+    return Eigen::Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0)).normalized();
+}
+
+//! A line of @p pose's view through the camera-frame point @p Zc along @p dc.
+LineObservation lineThrough(RNG& rng, const CameraPose& pose, const Eigen::Vector3d& Zc, const Eigen::Vector3d& dc)
+{
+    Eigen::Vector3d Ac, Bc;
+    segmentThrough(rng, Zc, dc, Ac, Bc);
+    return observeLine(pose, Ac, Bc);
+}
+
+//! Runs @p solve and checks that it returns no pose and leaves @p poses as it was.
+template <typename Solve>
+void expectNoSolution(Solve solve, const char* what)
+{
+    std::vector<CameraPose> poses;
+    EXPECT_EQ(0, solve(poses)) << what;
+    EXPECT_TRUE(poses.empty()) << what;
+}
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+TEST(Tripose_MinimalLines, p2p1l_degenerate_configurations_give_no_solution)
+{
+    RNG rng(2102);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const CameraPose truth = randomPose(rng);
+        const Eigen::Vector3d X1c = randomPointInView(rng), X2c = randomPointInView(rng);
+        const PointObservation p1 = observePoint(truth, X1c), p2 = observePoint(truth, X2c);
+        const Eigen::Vector3d bearings[2] = { p1.bearing, p2.bearing };
+        const Eigen::Vector3d worlds[2] = { p1.world, p2.world };
+        const LineObservation line = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+
+        // The line through both points: its incidences repeat the points', the rotation about it is free.
+        const LineObservation throughBoth = observeLine(truth, X1c, X2c);
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(bearings, worlds, throughBoth.imageLine, throughBoth.world, p);
+        }, "line through both points");
+        // The line through one of the points.
+        const LineObservation throughOne = lineThrough(rng, truth, X1c, randomDirection(rng));
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(bearings, worlds, throughOne.imageLine, throughOne.world, p);
+        }, "line through one point");
+        // The line in the plane of the camera centre and both points: its image line passes through both
+        // image points.
+        const Eigen::Vector3d inPlane = rng.uniform(0.2, 0.8) * X1c + rng.uniform(0.2, 0.8) * X2c;
+        const LineObservation coplanar = lineThrough(rng, truth, inPlane, X1c - 0.3 * X2c);
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(bearings, worlds, coplanar.imageLine, coplanar.world, p);
+        }, "camera centre in the plane of the line and the points");
+        // A line through the camera centre has no image line: its image is a point (l = 0).
+        WorldLine throughCentre;
+        throughCentre.point = truth.centre();
+        throughCentre.direction = truth.R.transpose() * X1c;
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(bearings, worlds, Eigen::Vector3d::Zero(), throughCentre, p);
+        }, "line through the camera centre");
+        // Coincident points (and hence one ray twice).
+        const Eigen::Vector3d samePoint[2] = { p1.world, p1.world }, sameRay[2] = { p1.bearing, p1.bearing };
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(sameRay, samePoint, line.imageLine, line.world, p);
+        }, "coincident points");
+        // Non-finite input.
+        const Eigen::Vector3d nanPoints[2] = { p1.world, Eigen::Vector3d::Constant(kNaN) };
+        expectNoSolution([&](std::vector<CameraPose>& p) {
+            return solveP2P1L(bearings, nanPoints, line.imageLine, line.world, p);
+        }, "NaN point");
+    }
+}
+
+TEST(Tripose_MinimalLines, p1p2l_degenerate_configurations_give_no_solution)
+{
+    RNG rng(1202);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const CameraPose truth = randomPose(rng);
+        const Eigen::Vector3d Xc = randomPointInView(rng);
+        const PointObservation point = observePoint(truth, Xc);
+        const LineObservation line = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+        auto solveWith = [&](const LineObservation& a, const LineObservation& b) {
+            return [&, a, b](std::vector<CameraPose>& p) {
+                const Eigen::Vector3d imageLines[2] = { a.imageLine, b.imageLine };
+                const WorldLine worlds[2] = { a.world, b.world };
+                return solveP1P2L(point.bearing, point.world, imageLines, worlds, p);
+            };
+        };
+
+        // Parallel lines, the point on one of them.
+        const Eigen::Vector3d dc = randomDirection(rng);
+        const LineObservation onPoint = lineThrough(rng, truth, Xc, dc);
+        const LineObservation parallel = lineThrough(rng, truth, randomPointInView(rng), dc);
+        expectNoSolution(solveWith(onPoint, parallel), "parallel lines, the point on one");
+        // The point on one of two general lines.
+        expectNoSolution(solveWith(line, onPoint), "the point on a line");
+        // Both lines through the point.
+        expectNoSolution(solveWith(onPoint, lineThrough(rng, truth, Xc, randomDirection(rng))), "lines meet at the point");
+        // Coplanar lines with the camera centre in their plane: one image line for both.
+        const Eigen::Vector3d Ac = randomPointInView(rng), Bc = randomPointInView(rng);
+        const LineObservation inPlane1 = lineThrough(rng, truth, Ac, Bc - Ac);
+        const LineObservation inPlane2 = lineThrough(rng, truth, 0.5 * (Ac + Bc), 0.7 * Ac + 0.2 * Bc);
+        expectNoSolution(solveWith(inPlane1, inPlane2), "one image line for both lines");
+        // A line through the camera centre (image line l = 0).
+        LineObservation throughCentre = line;
+        throughCentre.imageLine.setZero();
+        throughCentre.world.point = truth.centre();
+        expectNoSolution(solveWith(throughCentre, parallel), "line through the camera centre");
+        // Non-finite input.
+        LineObservation nanLine = line;
+        nanLine.world.direction(1) = kNaN;
+        expectNoSolution(solveWith(nanLine, parallel), "NaN direction");
+    }
+}
+
+TEST(Tripose_MinimalLines, p3l_degenerate_configurations_give_no_solution)
+{
+    RNG rng(302);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const CameraPose truth = randomPose(rng);
+        auto solveWith = [](const LineObservation (&o)[3]) {
+            return [&o](std::vector<CameraPose>& p) {
+                const Eigen::Vector3d imageLines[3] = { o[0].imageLine, o[1].imageLine, o[2].imageLine };
+                const WorldLine worlds[3] = { o[0].world, o[1].world, o[2].world };
+                return solveP3L(imageLines, worlds, p);
+            };
+        };
+        // Three parallel lines: rotation about their direction and translation along it are free.
+        const Eigen::Vector3d dc = randomDirection(rng);
+        const LineObservation parallel[3] = { lineThrough(rng, truth, randomPointInView(rng), dc),
+                                              lineThrough(rng, truth, randomPointInView(rng), dc),
+                                              lineThrough(rng, truth, randomPointInView(rng), dc) };
+        expectNoSolution(solveWith(parallel), "three parallel lines");
+        // Three lines through one point: the camera may slide along the ray to it.
+        const Eigen::Vector3d Zc = randomPointInView(rng);
+        const LineObservation concurrent[3] = { lineThrough(rng, truth, Zc, randomDirection(rng)),
+                                                lineThrough(rng, truth, Zc, randomDirection(rng)),
+                                                lineThrough(rng, truth, Zc, randomDirection(rng)) };
+        expectNoSolution(solveWith(concurrent), "three concurrent lines");
+        // A line through the camera centre (image line l = 0).
+        LineObservation general[3] = { observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
+                                       observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
+                                       observeLine(truth, randomPointInView(rng), randomPointInView(rng)) };
+        general[1].imageLine.setZero();
+        general[1].world.point = truth.centre();
+        expectNoSolution(solveWith(general), "line through the camera centre");
+        general[1].imageLine = Eigen::Vector3d(kNaN, 0, 1);
+        expectNoSolution(solveWith(general), "NaN image line");
+    }
+}
+
+/** The image of a line through the camera centre computed from its end points is rounding, not a
+line: the solvers cannot tell it from a real one. They must still return finite poses only.
+*/
+TEST(Tripose_MinimalLines, rounding_image_of_a_line_through_the_centre_gives_finite_poses)
+{
+    RNG rng(2103);
+    int nonZero = 0;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const CameraPose truth = randomPose(rng);
+        const Eigen::Vector3d Zc = randomPointInView(rng);
+        WorldLine throughCentre;
+        throughCentre.point = toWorld(truth, Zc);
+        throughCentre.direction = truth.R.transpose() * Zc;
+        const Eigen::Vector3d Ac = truth.toCamera(truth.centre() + 0.3 * throughCentre.direction),
+                              Bc = truth.toCamera(truth.centre() + 0.7 * throughCentre.direction);
+        const Eigen::Vector3d rounding = (Ac / Ac.z()).cross(Bc / Bc.z());
+        nonZero += rounding.norm() > 0;
+        const PointObservation p1 = observePoint(truth, randomPointInView(rng)),
+                               p2 = observePoint(truth, randomPointInView(rng));
+        const LineObservation l2 = observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
+                              l3 = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+        std::vector<CameraPose> poses;
+        const Eigen::Vector3d bearings[2] = { p1.bearing, p2.bearing }, worlds[2] = { p1.world, p2.world };
+        solveP2P1L(bearings, worlds, rounding, throughCentre, poses);
+        const Eigen::Vector3d images2[2] = { rounding, l2.imageLine };
+        const WorldLine lines2[2] = { throughCentre, l2.world };
+        solveP1P2L(p1.bearing, p1.world, images2, lines2, poses);
+        const Eigen::Vector3d images3[3] = { rounding, l2.imageLine, l3.imageLine };
+        const WorldLine lines3[3] = { throughCentre, l2.world, l3.world };
+        solveP3L(images3, lines3, poses);
+        expectValidRotations(poses);
+    }
+    std::cout << nonZero << " of 200 image lines were rounding rather than zero" << std::endl;
+}
+
+/** Parallel lines are no degeneracy of P1P2L (with the point off them) or P3L (two of three), but
+they take other branches of the rotation solver: one constraint then fixes alpha by itself, or the
+two beta-dependent constraints share a direction.
+*/
+CameraPose makeP1P2LParallel(RNG& rng, std::vector<PointObservation>& points, std::vector<LineObservation>& lines)
+{
+    const CameraPose truth = randomPose(rng);
+    points.push_back(observePoint(truth, randomPointInView(rng)));
+    const Eigen::Vector3d dc = randomDirection(rng);
+    for (int j = 0; j < 2; ++j)
+        lines.push_back(lineThrough(rng, truth, randomPointInView(rng), dc));
+    return truth;
+}
+
+TEST(Tripose_MinimalLines, p1p2l_parallel_lines_noise_free)
+{
+    RNG rng(1203);
+    const SuiteResult r = runExactSuite(rng, 1000, 4, makeP1P2LParallel, solveP1P2LObservations);
+    r.print("P1P2L, parallel lines");
+    expectHighSuccess(r);
+}
+
+//! P3L with lines @p first and @p second of the three parallel.
+std::function<CameraPose(RNG&, std::vector<PointObservation>&, std::vector<LineObservation>&)>
+makeP3LTwoParallel(int first, int second)
+{
+    return [first, second](RNG& rng, std::vector<PointObservation>&, std::vector<LineObservation>& lines) {
+        const CameraPose truth = randomPose(rng);
+        const Eigen::Vector3d dc = randomDirection(rng);
+        for (int j = 0; j < 3; ++j)
+            lines.push_back(j == first || j == second ? lineThrough(rng, truth, randomPointInView(rng), dc)
+                                                      : observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+        return truth;
+    };
+}
+
+TEST(Tripose_MinimalLines, p3l_two_parallel_lines_noise_free)
+{
+    RNG rng(303);
+    const SuiteResult withFirst = runExactSuite(rng, 1000, 8, makeP3LTwoParallel(0, 1), solveP3LObservations);
+    withFirst.print("P3L, lines 1 and 2 parallel");
+    expectHighSuccess(withFirst);
+    const SuiteResult others = runExactSuite(rng, 1000, 8, makeP3LTwoParallel(1, 2), solveP3LObservations);
+    others.print("P3L, lines 2 and 3 parallel");
+    expectHighSuccess(others);
 }
 
 } // namespace
