@@ -9,80 +9,18 @@
 
 #include <Eigen/Geometry>
 
-#include "../src/minimal/p1p2l.hpp"
-#include "../src/minimal/p2p1l.hpp"
-#include "../src/minimal/p3l.hpp"
+#include "minimal_instances.hpp"
 
 namespace opencv_test {
 namespace {
 
-using tripose::detail::CameraPose;
-using tripose::detail::solveP1P2L;
-using tripose::detail::solveP2P1L;
-using tripose::detail::solveP3L;
-using tripose::detail::WorldLine;
+using namespace minimal_instances;
 
 // A noise-free instance counts as solved when a returned pose is this close to the true one.
 constexpr double kRotationToleranceRad = 1e-6;
 constexpr double kRelativeTranslationTolerance = 1e-6;
 // Sine of the angle by which a returned pose may miss an input ray or plane: rounding only.
 constexpr double kIncidenceTolerance = 1e-8;
-
-CameraPose randomPose(RNG& rng)
-{
-    CameraPose pose;
-    pose.R = Eigen::Quaterniond(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0))
-                 .normalized()
-                 .toRotationMatrix();
-    pose.t = Eigen::Vector3d(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-    return pose;
-}
-
-//! A point in the camera frame in a 90 degree field of view, at depth 2..10.
-Eigen::Vector3d randomPointInView(RNG& rng)
-{
-    return rng.uniform(2.0, 10.0) * Eigen::Vector3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 1.0);
-}
-
-Eigen::Vector3d toWorld(const CameraPose& pose, const Eigen::Vector3d& Xc)
-{
-    return pose.R.transpose() * (Xc - pose.t);
-}
-
-//! The calibrated image line through the projections of two camera-frame points, (a, b) unit.
-Eigen::Vector3d imageLineThrough(const Eigen::Vector3d& Ac, const Eigen::Vector3d& Bc)
-{
-    const Eigen::Vector3d l = (Ac / Ac.z()).cross(Bc / Bc.z());
-    return l / l.head<2>().norm();
-}
-
-struct PointObservation
-{
-    Eigen::Vector3d bearing; // [x; 1]
-    Eigen::Vector3d world;
-};
-
-struct LineObservation
-{
-    Eigen::Vector3d imageLine;
-    WorldLine world;
-    Eigen::Vector3d ends[2]; // world end points, both in front of the camera
-};
-
-PointObservation observePoint(const CameraPose& pose, const Eigen::Vector3d& Xc)
-{
-    return PointObservation{ Xc / Xc.z(), toWorld(pose, Xc) };
-}
-
-LineObservation observeLine(const CameraPose& pose, const Eigen::Vector3d& Ac, const Eigen::Vector3d& Bc)
-{
-    LineObservation o;
-    o.imageLine = imageLineThrough(Ac, Bc);
-    o.ends[0] = toWorld(pose, Ac);
-    o.ends[1] = toWorld(pose, Bc);
-    o.world = WorldLine::throughPoints(o.ends[0], o.ends[1]);
-    return o;
-}
 
 //! The sine of the angle between the ray of @p o and the point placed by @p pose.
 double pointIncidenceSine(const CameraPose& pose, const PointObservation& o)
@@ -208,56 +146,6 @@ SuiteResult runExactSuite(
     return result;
 }
 
-CameraPose makeP2P1L(RNG& rng, std::vector<PointObservation>& points, std::vector<LineObservation>& lines)
-{
-    const CameraPose truth = randomPose(rng);
-    for (int i = 0; i < 2; ++i)
-        points.push_back(observePoint(truth, randomPointInView(rng)));
-    lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
-    return truth;
-}
-
-int solveP2P1LObservations(const std::vector<PointObservation>& points, const std::vector<LineObservation>& lines,
-                           std::vector<CameraPose>& poses)
-{
-    const Eigen::Vector3d bearings[2] = { points[0].bearing, points[1].bearing };
-    const Eigen::Vector3d worlds[2] = { points[0].world, points[1].world };
-    return solveP2P1L(bearings, worlds, lines[0].imageLine, lines[0].world, poses);
-}
-
-CameraPose makeP1P2L(RNG& rng, std::vector<PointObservation>& points, std::vector<LineObservation>& lines)
-{
-    const CameraPose truth = randomPose(rng);
-    points.push_back(observePoint(truth, randomPointInView(rng)));
-    for (int j = 0; j < 2; ++j)
-        lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
-    return truth;
-}
-
-int solveP1P2LObservations(const std::vector<PointObservation>& points, const std::vector<LineObservation>& lines,
-                           std::vector<CameraPose>& poses)
-{
-    const Eigen::Vector3d imageLines[2] = { lines[0].imageLine, lines[1].imageLine };
-    const WorldLine worlds[2] = { lines[0].world, lines[1].world };
-    return solveP1P2L(points[0].bearing, points[0].world, imageLines, worlds, poses);
-}
-
-CameraPose makeP3L(RNG& rng, std::vector<PointObservation>&, std::vector<LineObservation>& lines)
-{
-    const CameraPose truth = randomPose(rng);
-    for (int j = 0; j < 3; ++j)
-        lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
-    return truth;
-}
-
-int solveP3LObservations(const std::vector<PointObservation>&, const std::vector<LineObservation>& lines,
-                         std::vector<CameraPose>& poses)
-{
-    const Eigen::Vector3d imageLines[3] = { lines[0].imageLine, lines[1].imageLine, lines[2].imageLine };
-    const WorldLine worlds[3] = { lines[0].world, lines[1].world, lines[2].world };
-    return solveP3L(imageLines, worlds, poses);
-}
-
 // At least 99.5 % of random noise-free instances must be solved.
 void expectHighSuccess(const SuiteResult& r)
 {
@@ -286,29 +174,6 @@ TEST(Tripose_MinimalLines, p3l_true_pose_among_solutions_noise_free)
     const SuiteResult r = runExactSuite(rng, 1000, 8, makeP3L, solveP3LObservations);
     r.print("P3L");
     expectHighSuccess(r);
-}
-
-//! A camera-frame segment through @p Zc along @p dc, both end points at positive depth.
-void segmentThrough(RNG& rng, const Eigen::Vector3d& Zc, const Eigen::Vector3d& dc, Eigen::Vector3d& Ac,
-                    Eigen::Vector3d& Bc)
-{
-    // Depths are at least 2 and |dc| is 1: steps below 1 keep both ends in front.
-    const Eigen::Vector3d d = dc.normalized();
-    Ac = Zc + rng.uniform(0.2, 0.9) * d;
-    Bc = Zc - rng.uniform(0.2, 0.9) * d;
-}
-
-Eigen::Vector3d randomDirection(RNG& rng)
-{
-    return Eigen::Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0)).normalized();
-}
-
-//! A line of @p pose's view through the camera-frame point @p Zc along @p dc.
-LineObservation lineThrough(RNG& rng, const CameraPose& pose, const Eigen::Vector3d& Zc, const Eigen::Vector3d& dc)
-{
-    Eigen::Vector3d Ac, Bc;
-    segmentThrough(rng, Zc, dc, Ac, Bc);
-    return observeLine(pose, Ac, Bc);
 }
 
 //! Runs @p solve and checks that it returns no pose and leaves @p poses as it was.
