@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "../linear/polynomial_roots.hpp"
 #include "incidences.hpp"
+#include "sturm_roots.hpp"
 
 namespace cv {
 namespace tripose {
@@ -161,7 +161,7 @@ int solveConstrainedRotations(const Eigen::Vector3d& a, const Eigen::Vector3d& b
         return 0;
 
     double roots[8];
-    const int numRoots = solveRealPolynomialRoots(eliminant.data(), 8, roots);
+    const int numRoots = solveRealRootsSturm(eliminant.data(), 8, roots);
     for (int i = 0; i < numRoots; ++i)
     {
         const double s = roots[i], s2 = s * s;
