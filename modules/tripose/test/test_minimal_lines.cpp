@@ -15,6 +15,7 @@ namespace opencv_test {
 namespace {
 
 using namespace minimal_instances;
+using tripose::detail::orthogonalUnitVector;
 
 // A noise-free instance counts as solved when a returned pose is this close to the true one.
 constexpr double kRotationToleranceRad = 1e-6;
@@ -374,16 +375,48 @@ TEST(Tripose_MinimalLines, p1p2l_parallel_lines_noise_free)
     expectHighSuccess(r);
 }
 
-//! P3L with lines @p first and @p second of the three parallel.
+//! P1P2L with the second line's direction turned by @p radians from the first's.
 std::function<CameraPose(RNG&, std::vector<PointObservation>&, std::vector<LineObservation>&)>
-makeP3LTwoParallel(int first, int second)
+makeP1P2LNearlyParallel(double radians)
 {
-    return [first, second](RNG& rng, std::vector<PointObservation>&, std::vector<LineObservation>& lines) {
+    return [radians](RNG& rng, std::vector<PointObservation>& points, std::vector<LineObservation>& lines) {
+        const CameraPose truth = randomPose(rng);
+        points.push_back(observePoint(truth, randomPointInView(rng)));
+        const Eigen::Vector3d dc = randomDirection(rng);
+        const Eigen::Vector3d turned = Eigen::AngleAxisd(radians, orthogonalUnitVector(dc)) * dc;
+        lines.push_back(lineThrough(rng, truth, randomPointInView(rng), dc));
+        lines.push_back(lineThrough(rng, truth, randomPointInView(rng), turned));
+        return truth;
+    };
+}
+
+/** Between the exactly parallel branch and general lines: directions 1e-9 to 1e-3 rad apart. The
+true pose is still found, though the instances become ill-conditioned as the angle shrinks (the
+pose then depends on a direction difference of the order of the rounding).
+*/
+TEST(Tripose_MinimalLines, p1p2l_nearly_parallel_lines_noise_free)
+{
+    for (double radians : { 1e-9, 1e-7, 1e-5, 1e-4, 3e-4, 1e-3, 1e-2 })
+    {
+        RNG rng(1204);
+        const SuiteResult r = runExactSuite(rng, 1000, 8, makeP1P2LNearlyParallel(radians), solveP1P2LObservations);
+        r.print(cv::format("P1P2L, lines %g rad from parallel", radians).c_str());
+        expectHighSuccess(r);
+    }
+}
+
+//! P3L with lines @p first and @p second of the three parallel, or @p radians from parallel.
+std::function<CameraPose(RNG&, std::vector<PointObservation>&, std::vector<LineObservation>&)>
+makeP3LTwoParallel(int first, int second, double radians = 0)
+{
+    return [first, second, radians](RNG& rng, std::vector<PointObservation>&, std::vector<LineObservation>& lines) {
         const CameraPose truth = randomPose(rng);
         const Eigen::Vector3d dc = randomDirection(rng);
+        const Eigen::Vector3d turned = Eigen::AngleAxisd(radians, orthogonalUnitVector(dc)) * dc;
         for (int j = 0; j < 3; ++j)
-            lines.push_back(j == first || j == second ? lineThrough(rng, truth, randomPointInView(rng), dc)
-                                                      : observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+            lines.push_back(j == first    ? lineThrough(rng, truth, randomPointInView(rng), dc)
+                            : j == second ? lineThrough(rng, truth, randomPointInView(rng), turned)
+                                          : observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
         return truth;
     };
 }
@@ -397,6 +430,12 @@ TEST(Tripose_MinimalLines, p3l_two_parallel_lines_noise_free)
     const SuiteResult others = runExactSuite(rng, 1000, 8, makeP3LTwoParallel(1, 2), solveP3LObservations);
     others.print("P3L, lines 2 and 3 parallel");
     expectHighSuccess(others);
+    for (double radians : { 1e-7, 1e-3 })
+    {
+        const SuiteResult nearly = runExactSuite(rng, 1000, 8, makeP3LTwoParallel(0, 1, radians), solveP3LObservations);
+        nearly.print(cv::format("P3L, lines 1 and 2 %g rad from parallel", radians).c_str());
+        expectHighSuccess(nearly);
+    }
 }
 
 /** Gaussian noise of @p sigma (calibrated units) on every image point, and on both end points of

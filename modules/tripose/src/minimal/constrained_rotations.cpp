@@ -18,8 +18,13 @@ namespace detail {
 
 namespace {
 
-// Relative size below which a constraint's dependence on beta, or the whole eliminant, is rounding.
+// Relative size below which the whole eliminant is rounding.
 constexpr double kVanishing = 1e-10;
+// Relative size of a constraint's dependence on beta below which it is solved as free of beta. Near
+// that limit (nearly parallel lines) pairs of roots of the eliminant merge and may turn complex,
+// whereas the beta-free solution is off by about this size and the caller's Newton polish, which
+// converges quadratically, removes that.
+constexpr double kNearlyFreeOfBeta = 1e-4;
 
 using Quadratic = Eigen::Vector3d;             // ascending coefficients in s
 using Quartic = Eigen::Matrix<double, 5, 1>;
@@ -126,7 +131,7 @@ int solveConstrainedRotations(const Eigen::Vector3d& a, const Eigen::Vector3d& b
     // A constraint free of beta fixes alpha by itself.
     for (int k = 0; k < 2; ++k)
     {
-        if (M[k].block<3, 2>(0, 0).norm() > kVanishing * norms[k])
+        if (M[k].block<3, 2>(0, 0).norm() > kNearlyFreeOfBeta * norms[k])
             continue;
         const Eigen::Vector2d direction(M[k](1, 2), -M[k](0, 2));
         const double length = direction.norm();

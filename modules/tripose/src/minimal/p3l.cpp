@@ -4,6 +4,7 @@
 
 #include "p3l.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -40,10 +41,17 @@ int solveP3L(const Eigen::Vector3d imageLines[3], const WorldLine lines[3], std:
         return 0;
     const Eigen::Matrix3d Ninverse = N.inverse();
 
-    const Eigen::Matrix3d G1 = N.row(1).transpose() * directions[1].transpose();
-    const Eigen::Matrix3d G2 = N.row(2).transpose() * directions[2].transpose();
+    // The rank-one constraint is taken from a line of the most nearly parallel pair: the rotation
+    // solver then meets that pair in its beta-free branch, which nearly parallel lines need.
+    const double sines[3] = { directions[1].cross(directions[2]).norm(), directions[0].cross(directions[2]).norm(),
+                              directions[0].cross(directions[1]).norm() };
+    const int lonely = int(std::max_element(sines, sines + 3) - sines); // not in the most parallel pair
+    const int first = lonely == 0 ? 1 : 0;
+    const int second = 3 - lonely - first;
+    const Eigen::Matrix3d G1 = N.row(second).transpose() * directions[second].transpose();
+    const Eigen::Matrix3d G2 = N.row(lonely).transpose() * directions[lonely].transpose();
     Eigen::Matrix3d rotations[8];
-    const int numRotations = solveConstrainedRotations(N.row(0).transpose(), directions[0], G1, G2, rotations);
+    const int numRotations = solveConstrainedRotations(N.row(first).transpose(), directions[first], G1, G2, rotations);
 
     MinimalIncidences incidences;
     for (int j = 0; j < 3; ++j)

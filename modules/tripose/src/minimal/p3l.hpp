@@ -23,8 +23,9 @@ Input: the calibrated image lines l_j (homogeneous, any non-zero scale) and the 
 
     n_j^T R d_j = 0   and   n_j^T (R P_j + t) = 0.
 
-The first three equations involve R only: solveConstrainedRotations with a = n_1, b = d_1 and
-G_k = n_j d_j^T (j = 2, 3), a polynomial of degree 8. For each rotation the other three are linear
+The first three equations involve R only: solveConstrainedRotations with a = n_i, b = d_i and
+G_k = n_j d_j^T for the two other lines j, a polynomial of degree 8 (i is a line of the most nearly
+parallel pair). For each rotation the other three are linear
 in t: N t = -(n_j^T R P_j)_j with N = [n_1 n_2 n_3]^T. The pose is then polished by Newton's method
 on the six equations.
 
