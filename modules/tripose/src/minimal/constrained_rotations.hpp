@@ -34,9 +34,12 @@ Dc = q1 w2 - w1 q2, Ds = p2 w1 - p1 w2, and cb^2 + sb^2 = 1 is
     Dc^2 + Ds^2 - D^2 = 0,
 
 quartic in (ca, sa); with s = tan(alpha / 2) and both sides times (1 + s^2)^4 it is a polynomial of
-degree 8 in s: up to eight rotations. When one constraint does not depend on beta (two parallel line
-directions, one of them b), it fixes alpha (two opposite values) and the other gives up to two beta
-each: up to four rotations.
+degree 8 in s: up to eight rotations (alpha = pi exactly, s infinite, is lost; C and W are arbitrary
+completions, so it has probability zero, and near it s is merely large). When one constraint does not
+depend on beta (two parallel line directions, one of them b), it fixes alpha (two opposite values)
+and the other gives up to two beta each: up to four rotations. Nearly parallel directions take this
+branch too: there pairs of roots of the degree-8 polynomial merge and may turn complex, whereas the
+beta-free rotations are only approximate, for the caller to polish.
 
 Returns the number of rotations written to @p rotations (at most 8); zero when the constraints
 leave a continuum of rotations (the degree-8 polynomial vanishes identically).
