@@ -384,9 +384,9 @@ double trackingDrift(const std::string& name, int window)
 
 TEST(Tripose_MultiView, tracks_model_house)
 {
-    // Measured with tripose_track's default window of 5 (doc/tracking.md): 0.169 % of the path. The
-    // bound leaves half as much again for other OpenCV versions' rounding in RANSAC and refinement,
-    // and stays under the 0.3 % the tracker is meant to reach on this sequence.
+    // The window is tripose_track's default, 5 (its drift here: doc/tracking.md). The bound leaves
+    // half as much again for other OpenCV versions' rounding in RANSAC and refinement, and stays under
+    // the 0.3 % the tracker is meant to reach on this sequence.
     const double drift = trackingDrift("Model-House", 5);
     EXPECT_LT(drift, 0.25);
 }
