@@ -6,14 +6,16 @@
 //
 //   tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]
 //                    [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]
+//                    [--allow-unknown-keys]
 //
 // The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
 // (or dist1..dist3), R12, t12, points1..points3 (Nx2) and lines1..lines3 (Mx4); either kind of
 // feature may be absent. With points4 and/or lines4 it is a stereo rig (estimatePoseLinePointStereo):
 // views 1, 2 the left and right cameras at time A, views 3, 4 at time B, R12/t12 the rig, K1..K4 and
 // dist1..dist4 per view, and a row of .nan in points3/points4/lines3/lines4 a feature that view does
-// not see. The result holds num_solutions and, when a pose was found, R (3x3) and
-// t (3x1); with --method ransac also num_inliers, point_inliers and line_inliers (one 0/1 per
+// not see. Any other key is an error naming it (a misspelt key would read as an absent one), apart
+// from the ground truth tripose_make_scene writes, unless --allow-unknown-keys. The result holds
+// num_solutions and, when a pose was found, R (3x3) and t (3x1); with --method ransac also num_inliers, point_inliers and line_inliers (one 0/1 per
 // feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
 // 2 when the solver rejects the input (the message names the problem key). No output file is left
 // behind on failure.
@@ -36,6 +38,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
     "                        [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]\n"
+    "                        [--allow-unknown-keys]\n"
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4).\n"
     "               Stereo rig: with points4 and/or lines4, views 1-2 are the left and right cameras\n"
@@ -52,12 +55,15 @@ const char* kUsage =
     "               candidate and further starts refined, the lowest cost kept; ransac: on the inliers);\n"
     "               0: no refinement.\n"
     "               Default: 0 with linear, 1 with ransac\n"
-    "  --seed       ransac sampler seed (default 0)\n";
+    "  --seed       ransac sampler seed (default 0)\n"
+    "  --allow-unknown-keys  read a problem file that carries other keys (by default an unknown key,\n"
+    "               such as a misspelt one, is an error; the ground truth of tripose_make_scene is known)\n";
 
 struct Options
 {
     std::string input, output, method = "linear";
     int refine = -1; //!< -1: the method's default
+    bool allowUnknownKeys = false;
     cv::tripose::RansacParams ransac;
 };
 
@@ -66,11 +72,13 @@ Options parseArguments(int argc, char** argv)
     Options o;
     const std::vector<std::string> known = { "--input",      "--output",         "--method", "--threshold",
                                              "--confidence", "--max-iterations", "--refine", "--seed" };
-    for (const auto& option : tripose_samples::optionPairs(argc, argv, kUsage, known))
+    for (const auto& option : tripose_samples::optionPairs(argc, argv, kUsage, known, { "--allow-unknown-keys" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
-        if (arg == "--input")
+        if (arg == "--allow-unknown-keys")
+            o.allowUnknownKeys = true;
+        else if (arg == "--input")
             o.input = value;
         else if (arg == "--output")
             o.output = value;
@@ -120,7 +128,7 @@ int main(int argc, char** argv)
     try
     {
         options = parseArguments(argc, argv);
-        problem = tripose_samples::readProblem(options.input);
+        problem = tripose_samples::readProblem(options.input, options.allowUnknownKeys);
     }
     catch (const std::exception& e)
     {

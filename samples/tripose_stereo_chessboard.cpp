@@ -9,6 +9,7 @@
 //   tripose_stereo_chessboard --data <folder> [--list stereo_calib.xml] [--board 9x6] [--square 1]
 //                             [--pairs all|consecutive|i,j] [--features all|points|lines]
 //                             [--threshold px] [--output results.yml] [--overlay out.png]
+//                             [--allow-unknown-keys]
 //
 // The rig is calibrated from every frame (cv::calibrateCamera per camera, then cv::stereoCalibrate).
 // For a frame pair (A, B) the four views are left A [I|0], right A [R12|t12], left B [R|t] and
@@ -41,6 +42,7 @@
 #include "tripose_support/pose_error.hpp"
 
 #include "arguments.hpp"
+#include "problem_io.hpp"
 
 using tripose_samples::argumentError;
 using tripose_samples::optionPairs;
@@ -53,9 +55,10 @@ const char* kUsage =
     "usage: tripose_stereo_chessboard --data <folder> [--list stereo_calib.xml] [--board 9x6] [--square 1]\n"
     "                                 [--pairs all|consecutive|i,j] [--features all|points|lines]\n"
     "                                 [--threshold px] [--output results.yml] [--overlay out.png]\n"
+    "                                 [--allow-unknown-keys]\n"
     "  --data       folder holding the list file and the images\n"
     "  --list       OpenCV FileStorage file in --data with the node 'imagelist': image names, left and\n"
-    "               right alternating (default stereo_calib.xml)\n"
+    "               right alternating (default stereo_calib.xml); any other key is an error\n"
     "  --board      inner corners per row x per column (default 9x6)\n"
     "  --square     side of a board square; the unit of every translation (default 1)\n"
     "  --pairs      frame pairs (A, B): all (every A < B, default), consecutive, or one pair i,j; frames are\n"
@@ -63,7 +66,8 @@ const char* kUsage =
     "  --features   features given to the estimators: all (default), points (corners) or lines\n"
     "  --threshold  RANSAC inlier threshold in pixels (default 2)\n"
     "  --output     write calibration, features, ground truth and estimates (.yml, .yaml or .json)\n"
-    "  --overlay    PNG of the left image at B with the board lines moved by the estimate (one pair)\n";
+    "  --overlay    PNG of the left image at B with the board lines moved by the estimate (one pair)\n"
+    "  --allow-unknown-keys  read a list file that carries keys other than 'imagelist'\n";
 
 struct Options
 {
@@ -71,6 +75,7 @@ struct Options
     cv::Size board = cv::Size(9, 6);
     double square = 1.0;
     double threshold = 2.0;
+    bool allowUnknownKeys = false;
 };
 
 bool hasExtension(const std::string& path, const std::string& extension)
@@ -84,11 +89,13 @@ Options parseArguments(int argc, char** argv)
     Options o;
     const std::vector<std::string> known = { "--data",     "--list",      "--board",  "--square", "--pairs",
                                              "--features", "--threshold", "--output", "--overlay" };
-    for (const auto& option : optionPairs(argc, argv, kUsage, known))
+    for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--allow-unknown-keys" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
-        if (arg == "--data")
+        if (arg == "--allow-unknown-keys")
+            o.allowUnknownKeys = true;
+        else if (arg == "--data")
             o.data = value;
         else if (arg == "--list")
             o.list = value;
@@ -171,8 +178,11 @@ struct Frame
     std::vector<cv::Vec4f> segments[2];
 };
 
+//! The keys of a list file, written once: the reader reads these and rejects any other.
+const char* const kListKey = "imagelist";
+
 //! The image names of the list file, in pairs.
-std::vector<Frame> readImageList(const std::string& data, const std::string& list)
+std::vector<Frame> readImageList(const std::string& data, const std::string& list, bool allowUnknownKeys)
 {
     const std::string path = data + "/" + list;
     cv::FileStorage fs;
@@ -186,7 +196,10 @@ std::vector<Frame> readImageList(const std::string& data, const std::string& lis
     }
     if (!fs.isOpened())
         throw std::runtime_error("file " + path + ": cannot be opened");
-    const cv::FileNode node = fs["imagelist"];
+    // A misspelt key would otherwise be reported as a missing image list.
+    if (!allowUnknownKeys)
+        tripose_samples::checkKeys(fs.root().keys(), { kListKey }, path);
+    const cv::FileNode node = fs[kListKey];
     if (!node.isSeq() || node.size() == 0 || node.size() % 2 != 0)
         throw std::runtime_error("file " + path +
                                  ": 'imagelist' must be a non-empty sequence of left and right image names");
@@ -553,7 +566,7 @@ std::string formatError(const Estimate& e)
 
 int run(const Options& o)
 {
-    std::vector<Frame> frames = readImageList(o.data, o.list);
+    std::vector<Frame> frames = readImageList(o.data, o.list, o.allowUnknownKeys);
     std::vector<Frame> usable;
     cv::Ptr<cv::LineSegmentDetector> detector = cv::createLineSegmentDetector(cv::LSD_REFINE_STD);
     for (Frame& f : frames)

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -36,14 +37,42 @@ struct Node
     std::vector<std::pair<std::string, size_t>> entries;  //!< A mapping's keys and their nodes, in order.
 };
 
+/** The keys readFromText reads, written once: Text::find refuses any other key, so that a key the
+reader reads cannot be missing here, and the unknown-key check (checkKeys) accepts exactly these and
+kSceneKeys.
+*/
+const char* const kProblemKeys[] = { "K",       "K1",      "K2",      "K3",     "K4",     "dist",   "dist1",
+                                     "dist2",   "dist3",   "dist4",   "R12",    "t12",    "points1", "points2",
+                                     "points3", "points4", "lines1",  "lines2", "lines3", "lines4" };
+
+/** The ground truth tripose_make_scene writes beside the problem keys. A scene file is a problem file
+(tools and tests pass it to tripose_estimate as it is), so these keys are known, though not read.
+*/
+const char* const kSceneKeys[] = { "R_gt",         "t_gt",         "points3d",         "lines3d",
+                                   "point_inliers", "line_inliers", "point_visibility", "line_visibility" };
+
+//! The fields of a matrix as FileStorage writes one: rows and cols or sizes, dt, data; JSON adds type_id.
+const char* const kMatrixFields[] = { "type_id", "rows", "cols", "sizes", "dt", "data" };
+
+template <size_t N>
+bool listed(const char* const (&names)[N], const std::string& name)
+{
+    return std::find(std::begin(names), std::end(names), name) != std::end(names);
+}
+
 //! A problem text: its nodes and the keys of its top level (of every document, when it has several).
 struct Text
 {
     std::vector<Node> nodes;
     std::map<std::string, size_t> keys;
+    std::vector<std::string> keyOrder;  //!< The top-level keys as the text gives them, for messages.
+    std::string what;                   //!< The file (or "the problem text"), for messages.
+    bool allowUnknownKeys = false;      //!< Keys that are not in kProblemKeys, kSceneKeys (or a matrix's fields) pass.
 
     const Node* find(const std::string& key) const
     {
+        if (!listed(kProblemKeys, key))
+            throw std::logic_error("problem reader: key '" + key + "' is read but not listed in kProblemKeys");
         const auto it = keys.find(key);
         return it == keys.end() ? nullptr : &nodes[it->second];
     }
@@ -290,10 +319,14 @@ Text parseText(const std::string& original, const std::string& what)
         if (root.kind != Node::Mapping)
             throw std::runtime_error(kNotAMap);
         for (const auto& entry : root.entries)
+        {
             if (!out.keys.emplace(entry.first, entry.second).second)
                 throw parseError(what, cv::format("key '%s' is given twice (lines %d and %d)", entry.first.c_str(),
                                                   out.nodes[out.keys[entry.first]].line, out.nodes[entry.second].line));
+            out.keyOrder.push_back(entry.first);
+        }
     }
+    out.what = what;
     return out;
 }
 
@@ -388,6 +421,14 @@ cv::Mat readMatrix(const Text& text, const std::string& key, bool nanMarksMissin
         return cv::Mat();
     if (node->kind != Node::Mapping)
         throw keyError(key, "expected an OpenCV matrix (!!opencv-matrix with rows, cols, dt, data)");
+    if (!text.allowUnknownKeys)
+    {
+        // A misspelt field (row, date) would otherwise read as a missing one.
+        std::vector<std::string> fields;
+        for (const auto& entry : node->entries)
+            fields.push_back(entry.first);
+        checkKeys(fields, std::vector<std::string>(std::begin(kMatrixFields), std::end(kMatrixFields)), text.what, key);
+    }
     int rows = -1, cols = -1;
     const Node* sizes = text.field(*node, "sizes");
     if (sizes && !isNull(*sizes))
@@ -520,6 +561,10 @@ bool hasMatrix(const Text& text, const std::string& key)
 
 Problem readFromText(const Text& text)
 {
+    // Unknown keys first: a misspelt key (point1) would otherwise read as an absent one and be
+    // reported, if at all, as a count or shape of the keys around it.
+    if (!text.allowUnknownKeys)
+        checkKeys(text.keyOrder, problemFileKeys(), text.what);
     Problem p;
     p.stereo = hasMatrix(text, "points4") || hasMatrix(text, "lines4");
     const int numViews = p.numViews();
@@ -540,7 +585,7 @@ Problem readFromText(const Text& text)
 
 } // namespace
 
-Problem readProblem(const std::string& path)
+Problem readProblem(const std::string& path, bool allowUnknownKeys)
 {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
     if (!file)
@@ -551,12 +596,82 @@ Problem readProblem(const std::string& path)
         text.append(buffer, n);
     if (std::ferror(file.get()))
         throw std::runtime_error("cannot read " + path);
-    return readFromText(parseText(text, path));
+    Text parsed = parseText(text, path);
+    parsed.allowUnknownKeys = allowUnknownKeys;
+    return readFromText(parsed);
 }
 
-Problem readProblemFromString(const std::string& text)
+Problem readProblemFromString(const std::string& text, bool allowUnknownKeys)
 {
-    return readFromText(parseText(text, "the problem text"));
+    Text parsed = parseText(text, "the problem text");
+    parsed.allowUnknownKeys = allowUnknownKeys;
+    return readFromText(parsed);
+}
+
+std::vector<std::string> problemFileKeys()
+{
+    std::vector<std::string> keys(std::begin(kProblemKeys), std::end(kProblemKeys));
+    keys.insert(keys.end(), std::begin(kSceneKeys), std::end(kSceneKeys));
+    return keys;
+}
+
+size_t editDistance(const std::string& a, const std::string& b)
+{
+    // Insertions, deletions, substitutions and swaps of two neighbours (R21 for R12), each one edit:
+    // the optimal string alignment distance, over the whole table (keys are short).
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i)
+        d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j)
+        d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j)
+        {
+            d[i][j] = std::min({ d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1) });
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+std::string closestKey(const std::string& key, const std::vector<std::string>& valid)
+{
+    // Near enough to be a slip of the keyboard: a third of the key's length, at least one edit.
+    const size_t limit = std::max<size_t>(1, key.size() / 3);
+    std::string best;
+    size_t bestDistance = limit + 1;
+    for (const std::string& candidate : valid)
+    {
+        const size_t d = editDistance(key, candidate);
+        if (d < bestDistance)
+        {
+            bestDistance = d;
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+void checkKeys(const std::vector<std::string>& keys, const std::vector<std::string>& valid, const std::string& file,
+               const std::string& parent)
+{
+    for (const std::string& key : keys)
+    {
+        if (std::find(valid.begin(), valid.end(), key) != valid.end())
+            continue;
+        std::string message = "unknown key '" + key + "'" + (parent.empty() ? "" : " of '" + parent + "'") + " in " + file;
+        const std::string suggestion = closestKey(key, valid);
+        if (!suggestion.empty())
+            message += " (did you mean '" + suggestion + "'?)";
+        else
+        {
+            message += " (known keys:";
+            for (size_t i = 0; i < valid.size(); ++i)
+                message += (i ? ", " : " ") + valid[i];
+            message += "; --allow-unknown-keys reads a file that carries other data)";
+        }
+        throw std::runtime_error(message);
+    }
 }
 
 std::string problemKeyNamedBy(const std::string& solverMessage)

@@ -31,18 +31,35 @@ struct Problem
 /** Reads a problem from FileStorage text (YAML, with or without OpenCV's "%YAML:1.0" first line, or
 JSON; told apart by the text itself, not the file name). Keys: K or K1..K3; optional dist or
 dist1..dist3; R12 (3x3 or 3x1 Rodrigues), t12; points1..points3 (Nx2) and lines1..lines3 (Mx4), each
-kind absent or empty in all views when not used; other keys are ignored. With points4 and/or lines4
+kind absent or empty in all views when not used. With points4 and/or lines4
 the problem is a stereo rig (see estimatePoseLinePointStereo): K1..K4 and dist1..dist4 per view,
 and in points3, points4, lines3 and lines4 a row of NaN (.nan) marks a feature that view does not
 see (an absent key: the view sees none of that kind); every row count equals points1's or lines1's.
-Matrices are FileStorage's (rows, cols, dt, data). Throws std::runtime_error on text that is not
-YAML or JSON ("cannot parse", with the line), and naming the key on any malformed or inconsistent
-entry.
+Matrices are FileStorage's (rows, cols, dt, data). Any other key (at the top level: not one of
+problemFileKeys(); in a matrix: not one of FileStorage's fields) is an error naming it and the
+nearest known key, unless @p allowUnknownKeys (a file that carries other data). Throws
+std::runtime_error on text that is not YAML or JSON ("cannot parse", with the line), and naming the
+key on any unknown, malformed or inconsistent entry.
 */
-Problem readProblem(const std::string& path);
+Problem readProblem(const std::string& path, bool allowUnknownKeys = false);
 
 //! The same from text in memory (used by the fuzzer).
-Problem readProblemFromString(const std::string& text);
+Problem readProblemFromString(const std::string& text, bool allowUnknownKeys = false);
+
+//! The top-level keys a problem file may hold: those readProblem reads, and the ground truth
+//! tripose_make_scene writes beside them (R_gt, t_gt, points3d, ...).
+std::vector<std::string> problemFileKeys();
+
+//! The key of @p valid nearest to @p key in edits (insertions, deletions, substitutions, swaps of
+//! neighbours) when it is near enough to be a typo (a third of the key's length, at least one), else "".
+std::string closestKey(const std::string& key, const std::vector<std::string>& valid);
+
+/** Throws std::runtime_error "unknown key 'point1' in <file> (did you mean 'points1'?)" for the first
+of @p keys not in @p valid; with @p parent, "unknown key 'row' of 'K1' in <file> ...". Without a near
+key the message lists the valid ones.
+*/
+void checkKeys(const std::vector<std::string>& keys, const std::vector<std::string>& valid, const std::string& file,
+               const std::string& parent = "");
 
 /** The problem key behind the argument a solver message names, as " (key 'K2')", or "" when it names
 none: the solver speaks of cameraMatrix[1] and distCoeffs, the file of K2 and dist.

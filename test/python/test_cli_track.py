@@ -27,8 +27,8 @@ def drift(out):
     return value
 
 
-# Measured (doc/tracking.md): Model House 0.169 % at window 5, 0.103 % with the local adjustment;
-# the bounds leave half as much again for other OpenCV versions' rounding in RANSAC and refinement.
+# The bounds: Model House's drift at the default window, without and with the local adjustment
+# (doc/tracking.md), and half as much again for other OpenCV versions' rounding in RANSAC and refinement.
 @pytest.mark.parametrize("local_refine,bound", [(0, 0.25), (1, 0.16)])
 def test_model_house_drift(tmp_path, local_refine, bound):
     proc, out = track(tmp_path, VGG / "Model-House", "--local-refine", local_refine)

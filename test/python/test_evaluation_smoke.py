@@ -8,35 +8,24 @@ Runs every experiment of doc/evaluation.md with few trials (well under 3 minutes
 checks what must hold whatever the machine: every artefact is written, noise-free problems are
 solved to rounding error, errors grow with the noise, the maximum-likelihood estimate is at least
 as accurate as the linear solver it starts from, and RANSAC survives outliers that break the
-linear solver. Skipped when tripose_evaluate has not been built ($TRIPOSE_BUILD_DIR or build/).
+linear solver. A tripose_evaluate that has not been built ($TRIPOSE_BUILD_DIR or build/) is an error.
 """
 
 import json
-import os
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
+from tripose_tools import REPO, build_tool, require_modules
+
 DRIVER = REPO / "test" / "evaluation" / "run_evaluation.py"
-
-
-def _tool_built():
-    dirs = [Path(os.environ["TRIPOSE_BUILD_DIR"])] if os.environ.get("TRIPOSE_BUILD_DIR") else []
-    dirs.append(REPO / "build")
-    return any((d / "test" / "evaluation" / "tripose_evaluate").is_file() for d in dirs)
-
-
-pytestmark = pytest.mark.skipif(not _tool_built(), reason="tripose_evaluate is not built")
 
 
 @pytest.fixture(scope="module")
 def smoke(tmp_path_factory):
-    pytest.importorskip("poselib")
-    pytest.importorskip("matplotlib")
-    pytest.importorskip("tqdm")
+    build_tool("tripose_evaluate", folder="test/evaluation")
+    require_modules("poselib", "matplotlib", "tqdm")
     out = tmp_path_factory.mktemp("evaluation")
     subprocess.run([sys.executable, str(DRIVER), "--size", "smoke", "--out", str(out)], check=True,
                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
@@ -66,7 +55,9 @@ def test_every_artefact_is_written(smoke):
 def test_noise_free_problems_are_solved_exactly(smoke):
     _, results = smoke
     for name in ("fig3", "fig4"):
-        for g in _groups(results, name, noise=0.0):
+        groups = _groups(results, name, noise=0.0)
+        assert groups, name
+        for g in groups:
             s = g["methods"]["linear"]
             # Median over the trials: a single near-degenerate draw must not hide a systematic error.
             assert s["fails"] == 0, g["key"]
@@ -95,6 +86,7 @@ def test_maximum_likelihood_is_at_least_as_accurate_as_linear(smoke):
             if g["key"]["noise"] > 0:
                 ml += g["methods"]["ml_from_truth"][quantity]["median"]
                 linear += g["methods"]["linear"][quantity]["median"]
+        assert linear > 0, (quantity, "no noisy Fig. 4 group")
         assert ml <= linear, (quantity, ml, linear)
 
 
@@ -119,6 +111,9 @@ def test_regimes_cover_every_method_and_refinement_helps(smoke):
     _, results = smoke
     assert {g["key"]["regime"] for g in results["regimes"]} == {"narrow 1 %", "narrow 0.5 %", "planar large",
                                                                "planar small"}
+    # Each regime has the 10-point group whose accuracy is checked below.
+    assert {g["key"]["regime"] for g in results["regimes"] if g["key"]["points"] == 10} == \
+        {g["key"]["regime"] for g in results["regimes"]}
     for g in results["regimes"]:
         methods = g["methods"]
         for key in ("linear", "linear+refine", "ransac", "ml_from_truth", "tri+sqpnp", "poselib"):

@@ -4,38 +4,20 @@
 
 """Synthetic scenes exported by samples/tripose_make_scene read back in Python (numpy + cv2).
 
-The tool is looked up in $TRIPOSE_BUILD_DIR/samples, then in build/samples under the repository
-root; the tests are skipped when it has not been built.
+The tool is looked up in $TRIPOSE_BUILD_DIR/samples, else in build/samples under the repository
+root; a tool that has not been built is an error.
 """
 
-import os
 import subprocess
-from pathlib import Path
 
 import cv2
 import numpy as np
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
+from tripose_tools import build_tool
+
 TOOL_NAME = "tripose_make_scene"
-
-
-def _find_tool():
-    candidates = []
-    if os.environ.get("TRIPOSE_BUILD_DIR"):
-        candidates.append(Path(os.environ["TRIPOSE_BUILD_DIR"]) / "samples" / TOOL_NAME)
-    candidates.append(REPO / "build" / "samples" / TOOL_NAME)
-    for candidate in candidates:
-        if candidate.is_file() and os.access(candidate, os.X_OK):
-            return candidate
-    return None
-
-
-TOOL = _find_tool()
-pytestmark = pytest.mark.skipif(
-    TOOL is None,
-    reason=f"{TOOL_NAME} is not built (looked in $TRIPOSE_BUILD_DIR/samples and {REPO / 'build' / 'samples'})",
-)
+TOOL = build_tool(TOOL_NAME)
 
 PROBLEM_KEYS = ["K1", "K2", "K3", "R12", "t12", "points1", "points2", "points3", "lines1", "lines2", "lines3"]
 TRUTH_KEYS = ["R_gt", "t_gt", "points3d", "lines3d", "point_inliers", "line_inliers"]

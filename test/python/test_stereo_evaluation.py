@@ -11,16 +11,14 @@ import json
 import subprocess
 import sys
 
-import pytest
 
-from tripose_tools import REPO, build_tool
+from tripose_tools import REPO, build_tool, require_modules
 
 DRIVER = REPO / "test" / "evaluation" / "run_stereo_evaluation.py"
 
 
 def test_every_pair_is_evaluated(tmp_path):
-    pytest.importorskip("poselib")
-    pytest.importorskip("matplotlib")
+    require_modules("poselib", "matplotlib")
     build_tool("tripose_stereo_chessboard")
     subprocess.run([sys.executable, str(DRIVER), "--out", str(tmp_path)], check=True, capture_output=True, timeout=300)
     assert (tmp_path / "errors.png").stat().st_size > 10_000

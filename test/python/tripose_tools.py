@@ -1,5 +1,6 @@
 """Shared helpers of the Python tests: locating the built tools, making scenes with them, reading and
 writing problem files, running tripose_estimate and checking its rejections."""
+import importlib
 import os
 import subprocess
 from pathlib import Path
@@ -14,12 +15,23 @@ def build_dir():
     return Path(os.environ.get("TRIPOSE_BUILD_DIR", REPO / "build"))
 
 
-def build_tool(name):
-    """Path of a built sample; a missing tool is an error (the test command builds them)."""
-    path = build_dir() / "samples" / name
+def build_tool(name, folder="samples"):
+    """Path of a built tool (a sample, or under `folder` of the build); a missing tool is an error,
+    never a skip (the test command builds them all)."""
+    path = build_dir() / folder / name
     if not path.exists():
         raise FileNotFoundError(f"{path} is not built; run scripts/test.sh or set TRIPOSE_BUILD_DIR")
     return path
+
+
+def require_modules(*names):
+    """Imports the Python packages a test needs; a missing one is an error, never a skip
+    (requirements/python.txt pins them all)."""
+    for name in names:
+        try:
+            importlib.import_module(name)
+        except ImportError as e:
+            raise ImportError(f"{name} is not installed; pip install -r requirements/python.txt") from e
 
 
 def make_scene(tmp_path, points, lines, seed, noise=0.0, outliers=0.0, motion="large"):

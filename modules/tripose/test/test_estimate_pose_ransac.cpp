@@ -133,9 +133,9 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
     expectNamed(p, "params.maxIterations");
 }
 
-// Regression: with an all-inlier probability below 1e-16 (here about 4e-5 ^ 4), 1 - p rounded to 1,
-// the adaptive iteration bound became -inf and its conversion to an integer was undefined (caught
-// by the sanitizer build, scripts/test_sanitizers.sh; a release build stopped sampling at once).
+// An all-inlier probability below 1e-16 (here about 4e-5 ^ 4) rounds 1 - p to 1, which makes the
+// adaptive iteration bound -inf, and converting that to an integer is undefined (the sanitizer build,
+// scripts/test_sanitizers.sh, reports it): the estimator must still draw its samples.
 TEST(Tripose_RansacRegression, iteration_bound_with_a_tiny_inlier_ratio)
 {
     cv::tripose::support::SyntheticSceneParams sp;

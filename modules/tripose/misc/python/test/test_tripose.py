@@ -600,8 +600,7 @@ class tripose_test(NewOpenCVTests):
         expect_error('refine_initial_t_inf', 't', ('refine',), changes={}, t=with_value(scene.t, 0, inf))
 
     def test_robust(self):
-        if not hasattr(cv.tripose, 'estimatePoseLinePointRansac'):
-            self.skipTest('estimatePoseLinePointRansac is not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'estimatePoseLinePointRansac'), 'cv.tripose.estimatePoseLinePointRansac is missing from the bindings')
         # 30 % wrong matches in view 3 and 0.5 px noise: RANSAC (with its final refinement) finds
         # the pose and separates the matches.
         for seed in range(3):
@@ -623,8 +622,7 @@ class tripose_test(NewOpenCVTests):
             self.assertLessEqual(np.count_nonzero(found & ~truth), 0.1 * np.count_nonzero(~truth) + 1, what)
 
     def test_refinement(self):
-        if not hasattr(cv.tripose, 'refinePoseLinePoint'):
-            self.skipTest('refinePoseLinePoint is not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'refinePoseLinePoint'), 'cv.tripose.refinePoseLinePoint is missing from the bindings')
         # From the linear estimate on noisy data the maximum-likelihood refinement reaches the RMS
         # residual that Gaussian noise leaves after fitting: sigma * sqrt(1 - parameters / residuals)
         # (6 pose, 3 per point, 4 per line; 2 residuals per feature and view), within 25 % (the RMS
@@ -672,8 +670,7 @@ class tripose_test(NewOpenCVTests):
         self.assertEqual(np.count_nonzero(scene.pointVisibility == SEEN_IN_BOTH), 6)
 
     def test_stereo_noise_free(self):
-        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
-            self.skipTest('the stereo functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'estimatePoseLinePointStereo'), 'cv.tripose.estimatePoseLinePointStereo is missing from the bindings')
         # Three features seen by both time-B views, or more, some seen by one of them only: the best
         # candidate is the exact motion, with the metric scale of the rig.
         for num_points, num_lines, missing in [(3, 0, 0.0), (0, 3, 0.0), (2, 1, 0.0), (1, 2, 0.0), (10, 10, 0.0),
@@ -688,8 +685,7 @@ class tripose_test(NewOpenCVTests):
                 self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
 
     def test_stereo_missing_views_and_refined_candidates(self):
-        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
-            self.skipTest('the stereo functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'estimatePoseLinePointStereo'), 'cv.tripose.estimatePoseLinePointStereo is missing from the bindings')
         # Every feature seen by view 4 only: points3 and lines3 may be None (the view sees nothing);
         # float32 arrays keep their NaN rows; POSE_LINEAR_REFINE is exact on exact data.
         only4 = make_rig_scene(3, 3, seed=4, visibility=[SEEN_IN_VIEW4] * 6)
@@ -709,8 +705,7 @@ class tripose_test(NewOpenCVTests):
         self.assertLess(float(np.asarray(errors).ravel()[0]), 1e-6)
 
     def test_stereo_robust(self):
-        if not hasattr(cv.tripose, 'estimatePoseLinePointStereoRansac'):
-            self.skipTest('the stereo functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'estimatePoseLinePointStereoRansac'), 'cv.tripose.estimatePoseLinePointStereoRansac is missing from the bindings')
         # 30 % wrong matches at time B, 0.5 px noise, a fifth of the features seen by one time-B view:
         # the pose and the masks. (These seeds were checked through tripose_estimate, which calls
         # the same function; the C++ tests measure how often a scene defeats the estimator.)
@@ -731,8 +726,7 @@ class tripose_test(NewOpenCVTests):
             self.assertLessEqual(np.count_nonzero(found & ~truth), 0.05 * np.count_nonzero(~truth) + 1, what)
 
     def test_stereo_refinement(self):
-        if not hasattr(cv.tripose, 'refinePoseLinePointStereo'):
-            self.skipTest('the stereo functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'refinePoseLinePointStereo'), 'cv.tripose.refinePoseLinePointStereo is missing from the bindings')
         # Noise-free, from 1 degree and 5 % off: the exact motion and structure.
         rng = np.random.default_rng(8)
         for seed in range(4):
@@ -751,8 +745,7 @@ class tripose_test(NewOpenCVTests):
             self.assertEqual(lines3d.shape, (8, 6), what)
 
     def test_stereo_bad_input(self):
-        if not hasattr(cv.tripose, 'estimatePoseLinePointStereo'):
-            self.skipTest('the stereo functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'estimatePoseLinePointStereo'), 'cv.tripose.estimatePoseLinePointStereo is missing from the bindings')
         # The stereo kinds of the C++ bad-input catalogue: each breaks one thing in a valid rig
         # problem (point 1 seen by view 4 only, point 3 and line 2 by view 3 only) and must raise
         # cv.error naming the argument, through the three stereo functions.
@@ -812,8 +805,7 @@ class tripose_test(NewOpenCVTests):
         expect_error('unknown_method', 'method', dict(method=3), ('linear',))
 
     def test_multiview(self):
-        if not hasattr(cv.tripose, 'refinePosesMultiView'):
-            self.skipTest('the multi-view functions are not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'refinePosesMultiView'), 'cv.tripose.refinePosesMultiView is missing from the bindings')
         # Registration against four known views that each see a random subset of the features:
         # exact without noise (linear and refined), the inliers found among gross outliers.
         for seed in range(3):
@@ -844,8 +836,7 @@ class tripose_test(NewOpenCVTests):
             self.assertTrue(names_argument(str(e), 'Rs'), str(e))
 
     def test_multiview_several_poses(self):
-        if not hasattr(cv.tripose, 'refinePosesMultiView'):
-            self.skipTest('refinePosesMultiView is not in this build of the module')
+        self.assertTrue(hasattr(cv.tripose, 'refinePosesMultiView'), 'cv.tripose.refinePosesMultiView is missing from the bindings')
         # Views 0 and 1 fixed, the other known views and the new one moved off: the joint refinement
         # returns every pose exactly; the fixed ones come back as given.
         scene = make_multiview_scene(4, 20, 20, 11)

@@ -28,8 +28,8 @@ namespace {
 // 1e-13 of the extent; image noise of a tenth of a pixel at the paper's geometry leaves about 1e-4.
 constexpr double kPlanarTolerance = 1e-6;
 // Relative thickness below which noisy data may come from planar structure, whose kernel the general
-// combinations misread: 1 px of noise leaves 1e-2 to 6e-2 on the evaluation's planar scenes (large
-// motion, after trimming), while structure in general position is near 1.
+// combinations misread: pixel-level noise on planar scenes leaves a few hundredths (large motion,
+// after trimming; doc/accuracy.md), while structure in general position is near 1.
 constexpr double kNearPlanarTolerance = 0.1;
 // Rounds of trimming the positions far from the plane before judging near-planarity, and the
 // relative thickness of all positions above which no trimming is tried (general structure).

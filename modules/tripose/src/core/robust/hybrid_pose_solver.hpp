@@ -15,7 +15,7 @@ view 3 on the structure that the PoseScorer triangulated from views 1-2 where th
 good, the unified linear method's four-feature samples otherwise.
 
 With the points of views 1-2 triangulated, three points of view 3 are a P3P problem (solveP3P):
-a sample of three instead of four features, and a solver about ten times cheaper than the linear
+a sample of three instead of four features, and a closed-form solver far cheaper than the linear
 one's degree-11 polynomial. Samples are then drawn from the points alone (samplePool()), so the
 stopping rule counts point inliers. Lines still vote in every score, and the local optimisation
 and estimateNonMinimal() use the linear solver on every inlier, points and lines, so the final
