@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -154,22 +153,6 @@ std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, c
     return png;
 }
 
-void writeFileAtomically(const std::string& path, const std::vector<uchar>& bytes)
-{
-    const std::string temporary = tripose_samples::temporaryNameFor(path);
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()), (std::streamsize)bytes.size());
-        if (!out)
-        {
-            out.close();
-            std::remove(temporary.c_str());
-            throw std::runtime_error("cannot write " + path);
-        }
-    }
-    tripose_samples::commitAtomicWrite(temporary, path);
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -292,7 +275,7 @@ int main(int argc, char** argv)
         {
             const std::string title = cv::format("%s: window %d, %s, drift %.2f %% of the path", options.data.c_str(),
                                                  options.track.window, options.method.c_str(), drift);
-            writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
+            tripose_samples::writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
         }
     }
     catch (const std::exception& e)

@@ -44,6 +44,14 @@ Problem readProblem(const std::string& path);
 //! The same from text in memory (used by the fuzzer).
 Problem readProblemFromString(const std::string& text);
 
+/** Writes the keys of a three-view problem (K or K1..K3, dist or dist1..dist3 when given, R12, t12,
+points1..points3 and lines1..lines3, a kind left out when it has no rows), as readProblem() reads them.
+*/
+void writeProblem(cv::FileStorage& fs, const Problem& problem);
+
+//! An inlier mask of the robust estimators as an Nx1 CV_32S column (0x1 when empty), as the result files hold it.
+cv::Mat inlierColumn(const cv::Mat& mask);
+
 /** The problem key behind the argument a solver message names, as " (key 'K2')", or "" when it names
 none: the solver speaks of cameraMatrix[1] and distCoeffs, the file of K2 and dist.
 */
@@ -55,6 +63,9 @@ template <typename Writer>
 void writeAtomically(const std::string& path, Writer write);
 
 void commitAtomicWrite(const std::string& temporary, const std::string& path);
+
+//! Writes @p bytes (an encoded image, ...) to @p path atomically, as writeAtomically().
+void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes);
 std::string temporaryNameFor(const std::string& path);
 
 template <typename Writer>
