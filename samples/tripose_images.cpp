@@ -41,7 +41,8 @@ const char* kUsage =
     "              K or K1..K3, [dist or dist1..dist3], R12, t12 (view 2's pose; view 1 is the world frame)\n"
     "  --images    the three images, views 1, 2 and 3\n"
     "  --output    result: num_solutions, R, t, num_inliers, point_inliers, line_inliers,\n"
-    "              num_point_tracks, num_segment_triplets, times, and the matched features as a problem\n"
+    "              num_point_tracks, num_segment_triplets, ms_* (time per stage), and the matched features\n"
+    "              as a problem\n"
     "              (K.., R12, t12, points1..3, lines1..3; undistorted pixels, so no dist)\n"
     "  --overlay   the third image with the inlier features (red) and the structure of views 1-2\n"
     "              reprojected by the estimate (green)\n"
@@ -266,9 +267,10 @@ int main(int argc, char** argv)
     if (solutions == 0)
         std::cerr << "tripose_images: no pose found from " << tracks << " point tracks and " << segments
                   << " segment triplets\n";
-    std::cout << cv::format("tripose_images: %d inliers; ms: detection %.1f, description %.1f, matching %.1f, "
-                            "estimation %.1f\n",
-                            inliers, times.detection, times.description, times.matching, times.estimation);
+    std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (LSD) %.1f, "
+                            "segment description (LBD) %.1f, matching %.1f, estimation %.1f, total %.1f\n",
+                            inliers, times.points, times.segmentDetection, times.segmentDescription, times.matching,
+                            times.estimation, times.total());
 
     try
     {
@@ -279,8 +281,9 @@ int main(int argc, char** argv)
             fs << "num_inliers" << inliers << "point_inliers" << inlierColumn(pointInliers) << "line_inliers"
                << inlierColumn(lineInliers);
             fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
-            fs << "ms_detection" << times.detection << "ms_description" << times.description << "ms_matching"
-               << times.matching << "ms_estimation" << times.estimation;
+            fs << "ms_points" << times.points << "ms_segment_detection" << times.segmentDetection
+               << "ms_segment_description" << times.segmentDescription << "ms_matching" << times.matching
+               << "ms_estimation" << times.estimation;
             fs << "images" << "[:" << options.images[0] << options.images[1] << options.images[2] << "]";
             writeProblem(fs, matched);
         });

@@ -58,12 +58,9 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
     {
         const cv::Ptr<cv::SIFT> sift = cv::SIFT::create(options.maxPoints);
         std::vector<cv::KeyPoint> keypoints;
-        int64 start = cv::getTickCount();
-        sift->detect(grey, keypoints);
-        times.detection += millisecondsSince(start);
-        start = cv::getTickCount();
-        sift->compute(grey, keypoints, out.pointDescriptors);
-        times.description += millisecondsSince(start);
+        const int64 start = cv::getTickCount();
+        sift->detectAndCompute(grey, cv::noArray(), keypoints, out.pointDescriptors);
+        times.points += millisecondsSince(start);
         cv::Mat positions((int)keypoints.size(), 2, CV_64F);
         for (size_t i = 0; i < keypoints.size(); ++i)
         {
@@ -87,11 +84,11 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
                 kept.push_back(k);
                 kept.back().class_id = (int)kept.size() - 1;
             }
-        times.detection += millisecondsSince(start);
+        times.segmentDetection += millisecondsSince(start);
         start = cv::getTickCount();
         if (!kept.empty())
             BinaryDescriptor::createBinaryDescriptor()->compute(grey, kept, out.lineDescriptors);
-        times.description += millisecondsSince(start);
+        times.segmentDescription += millisecondsSince(start);
         // LBD keeps one descriptor per segment, in order: the rows below pair with them.
         CV_Assert(out.lineDescriptors.rows == (int)kept.size());
         if (kept.empty())
