@@ -176,12 +176,8 @@ int main(int argc, char** argv)
                 fs << "R" << R << "t" << t;
             if (robust)
             {
-                // Masks as Nx1 integer matrices (0x1 when there are no features of that kind).
-                cv::Mat p = pointInliers.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(pointInliers.reshape(1, (int)pointInliers.total()));
-                cv::Mat l = lineInliers.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(lineInliers.reshape(1, (int)lineInliers.total()));
-                p.convertTo(p, CV_32S);
-                l.convertTo(l, CV_32S);
-                fs << "num_inliers" << inliers << "point_inliers" << p << "line_inliers" << l;
+                fs << "num_inliers" << inliers << "point_inliers" << tripose_samples::inlierColumn(pointInliers)
+                   << "line_inliers" << tripose_samples::inlierColumn(lineInliers);
             }
         });
     }

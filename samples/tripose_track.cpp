@@ -6,14 +6,15 @@
 // 1 take their poses from the sequence (they fix the world frame and the scale); every later frame
 // is registered against the frames of a sliding window that see its features, points and lines
 // together (cv::tripose::estimatePoseMultiViewRansac). Writes the poses, prints per-frame errors
-// against the sequence's cameras and, with --plot, draws both trajectories seen from above.
+// against the sequence's cameras and, with --plot, draws both trajectories seen from above. With
+// --from-images the correspondences come from the folder's images (one per camera, in name order)
+// through the image front end instead of the sequence's files.
 //
 //   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
-//                 [--method ransac|linear] [--threshold px] [--seed n]
+//                 [--method ransac|linear] [--threshold px] [--seed n] [--from-images]
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -26,6 +27,10 @@
 #include "arguments.hpp"
 #include "problem_io.hpp"
 #include "sequence_tracking.hpp"
+#if TRIPOSE_HAVE_IMAGE_FRONT_END
+#include "image_input.hpp"
+#include "image_sequence.hpp"
+#endif
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 
@@ -33,13 +38,15 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
-    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1]\n"
+    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
     "  --local-refine 1: after each registration, refine the window's registered frames, the new one and\n"
     "                 the structure together against the earlier frames (a local bundle adjustment;\n"
     "                 default 0: off)\n"
+    "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
+    "                 name order; SIFT, LSD + LBD) instead of the sequence's correspondences\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
     "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
@@ -47,6 +54,7 @@ const char* kUsage =
 struct Options
 {
     std::string data, output, plot, method = "ransac";
+    bool fromImages = false;
     tripose_samples::TrackOptions track;
 };
 
@@ -56,11 +64,13 @@ Options parseArguments(int argc, char** argv)
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
                                              "--local-refine" };
-    for (const auto& option : optionPairs(argc, argv, kUsage, known))
+    for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
-        if (arg == "--data")
+        if (arg == "--from-images")
+            o.fromImages = true;
+        else if (arg == "--data")
             o.data = value;
         else if (arg == "--output")
             o.output = value;
@@ -154,20 +164,39 @@ std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, c
     return png;
 }
 
-void writeFileAtomically(const std::string& path, const std::vector<uchar>& bytes)
+/** The sequence's observations found in the images of @p folder (one per camera, in name order).
+Throws std::runtime_error naming the folder or image when they do not fit the sequence. */
+tripose_samples::SequenceObservations observationsFromFolderImages(const std::string& folder,
+                                                                   const cv::tripose::support::VggSequence& sequence)
 {
-    const std::string temporary = tripose_samples::temporaryNameFor(path);
+#if TRIPOSE_HAVE_IMAGE_FRONT_END
+    using namespace tripose_samples;
+    const std::vector<std::string> files = imageFilesIn(folder);
+    if (files.size() != sequence.Rs.size())
+        throw std::runtime_error(cv::format("argument --from-images: %s holds %zu images for %zu cameras", folder.c_str(),
+                                            files.size(), sequence.Rs.size()));
+    std::vector<cv::Mat> images;
+    for (size_t k = 0; k < files.size(); ++k)
     {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()), (std::streamsize)bytes.size());
-        if (!out)
-        {
-            out.close();
-            std::remove(temporary.c_str());
-            throw std::runtime_error("cannot write " + path);
-        }
+        images.push_back(readImage(files[k]));
+        checkImageFitsCalibration(images.back(), files[k], cv::Matx33d(sequence.cameraMatrices[k]),
+                                  "camera " + std::to_string(k));
     }
-    tripose_samples::commitAtomicWrite(temporary, path);
+    StageTimes times;
+    SequenceObservations observations =
+        observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
+                               sequence.ts[1], FeatureOptions(), MatchOptions(), times);
+    std::cout << cv::format("Front end on %zu images: %d point tracks, %d segment tracks; ms: points (SIFT) %.0f, "
+                            "segment detection (LSD) %.0f, segment description (LBD) %.0f, matching %.0f\n",
+                            files.size(), observations.points[0].rows, observations.lines[0].rows, times.points,
+                            times.segmentDetection, times.segmentDescription, times.matching);
+    return observations;
+#else
+    (void)folder;
+    (void)sequence;
+    throw std::runtime_error("argument --from-images: this build has no image front end (it needs OpenCV's "
+                             "features2d and contrib's line_descriptor)");
+#endif
 }
 
 } // namespace
@@ -200,13 +229,28 @@ int main(int argc, char** argv)
     }
 
     tripose_samples::SequenceObservations observations;
-    observations.cameraMatrices = sequence.cameraMatrices;
-    observations.points = sequence.points;
-    observations.lines = sequence.lines;
-    observations.R0 = sequence.Rs[0];
-    observations.t0 = sequence.ts[0];
-    observations.R1 = sequence.Rs[1];
-    observations.t1 = sequence.ts[1];
+    if (options.fromImages)
+    {
+        try
+        {
+            observations = observationsFromFolderImages(options.data, sequence);
+        }
+        catch (const std::exception& e)
+        {
+            std::cerr << "tripose_track: " << e.what() << "\n";
+            return 1;
+        }
+    }
+    else
+    {
+        observations.cameraMatrices = sequence.cameraMatrices;
+        observations.points = sequence.points;
+        observations.lines = sequence.lines;
+        observations.R0 = sequence.Rs[0];
+        observations.t0 = sequence.ts[0];
+        observations.R1 = sequence.Rs[1];
+        observations.t1 = sequence.ts[1];
+    }
     std::vector<tripose_samples::TrackedFrame> frames;
     try
     {
@@ -281,7 +325,8 @@ int main(int argc, char** argv)
     try
     {
         tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
-            fs << "sequence" << options.data << "window" << options.track.window << "method" << options.method
+            fs << "sequence" << options.data << "correspondences" << (options.fromImages ? "images" : "sequence")
+               << "window" << options.track.window << "method" << options.method
                << "local_refine" << (options.track.localAdjustment ? 1 : 0);
             fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
             fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
@@ -292,7 +337,7 @@ int main(int argc, char** argv)
         {
             const std::string title = cv::format("%s: window %d, %s, drift %.2f %% of the path", options.data.c_str(),
                                                  options.track.window, options.method.c_str(), drift);
-            writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
+            tripose_samples::writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
         }
     }
     catch (const std::exception& e)

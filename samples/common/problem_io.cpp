@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -703,6 +704,34 @@ std::string problemKeyNamedBy(const std::string& solverMessage)
     return key ? std::string(" (key '") + key + "')" : std::string();
 }
 
+void writeProblem(cv::FileStorage& fs, const Problem& problem)
+{
+    CV_Assert(!problem.stereo);
+    const auto writeShared = [&](const std::string& key, const std::vector<cv::Mat>& perView) {
+        if (perView.size() == 1)
+            fs << key << perView[0];
+        else
+            for (size_t v = 0; v < perView.size(); ++v)
+                fs << key + std::to_string(v + 1) << perView[v];
+    };
+    writeShared("K", problem.K);
+    writeShared("dist", problem.dist);
+    fs << "R12" << problem.R12 << "t12" << problem.t12;
+    for (int v = 0; v < 3; ++v)
+        if (problem.points[0].rows > 0)
+            fs << "points" + std::to_string(v + 1) << problem.points[v];
+    for (int v = 0; v < 3; ++v)
+        if (problem.lines[0].rows > 0)
+            fs << "lines" + std::to_string(v + 1) << problem.lines[v];
+}
+
+cv::Mat inlierColumn(const cv::Mat& mask)
+{
+    cv::Mat column = mask.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(mask.reshape(1, (int)mask.total()));
+    column.convertTo(column, CV_32S);
+    return column;
+}
+
 std::string temporaryNameFor(const std::string& path)
 {
     // Keep the extension: FileStorage picks YAML or JSON from it.
@@ -720,6 +749,22 @@ void commitAtomicWrite(const std::string& temporary, const std::string& path)
         std::remove(temporary.c_str());
         throw std::runtime_error("cannot write " + path);
     }
+}
+
+void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes)
+{
+    const std::string temporary = temporaryNameFor(path);
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()), (std::streamsize)bytes.size());
+        if (!out)
+        {
+            out.close();
+            std::remove(temporary.c_str());
+            throw std::runtime_error("cannot write " + path);
+        }
+    }
+    commitAtomicWrite(temporary, path);
 }
 
 } // namespace tripose_samples

@@ -61,6 +61,14 @@ key the message lists the valid ones.
 void checkKeys(const std::vector<std::string>& keys, const std::vector<std::string>& valid, const std::string& file,
                const std::string& parent = "");
 
+/** Writes the keys of a three-view problem (K or K1..K3, dist or dist1..dist3 when given, R12, t12,
+points1..points3 and lines1..lines3, a kind left out when it has no rows), as readProblem() reads them.
+*/
+void writeProblem(cv::FileStorage& fs, const Problem& problem);
+
+//! An inlier mask of the robust estimators as an Nx1 CV_32S column (0x1 when empty), as the result files hold it.
+cv::Mat inlierColumn(const cv::Mat& mask);
+
 /** The problem key behind the argument a solver message names, as " (key 'K2')", or "" when it names
 none: the solver speaks of cameraMatrix[1] and distCoeffs, the file of K2 and dist.
 */
@@ -72,6 +80,9 @@ template <typename Writer>
 void writeAtomically(const std::string& path, Writer write);
 
 void commitAtomicWrite(const std::string& temporary, const std::string& path);
+
+//! Writes @p bytes (an encoded image, ...) to @p path atomically, as writeAtomically().
+void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes);
 std::string temporaryNameFor(const std::string& path);
 
 template <typename Writer>

@@ -1,0 +1,57 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Matching the features of two images (image_features.hpp): with the two views' relative pose known
+// (epipolar constraint, then descriptors) or by descriptor alone. Every match is mutual: each
+// feature is the other's best candidate, and the best is clearly better than the second (ratio test).
+#ifndef TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
+#define TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
+
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "image_features.hpp"
+
+namespace tripose_samples {
+
+//! (row in the first image's features, row in the second's).
+using Matches = std::vector<std::pair<int, int>>;
+
+struct MatchOptions
+{
+    //! A point pair is a candidate when each point lies within this distance (px) of the other's epipolar line.
+    double epipolarDistance = 2.0;
+    //! A segment pair is a candidate when the second segment covers at least this fraction of the
+    //! shorter of itself and the band between the epipolar lines of the first's end points.
+    double minBandOverlap = 0.5;
+    //! Segments within this angle (deg) of the epipolar lines cross the band at no defined place
+    //! (and have no depth from the two views): they are not matched with the pose.
+    double minEpipolarAngleDeg = 5.0;
+    double pointRatio = 0.8;   //!< SIFT: best L2 distance below this fraction of the second best.
+    double lineRatio = 0.8;    //!< LBD: best Hamming distance below this fraction of the second best.
+    int maxLineDistance = 80;  //!< LBD: Hamming distance (of 256 bits) above which segments never match.
+};
+
+/** Points of views a and b under the known epipolar geometry @p F (x_b^T F x_a = 0): candidates within
+MatchOptions::epipolarDistance of the epipolar lines both ways, then mutual best SIFT descriptor
+with the ratio test among the candidates. */
+Matches matchPointsEpipolar(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
+                            const MatchOptions& options);
+
+/** Segments of views a and b under @p F: candidates overlap the band between the epipolar lines of
+the other's end points (MatchOptions::minBandOverlap), then mutual best LBD descriptor with the
+ratio test among the candidates. */
+Matches matchSegmentsEpipolar(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
+                              const MatchOptions& options);
+
+/** Rows of @p descriptorsA and @p descriptorsB (CV_32F: L2, CV_8U: Hamming), mutual best with the
+ratio test @p ratio over all rows of B, and (Hamming) at most @p maxDistance. */
+Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptorsB, double ratio,
+                          double maxDistance);
+
+} // namespace tripose_samples
+
+#endif // TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP

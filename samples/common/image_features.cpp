@@ -1,0 +1,109 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "image_features.hpp"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/line_descriptor.hpp>
+
+namespace tripose_samples {
+
+namespace {
+
+double millisecondsSince(int64 start)
+{
+    return 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
+}
+
+//! Positions (Nx2 CV_64F) moved to the ideal pinhole image of K.
+cv::Mat undistorted(const cv::Mat& positions, const cv::Matx33d& K, const cv::Mat& distCoeffs)
+{
+    if (distCoeffs.empty() || positions.rows == 0)
+        return positions;
+    cv::Mat moved;
+    cv::undistortPoints(positions.reshape(2), moved, cv::Mat(K), distCoeffs, cv::noArray(), cv::Mat(K));
+    return moved.reshape(1, positions.rows);
+}
+
+} // namespace
+
+bool parseFeatureKinds(const std::string& word, FeatureKinds& kinds)
+{
+    if (word == "points")
+        kinds = FEATURES_POINTS;
+    else if (word == "lines")
+        kinds = FEATURES_LINES;
+    else if (word == "all")
+        kinds = FEATURES_ALL;
+    else
+        return false;
+    return true;
+}
+
+ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const cv::Mat& distCoeffs,
+                              const FeatureOptions& options, StageTimes& times)
+{
+    CV_Assert(image.depth() == CV_8U && !image.empty());
+    cv::Mat grey = image;
+    if (image.channels() != 1)
+        cv::cvtColor(image, grey, image.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+
+    ImageFeatures out;
+    out.points = cv::Mat(0, 2, CV_64F);
+    out.segments = cv::Mat(0, 4, CV_64F);
+    if (options.kinds & FEATURES_POINTS)
+    {
+        const cv::Ptr<cv::SIFT> sift = cv::SIFT::create(options.maxPoints);
+        std::vector<cv::KeyPoint> keypoints;
+        const int64 start = cv::getTickCount();
+        sift->detectAndCompute(grey, cv::noArray(), keypoints, out.pointDescriptors);
+        times.points += millisecondsSince(start);
+        cv::Mat positions((int)keypoints.size(), 2, CV_64F);
+        for (size_t i = 0; i < keypoints.size(); ++i)
+        {
+            positions.at<double>((int)i, 0) = keypoints[i].pt.x;
+            positions.at<double>((int)i, 1) = keypoints[i].pt.y;
+        }
+        out.points = undistorted(positions, K, distCoeffs);
+    }
+    if (options.kinds & FEATURES_LINES)
+    {
+        using namespace cv::line_descriptor;
+        std::vector<KeyLine> keylines;
+        int64 start = cv::getTickCount();
+        // One octave: LBD is computed at the scale the segment was found, and a single scale keeps the
+        // end points at full resolution.
+        LSDDetector::createLSDDetector()->detect(grey, keylines, 2, 1);
+        std::vector<KeyLine> kept;
+        for (const KeyLine& k : keylines)
+            if (k.lineLength >= options.minSegmentLength)
+            {
+                kept.push_back(k);
+                kept.back().class_id = (int)kept.size() - 1;
+            }
+        times.segmentDetection += millisecondsSince(start);
+        start = cv::getTickCount();
+        if (!kept.empty())
+            BinaryDescriptor::createBinaryDescriptor()->compute(grey, kept, out.lineDescriptors);
+        times.segmentDescription += millisecondsSince(start);
+        // LBD keeps one descriptor per segment, in order: the rows below pair with them.
+        CV_Assert(out.lineDescriptors.rows == (int)kept.size());
+        if (kept.empty())
+            return out;
+        cv::Mat ends((int)kept.size() * 2, 2, CV_64F);
+        for (size_t i = 0; i < kept.size(); ++i)
+        {
+            ends.at<double>(2 * (int)i, 0) = kept[i].startPointX;
+            ends.at<double>(2 * (int)i, 1) = kept[i].startPointY;
+            ends.at<double>(2 * (int)i + 1, 0) = kept[i].endPointX;
+            ends.at<double>(2 * (int)i + 1, 1) = kept[i].endPointY;
+        }
+        out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)kept.size()).clone();
+    }
+    return out;
+}
+
+} // namespace tripose_samples

@@ -1,0 +1,64 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// Points and line segments of one image, detected and described for matching: SIFT key points
+// (features2d) and LSD segments with LBD descriptors (contrib line_descriptor).
+#ifndef TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP
+#define TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace tripose_samples {
+
+//! Which kinds of feature an image front end extracts.
+enum FeatureKinds
+{
+    FEATURES_POINTS = 1,
+    FEATURES_LINES = 2,
+    FEATURES_ALL = FEATURES_POINTS | FEATURES_LINES,
+};
+
+//! "points", "lines" or "all" as FeatureKinds; false for any other word.
+bool parseFeatureKinds(const std::string& word, FeatureKinds& kinds);
+
+//! The features of one image. Coordinates are those of an ideal pinhole camera with the image's K:
+//! undistorted when distortion coefficients were given.
+struct ImageFeatures
+{
+    cv::Mat points;           //!< Nx2 CV_64F key point positions (px).
+    cv::Mat pointDescriptors; //!< NxD CV_32F SIFT descriptors.
+    cv::Mat segments;         //!< Mx4 CV_64F segments x0 y0 x1 y1 (px).
+    cv::Mat lineDescriptors;  //!< Mx32 CV_8U LBD descriptors.
+};
+
+//! Milliseconds spent per stage (summed over the images of a run).
+struct StageTimes
+{
+    //! SIFT detects and describes in one pass over one scale space: apart, the two passes cost about
+    //! 30 % more, so points have one figure.
+    double points = 0;
+    double segmentDetection = 0, segmentDescription = 0; //!< LSD, LBD.
+    double matching = 0, estimation = 0;
+    double total() const { return points + segmentDetection + segmentDescription + matching + estimation; }
+};
+
+struct FeatureOptions
+{
+    FeatureKinds kinds = FEATURES_ALL;
+    int maxPoints = 4000;            //!< The strongest SIFT key points kept (0: all).
+    double minSegmentLength = 20;    //!< Shorter LSD segments are dropped (px): they are too short to give a direction.
+};
+
+/** Detects and describes the features of a grey or colour 8-bit image (converted to grey). With
+non-empty @p distCoeffs, positions are undistorted with @p K (cv::undistortPoints, new camera K).
+Adds the time of each stage to @p times.
+*/
+ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const cv::Mat& distCoeffs,
+                              const FeatureOptions& options, StageTimes& times);
+
+} // namespace tripose_samples
+
+#endif // TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP

@@ -1,0 +1,294 @@
+#!/usr/bin/env python3
+"""The pose of a third camera from three images, in Python: the steps of the C++ sample
+tripose_images with OpenCV's Python bindings (opencv-contrib-python: SIFT, LSD and LBD of
+line_descriptor), the estimate from the tripose package.
+
+    pose_from_images.py --calib calib.yml --images a.png b.png c.png --output result.yml
+                        [--features points|lines|all] [--threshold px] [--problem-only]
+
+calib.yml holds the calibration keys of a problem file: K or K1..K3, optional dist or
+dist1..dist3, R12, t12 (view 2's pose; view 1 is the world frame). The result holds R, t,
+num_inliers, point_inliers, line_inliers, rms, the numbers of point tracks and segment triplets,
+and the matched features as a problem (K.., R12, t12, points1..3, lines1..3, in undistorted
+pixels). With --problem-only the matched problem is written without an estimate (the tripose
+package is then not needed; tripose_estimate solves the file).
+
+Exit status: 0 on success, 1 on bad input (the message names the file, key or argument), 2 when the
+tripose package is missing.
+"""
+import argparse
+import sys
+from pathlib import Path
+
+import cv2
+import numpy as np
+
+MIN_FEATURES = 4  # the estimators need four features
+
+
+class InputError(Exception):
+    pass
+
+
+# --- input ---------------------------------------------------------------------------------------
+
+def read_calibration(path):
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ) if Path(path).is_file() else None
+    if fs is None or not fs.isOpened():
+        raise InputError(f"calibration {path}: cannot be read")
+
+    def matrix(key):
+        node = fs.getNode(key)
+        return None if node.empty() else node.mat()
+
+    def per_view(key, required):
+        shared = matrix(key)
+        views = [matrix(f"{key}{v}") for v in (1, 2, 3)]
+        if shared is not None:
+            return [shared] * 3
+        if all(m is not None for m in views):
+            return views
+        if any(m is not None for m in views):
+            missing = next(v for v, m in enumerate(views, 1) if m is None)
+            raise InputError(f"calibration {path}: key '{key}{missing}': missing")
+        if required:
+            raise InputError(f"calibration {path}: key '{key}': missing (give {key} or {key}1..{key}3)")
+        return None
+
+    calib = {"K": per_view("K", True), "dist": per_view("dist", False)}
+    for key, size in (("R12", (9, 3)), ("t12", (3,))):
+        m = matrix(key)
+        if m is None or m.size not in size:
+            raise InputError(f"calibration {path}: key '{key}': " + ("missing" if m is None else "wrong size"))
+        calib[key] = m
+    if calib["R12"].size == 3:
+        calib["R12"] = cv2.Rodrigues(calib["R12"])[0]
+    calib["t12"] = calib["t12"].reshape(3, 1)
+    fs.release()
+    return calib
+
+
+def read_image(path, K, key):
+    if not Path(path).is_file():
+        raise InputError(f"image {path}: no such file")
+    image = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
+    if image is None:
+        raise InputError(f"image {path}: cannot be decoded")
+    if image.min() == image.max():
+        raise InputError(f"image {path}: blank")
+    # The principal point of real cameras lies near the image centre; an image scaled against its
+    # calibration moves it a quarter of the image or more away.
+    h, w = image.shape
+    cx, cy = K[0, 2] / K[2, 2], K[1, 2] / K[2, 2]
+    if abs(cx - w / 2) > 0.2 * w or abs(cy - h / 2) > 0.2 * h:
+        raise InputError(f"image {path} is {w}x{h} but the principal point of {key} is ({cx:.1f}, {cy:.1f}): "
+                         "the calibration is for another image size")
+    return image
+
+
+# --- features ------------------------------------------------------------------------------------
+
+def undistort(xy, K, dist):
+    if dist is None or len(xy) == 0:
+        return xy
+    return cv2.undistortPoints(xy.reshape(-1, 1, 2), K, dist, P=K).reshape(-1, 2)
+
+
+def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
+    out = {"points": np.zeros((0, 2)), "point_desc": np.zeros((0, 128), np.float32),
+           "segments": np.zeros((0, 4)), "line_desc": np.zeros((0, 32), np.uint8)}
+    if kinds in ("points", "all"):
+        keypoints, desc = cv2.SIFT_create(max_points).detectAndCompute(image, None)
+        if keypoints:
+            out["points"] = undistort(np.array([k.pt for k in keypoints], np.float64), K, dist)
+            out["point_desc"] = desc
+    if kinds in ("lines", "all"):
+        keylines = cv2.line_descriptor.LSDDetector.createLSDDetector().detect(image, 2, 1)
+        keylines = [k for k in keylines if k.lineLength >= min_segment]
+        for i, k in enumerate(keylines):
+            k.class_id = i
+        if keylines:
+            keylines, desc = cv2.line_descriptor.BinaryDescriptor.createBinaryDescriptor().compute(image, keylines)
+            ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in keylines], np.float64)
+            out["segments"] = undistort(ends.reshape(-1, 2), K, dist).reshape(-1, 4)
+            out["line_desc"] = desc
+    return out
+
+
+# --- matching ------------------------------------------------------------------------------------
+
+def mutual_best(distance, ratio):
+    """(row, column) pairs of a distance matrix (inf: not a candidate): each the other's best, and the
+    best below `ratio` times the row's second best (a lone candidate passes)."""
+    if distance.size == 0:
+        return np.zeros((0, 2), int)
+    order = np.argsort(distance, axis=1)
+    rows = np.arange(distance.shape[0])
+    best = order[:, 0]
+    best_d = distance[rows, best]
+    second_d = distance[rows, order[:, 1]] if distance.shape[1] > 1 else np.full(len(rows), np.inf)
+    mutual = np.argmin(distance, axis=0)[best] == rows
+    keep = np.isfinite(best_d) & mutual & (~np.isfinite(second_d) | (best_d < ratio * second_d))
+    return np.stack([rows[keep], best[keep]], axis=1)
+
+
+POPCOUNT = np.array([bin(i).count("1") for i in range(256)], np.uint8)
+
+
+def descriptor_distances(a, b):
+    """Hamming distances of binary (uint8) descriptors, else L2; float32, rows of a by rows of b."""
+    if a.dtype == np.uint8:
+        return POPCOUNT[a[:, None, :] ^ b[None, :, :]].sum(axis=2, dtype=np.int32).astype(np.float32)
+    a, b = a.astype(np.float32), b.astype(np.float32)
+    d2 = (a * a).sum(1)[:, None] + (b * b).sum(1)[None, :] - 2.0 * a @ b.T
+    return np.sqrt(np.maximum(d2, 0.0))
+
+
+def fundamental(K1, K2, R12, t12):
+    t = t12.ravel()
+    tx = np.array([[0, -t[2], t[1]], [t[2], 0, -t[0]], [-t[1], t[0], 0]])
+    return np.linalg.inv(K2).T @ tx @ R12 @ np.linalg.inv(K1)
+
+
+def homogeneous(xy):
+    return np.hstack([xy, np.ones((len(xy), 1))])
+
+
+def normalised_lines(lines):
+    return lines / np.maximum(np.hypot(lines[:, :1], lines[:, 1:2]), 1e-300)
+
+
+def match_points_epipolar(a, b, F, max_distance=2.0, ratio=0.8):
+    xa, xb = homogeneous(a["points"]), homogeneous(b["points"])
+    in_b = normalised_lines(xa @ F.T)   # epipolar lines of a's points in image b
+    in_a = normalised_lines(xb @ F)     # and of b's points in image a
+    distance = np.full((len(xa), len(xb)), np.inf, np.float32)
+    for start in range(0, len(xa), 512):  # in blocks: a full float64 matrix of 4000 x 4000 is 128 MB
+        rows = slice(start, start + 512)
+        near = (np.abs(in_b[rows] @ xb.T) <= max_distance) & (np.abs(xa[rows] @ in_a.T) <= max_distance)
+        distance[rows] = np.where(near, descriptor_distances(a["point_desc"][rows], b["point_desc"]), np.inf)
+    return mutual_best(distance, ratio)
+
+
+def match_segments_epipolar(a, b, F, min_overlap=0.5, min_angle_deg=5.0, ratio=0.8, max_distance=80):
+    sa, sb = a["segments"], b["segments"]
+    if len(sa) == 0 or len(sb) == 0:
+        return np.zeros((0, 2), int)
+    la, lb = homogeneous(sa[:, :2]) @ F.T, homogeneous(sa[:, 2:]) @ F.T  # epipolar lines of a's end points
+    p, d = sb[:, :2], sb[:, 2:] - sb[:, :2]
+    length = np.hypot(d[:, 0], d[:, 1])
+    params = []
+    ok = np.ones((len(sa), len(sb)), bool)
+    for l in (la, lb):
+        across = l[:, :1] * d[None, :, 0] + l[:, 1:2] * d[None, :, 1]
+        normal = np.hypot(l[:, :1], l[:, 1:2])
+        # A segment near the epipolar direction crosses the band at no defined place.
+        ok &= np.abs(across) > np.sin(np.radians(min_angle_deg)) * normal * length[None, :]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            params.append(-(l[:, :1] * p[None, :, 0] + l[:, 1:2] * p[None, :, 1] + l[:, 2:3]) / across)
+    lo, hi = np.minimum(*params), np.maximum(*params)
+    overlap = np.minimum(hi, 1.0) - np.maximum(lo, 0.0)
+    ok &= (overlap > 0) & (overlap >= min_overlap * np.minimum(1.0, hi - lo))
+    desc = descriptor_distances(a["line_desc"], b["line_desc"])
+    distance = np.where(ok & (desc <= max_distance), desc, np.inf)
+    return mutual_best(distance, ratio)
+
+
+def match_by_descriptor(a, b, ratio=0.8, max_distance=np.inf):
+    if len(a) == 0 or len(b) == 0:
+        return np.zeros((0, 2), int)
+    distance = descriptor_distances(a, b)
+    return mutual_best(np.where(distance <= max_distance, distance, np.inf), ratio)
+
+
+def triplets(views, K, R12, t12):
+    """Views 1-2 under their pose, view 3 by view 2's descriptor: (points1..3, lines1..3)."""
+    F = fundamental(K[0], K[1], R12, t12)
+    out = {}
+    for kind, desc, pairs, extra in (
+            ("points", "point_desc", match_points_epipolar(views[0], views[1], F), {}),
+            ("segments", "line_desc", match_segments_epipolar(views[0], views[1], F), {"max_distance": 80})):
+        to3 = match_by_descriptor(views[1][desc][pairs[:, 1]], views[2][desc], **extra)
+        out[kind] = [views[0][kind][pairs[to3[:, 0], 0]], views[1][kind][pairs[to3[:, 0], 1]],
+                     views[2][kind][to3[:, 1]]]
+    return out["points"], out["segments"]
+
+
+# --- estimate ------------------------------------------------------------------------------------
+
+def estimate_pose(points, lines, K, R12, t12, threshold, seed):
+    """One call of the tripose package's robust estimator (RANSAC, then refinement)."""
+    import tripose
+    return tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
+                                                   K, R12, t12, threshold=threshold, refine=True, seed=seed)
+
+
+def write_result(path, calib, points, lines, pose):
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
+    if not fs.isOpened():
+        raise InputError(f"cannot write {path}")
+    if pose is not None:
+        found = pose["num_inliers"] > 0
+        fs.write("num_solutions", int(found))
+        if found:
+            fs.write("R", np.asarray(pose["R"], np.float64))
+            fs.write("t", np.asarray(pose["t"], np.float64).reshape(3, 1))
+            fs.write("rms", float(pose["rms"]))
+        fs.write("num_inliers", int(pose["num_inliers"]))
+        fs.write("point_inliers", np.asarray(pose["point_inliers"], np.int32).reshape(-1, 1))
+        fs.write("line_inliers", np.asarray(pose["line_inliers"], np.int32).reshape(-1, 1))
+    fs.write("num_point_tracks", len(points[0]))
+    fs.write("num_segment_triplets", len(lines[0]))
+    for v in range(3):
+        fs.write(f"K{v + 1}", calib["K"][v])
+    fs.write("R12", calib["R12"])
+    fs.write("t12", calib["t12"])
+    for kind, rows in (("points", points), ("lines", lines)):
+        if len(rows[0]):
+            for v in range(3):
+                fs.write(f"{kind}{v + 1}", np.ascontiguousarray(rows[v], np.float64))
+    fs.release()
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--calib", required=True)
+    parser.add_argument("--images", nargs=3, required=True)
+    parser.add_argument("--output", required=True)
+    parser.add_argument("--features", choices=("points", "lines", "all"), default="all")
+    parser.add_argument("--threshold", type=float, default=2.0)
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--problem-only", action="store_true",
+                        help="write the matched problem without an estimate")
+    args = parser.parse_args(argv)
+    if not args.threshold > 0:
+        parser.error("argument --threshold: expected a positive number of pixels")
+    try:
+        calib = read_calibration(args.calib)
+        keys = ["K"] * 3 if calib["K"][0] is calib["K"][1] else ["K1", "K2", "K3"]
+        images = [read_image(p, calib["K"][v], keys[v]) for v, p in enumerate(args.images)]
+        dist = calib["dist"] or [None] * 3
+        views = [extract(image, calib["K"][v], dist[v], args.features) for v, image in enumerate(images)]
+        points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"])
+        print(f"pose_from_images: {len(points[0])} point tracks, {len(lines[0])} segment triplets")
+        if len(points[0]) + len(lines[0]) < MIN_FEATURES:
+            raise InputError(f"too few features seen in all three images ({', '.join(args.images)}): "
+                             f"{len(points[0])} point tracks and {len(lines[0])} segment triplets")
+        pose = None
+        if not args.problem_only:
+            try:
+                pose = estimate_pose(points, lines, calib["K"], calib["R12"], calib["t12"], args.threshold, args.seed)
+            except ImportError:
+                print("pose_from_images: the tripose package is not installed (pip install tripose); "
+                      "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
+                return 2
+            print(f"pose_from_images: {pose['num_inliers']} inliers")
+        write_result(args.output, calib, points, lines, pose)
+    except InputError as e:
+        print(f"pose_from_images: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,306 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// tripose_images: the pose of view 3 straight from three images. Finds SIFT points and LSD segments
+// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 by
+// descriptor, and runs cv::tripose::estimatePoseLinePointRansac with refinement on the triplets.
+//
+//   tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml
+//                  [--overlay overlay.png] [--features points|lines|all] [--threshold px] [--seed n]
+//
+// The result holds what tripose_estimate --method ransac writes, the numbers of point tracks and
+// segment triplets, the time per stage, and the matched features as a problem file (K.., R12, t12,
+// points1..3, lines1..3), so that tripose_estimate runs on it again. Exit status: 0 on success (also
+// when no pose is found: num_solutions 0), 1 on bad arguments or input (the message names the file,
+// key or argument; no output is written), 2 when the solver rejects the input.
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/tripose.hpp>
+
+#include "arguments.hpp"
+#include "feature_triplets.hpp"
+#include "image_features.hpp"
+#include "image_input.hpp"
+#include "problem_io.hpp"
+#include "two_view_geometry.hpp"
+
+using namespace tripose_samples;
+
+namespace {
+
+const char* kUsage =
+    "usage: tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml\n"
+    "                      [--overlay overlay.png] [--features points|lines|all] [--threshold px] [--seed n]\n"
+    "  --calib     calibration (OpenCV FileStorage, YAML or JSON; the calibration keys of a problem file):\n"
+    "              K or K1..K3, [dist or dist1..dist3], R12, t12 (view 2's pose; view 1 is the world frame)\n"
+    "  --images    the three images, views 1, 2 and 3\n"
+    "  --output    result: num_solutions, R, t, num_inliers, point_inliers, line_inliers,\n"
+    "              num_point_tracks, num_segment_triplets, ms_* (time per stage), and the matched features\n"
+    "              as a problem\n"
+    "              (K.., R12, t12, points1..3, lines1..3; undistorted pixels, so no dist)\n"
+    "  --overlay   the third image with the inlier features (red) and the structure of views 1-2\n"
+    "              reprojected by the estimate (green)\n"
+    "  --features  points (SIFT), lines (LSD + LBD) or all (default)\n"
+    "  --threshold RANSAC inlier threshold in pixels (default 2)\n"
+    "  --seed      RANSAC sampler seed (default 0)\n";
+
+// The estimators need four features.
+const int kMinFeatures = 4;
+
+struct Options
+{
+    std::string calib, output, overlay;
+    std::vector<std::string> images;
+    FeatureOptions features;
+    cv::tripose::RansacParams ransac;
+};
+
+Options parseArguments(int argc, char** argv)
+{
+    // --images takes three values: set them aside, the rest are (option, value) pairs.
+    Options o;
+    std::vector<char*> rest = { argv[0] };
+    for (int i = 1; i < argc; ++i)
+    {
+        if (std::string(argv[i]) != "--images")
+        {
+            rest.push_back(argv[i]);
+            continue;
+        }
+        if (!o.images.empty())
+            throw argumentError("--images", "given twice");
+        while (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0)
+            o.images.push_back(argv[++i]);
+        if (o.images.size() != 3)
+            throw argumentError("--images", "expected three image files, got " + std::to_string(o.images.size()));
+    }
+    const std::vector<std::string> known = { "--calib", "--output", "--overlay", "--features", "--threshold", "--seed" };
+    for (const auto& option : optionPairs((int)rest.size(), rest.data(), kUsage, known))
+    {
+        const std::string& arg = option.first;
+        const std::string& value = option.second;
+        if (arg == "--calib")
+            o.calib = value;
+        else if (arg == "--output")
+            o.output = value;
+        else if (arg == "--overlay")
+            o.overlay = value;
+        else if (arg == "--features")
+        {
+            if (!parseFeatureKinds(value, o.features.kinds))
+                throw argumentError(arg, "expected points, lines or all, got '" + value + "'");
+        }
+        else if (arg == "--threshold")
+        {
+            o.ransac.threshold = parseNumber(arg, value);
+            if (!(o.ransac.threshold > 0))
+                throw argumentError(arg, "expected a positive number of pixels, got '" + value + "'");
+        }
+        else // --seed
+            o.ransac.seed = parseInteger(arg, value, -2147483647.0);
+    }
+    if (o.calib.empty())
+        throw std::runtime_error("argument --calib is required");
+    if (o.images.empty())
+        throw std::runtime_error("argument --images is required");
+    if (o.output.empty())
+        throw std::runtime_error("argument --output is required");
+    o.ransac.refine = true;
+    return o;
+}
+
+//! The calibration keys of a problem file; errors name the file.
+Problem readCalibration(const std::string& path)
+{
+    Problem calibration;
+    try
+    {
+        calibration = readProblem(path);
+    }
+    catch (const std::exception& e)
+    {
+        throw std::runtime_error("calibration " + path + ": " + e.what());
+    }
+    if (calibration.stereo)
+        throw std::runtime_error("calibration " + path + ": holds a stereo rig (points4/lines4); three views expected");
+    return calibration;
+}
+
+cv::Matx33d cameraMatrixOf(const Problem& p, int view)
+{
+    return cv::Matx33d(p.K[p.K.size() == 1 ? 0 : view]);
+}
+
+cv::Mat distortionOf(const Problem& p, int view)
+{
+    return p.dist.empty() ? cv::Mat() : p.dist[p.dist.size() == 1 ? 0 : view];
+}
+
+std::string cameraKey(const Problem& p, int view)
+{
+    return p.K.size() == 1 ? "K" : "K" + std::to_string(view + 1);
+}
+
+/** The third image with the inlier observations (red) and, in green, the points and segments of views
+1-2 triangulated with the known pose and projected by the estimated one. */
+cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat& R, const cv::Mat& t,
+                    const cv::Mat& pointInliers, const cv::Mat& lineInliers)
+{
+    cv::Mat canvas;
+    if (image.channels() == 1)
+        cv::cvtColor(image, canvas, cv::COLOR_GRAY2BGR);
+    else if (image.channels() == 4)
+        cv::cvtColor(image, canvas, cv::COLOR_BGRA2BGR);
+    else
+        canvas = image.clone();
+    const cv::Scalar red(40, 40, 230), green(40, 200, 40);
+    const cv::Matx34d P1 = projectionMatrix(cameraMatrixOf(matched, 0), cv::Matx33d::eye(), cv::Vec3d());
+    const cv::Matx34d P2 = projectionMatrix(cameraMatrixOf(matched, 1), cv::Matx33d(matched.R12), cv::Vec3d(matched.t12));
+    const cv::Matx34d P3 = projectionMatrix(cameraMatrixOf(matched, 2), cv::Matx33d(R), cv::Vec3d(t));
+    const cv::Mat points3d = triangulatePoints(matched.points[0], matched.points[1], P1, P2);
+    const cv::Mat segments3d = triangulateSegments(matched.lines[0], matched.lines[1], P1, P2);
+    for (int i = 0; i < matched.points[2].rows; ++i)
+    {
+        if (!pointInliers.at<uchar>(i))
+            continue;
+        const cv::Point2d observed(matched.points[2].at<double>(i, 0), matched.points[2].at<double>(i, 1));
+        cv::circle(canvas, observed, 4, red, 1, cv::LINE_AA);
+        cv::Point2d projected;
+        if (projectPoint(P3, cv::Vec3d(points3d.ptr<double>(i)), projected))
+            cv::drawMarker(canvas, projected, green, cv::MARKER_CROSS, 7, 1, cv::LINE_AA);
+    }
+    for (int i = 0; i < matched.lines[2].rows; ++i)
+    {
+        if (!lineInliers.at<uchar>(i))
+            continue;
+        const double* s = matched.lines[2].ptr<double>(i);
+        cv::line(canvas, cv::Point2d(s[0], s[1]), cv::Point2d(s[2], s[3]), red, 3, cv::LINE_AA);
+        const double* X = segments3d.ptr<double>(i);
+        cv::Point2d a, b;
+        if (projectPoint(P3, cv::Vec3d(X), a) && projectPoint(P3, cv::Vec3d(X + 3), b))
+            cv::line(canvas, a, b, green, 1, cv::LINE_AA);
+    }
+    return canvas;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options options;
+    Problem calibration;
+    std::vector<cv::Mat> images;
+    try
+    {
+        options = parseArguments(argc, argv);
+        calibration = readCalibration(options.calib);
+        for (int v = 0; v < 3; ++v)
+        {
+            images.push_back(readImage(options.images[v]));
+            checkImageFitsCalibration(images[v], options.images[v], cameraMatrixOf(calibration, v),
+                                      cameraKey(calibration, v));
+        }
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_images: " << e.what() << "\n";
+        return 1;
+    }
+
+    // Front end: features of each image, then views 1-2 under their pose and view 3 by descriptor.
+    StageTimes times;
+    ImageFeatures features[3];
+    cv::Matx33d K[3];
+    for (int v = 0; v < 3; ++v)
+    {
+        K[v] = cameraMatrixOf(calibration, v);
+        features[v] = extractFeatures(images[v], K[v], distortionOf(calibration, v), options.features, times);
+    }
+    const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
+                                                   MatchOptions(), times);
+    const int tracks = triplets.points[0].rows, segments = triplets.lines[0].rows;
+    std::cout << cv::format("tripose_images: %d / %d / %d points, %d / %d / %d segments; %d point pairs of views "
+                            "1-2, %d point tracks; %d segment pairs, %d segment triplets\n",
+                            features[0].points.rows, features[1].points.rows, features[2].points.rows,
+                            features[0].segments.rows, features[1].segments.rows, features[2].segments.rows,
+                            triplets.pointPairs, tracks, triplets.segmentPairs, segments);
+    if (tracks + segments < kMinFeatures)
+    {
+        std::cerr << "tripose_images: too few features seen in all three images (" << options.images[0] << ", "
+                  << options.images[1] << ", " << options.images[2] << "): " << tracks << " point tracks and "
+                  << segments << " segment triplets, at least " << kMinFeatures << " needed\n";
+        return 1;
+    }
+
+    // The matched features as a problem: undistorted pixels, so the problem carries no dist.
+    Problem matched = calibration;
+    matched.dist.clear();
+    for (int v = 0; v < 3; ++v)
+    {
+        matched.points[v] = triplets.points[v];
+        matched.lines[v] = triplets.lines[v];
+    }
+    cv::Mat R, t, pointInliers, lineInliers;
+    int inliers = 0;
+    try
+    {
+        const int64 start = cv::getTickCount();
+        inliers = cv::tripose::estimatePoseLinePointRansac(matched.points[0], matched.points[1], matched.points[2],
+                                                           matched.lines[0], matched.lines[1], matched.lines[2],
+                                                           matched.K, cv::noArray(), matched.R12, matched.t12, R, t,
+                                                           options.ransac, pointInliers, lineInliers);
+        times.estimation += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
+    }
+    catch (const cv::Exception& e)
+    {
+        std::cerr << "tripose_images: the solver rejected the input" << problemKeyNamedBy(e.err) << " of "
+                  << options.calib << ": " << e.err << "\n";
+        return 2;
+    }
+    const int solutions = inliers > 0 ? 1 : 0;
+    if (solutions == 0)
+        std::cerr << "tripose_images: no pose found from " << tracks << " point tracks and " << segments
+                  << " segment triplets\n";
+    std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (LSD) %.1f, "
+                            "segment description (LBD) %.1f, matching %.1f, estimation %.1f, total %.1f\n",
+                            inliers, times.points, times.segmentDetection, times.segmentDescription, times.matching,
+                            times.estimation, times.total());
+
+    try
+    {
+        writeAtomically(options.output, [&](cv::FileStorage& fs) {
+            fs << "num_solutions" << solutions;
+            if (solutions > 0)
+                fs << "R" << R << "t" << t;
+            fs << "num_inliers" << inliers << "point_inliers" << inlierColumn(pointInliers) << "line_inliers"
+               << inlierColumn(lineInliers);
+            fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
+            fs << "ms_points" << times.points << "ms_segment_detection" << times.segmentDetection
+               << "ms_segment_description" << times.segmentDescription << "ms_matching" << times.matching
+               << "ms_estimation" << times.estimation;
+            fs << "images" << "[:" << options.images[0] << options.images[1] << options.images[2] << "]";
+            writeProblem(fs, matched);
+        });
+        if (!options.overlay.empty() && solutions > 0)
+        {
+            const cv::Mat overlay = drawOverlay(images[2], matched, R, t, pointInliers, lineInliers);
+            std::vector<uchar> png;
+            if (!cv::imencode(".png", overlay, png))
+                throw std::runtime_error("cannot encode the overlay");
+            writeFileAtomically(options.overlay, png);
+        }
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "tripose_images: " << e.what() << "\n";
+        return 1;
+    }
+    std::cout << "tripose_images: result written to " << options.output << "\n";
+    return 0;
+}
