@@ -84,7 +84,7 @@ def test_result_is_a_problem_tripose_estimate_solves_again(merton_result, tmp_pa
     assert all(problem[k].shape[0] == problem["points1"].shape[0] for k in ("points2", "points3"))
     assert all(problem[k].shape[0] == problem["lines1"].shape[0] for k in ("lines2", "lines3"))
     again = tmp_path / "again.yml"
-    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(out), "--output", str(again),
+    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(out), "--output", str(again), "--allow-unknown-keys",
                            "--method", "ransac"], capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     first, second = read_matrices(out, ["R"])["R"], read_matrices(again, ["R"])["R"]

@@ -22,7 +22,7 @@ def run_script(out, *options, calib=CALIB, images=IMAGES):
 
 
 def solve_with_tripose_estimate(problem, out):
-    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(problem), "--output", str(out),
+    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(problem), "--output", str(out), "--allow-unknown-keys",
                            "--method", "ransac"], capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     return read_matrices(out, ["R"])["R"]
