@@ -64,11 +64,12 @@ def _per_view(value: Any) -> Any:
     return _array(value)
 
 
-def _view_list(value: Any) -> Any:
+def _view_list(value: Any, name: str) -> Any:
+    """points, lines, Rs or ts of the multi-view functions: a list of one array per view."""
     if value is None:
         return None
     if not isinstance(value, (list, tuple)):
-        raise TypeError("a list of arrays, one per view, is required")
+        raise TypeError(f"{name} must be a list of arrays, one per view, got {type(value).__name__}")
     return [_array(v) for v in value]
 
 
@@ -103,7 +104,9 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     the inliers; seed: the same seed gives the same result.
 
     Returns a dict: R (3x3) and t (3,) (None when no pose was found), num_inliers, point_inliers and
-    line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels).
+    line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels). The pose is view 3's
+    in the frame of view 1, x_cam = R @ X + t; view 2 is at [R12 | t12] (see help(tripose) for the
+    conventions).
     """
     return _ext.estimate_pose_line_point_ransac(_array(points1), _array(points2), _array(points3), _array(lines1),
                                                 _array(lines2), _array(lines3), _per_view(K), _array(R12),
@@ -184,8 +187,8 @@ def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Option
     does not see a feature; every feature must be seen by the new view and two known views.
     Returns the candidates as a list of (R, t), best first.
     """
-    return _ext.estimate_pose_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
-                                        _view_list(ts), _per_view(dist), bool(refine))
+    return _ext.estimate_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
+                                        _view_list(ts, "ts"), _per_view(dist), bool(refine))
 
 
 def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
@@ -195,8 +198,8 @@ def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines:
                                    seed: int = 0) -> Dict[str, Any]:
     """Robust world pose of a new view against several known views (arguments as
     estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
-    return _ext.estimate_pose_multiview_ransac(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
-                                               _view_list(ts), _per_view(dist), float(threshold), float(confidence),
+    return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
+                                               _view_list(ts, "ts"), _per_view(dist), float(threshold), float(confidence),
                                                int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
 
 
@@ -206,8 +209,8 @@ def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional
                           loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
     """Maximum-likelihood refinement of a new view's world pose (R, t) and the structure over every
     view, the known views fixed (result as refine_pose_line_point)."""
-    return _ext.refine_pose_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
-                                      _view_list(ts), _array(R), _array(t), _per_view(dist), int(max_iterations),
+    return _ext.refine_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
+                                      _view_list(ts, "ts"), _array(R), _array(t), _per_view(dist), int(max_iterations),
                                       str(loss), float(loss_scale), float(tolerance))
 
 
@@ -223,6 +226,6 @@ def refine_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optiona
     (every view's pose, the fixed ones as given), rms, points3d, lines3d.
     """
     flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
-    return _ext.refine_poses_multiview(_view_list(points), _view_list(lines), _per_view(K), _view_list(Rs),
-                                       _view_list(ts), flags, _per_view(dist), int(max_iterations), str(loss),
+    return _ext.refine_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
+                                       _view_list(ts, "ts"), flags, _per_view(dist), int(max_iterations), str(loss),
                                        float(loss_scale), float(tolerance))
