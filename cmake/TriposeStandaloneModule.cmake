@@ -1,5 +1,5 @@
 # Builds modules/tripose outside an OpenCV tree, with the same source layout that
-# ocv_define_module() expects: src/ (globbed recursively, so src/generated/ is included),
+# ocv_define_module() expects: src/ (globbed recursively, so src/core/ and src/core/generated/ are included),
 # test/ and perf/ (compiled against the thin ts shim in cmake/ts_shim). Also builds the support
 # library of modules/tripose/support (scene generator, VGG reader, pose error), which the tests,
 # perf tests, samples, benchmarks and evaluation link and which is not installed.
