@@ -29,6 +29,7 @@
 #include "image_input.hpp"
 #include "problem_io.hpp"
 #include "two_view_geometry.hpp"
+#include "tripose_support/known_pair_structure.hpp"
 
 using namespace tripose_samples;
 
@@ -160,11 +161,14 @@ cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat&
     else
         canvas = image.clone();
     const cv::Scalar red(40, 40, 230), green(40, 200, 40);
-    const cv::Matx34d P1 = projectionMatrix(cameraMatrixOf(matched, 0), cv::Matx33d::eye(), cv::Vec3d());
-    const cv::Matx34d P2 = projectionMatrix(cameraMatrixOf(matched, 1), cv::Matx33d(matched.R12), cv::Vec3d(matched.t12));
+    using namespace cv::tripose::support;
+    const cv::Matx33d K1 = cameraMatrixOf(matched, 0), K2 = cameraMatrixOf(matched, 1);
+    const cv::Matx33d R12(matched.R12);
+    const cv::Vec3d t12(matched.t12);
     const cv::Matx34d P3 = projectionMatrix(cameraMatrixOf(matched, 2), cv::Matx33d(R), cv::Vec3d(t));
-    const cv::Mat points3d = triangulatePoints(matched.points[0], matched.points[1], P1, P2);
-    const cv::Mat segments3d = triangulateSegments(matched.lines[0], matched.lines[1], P1, P2);
+    const cv::Mat points3d = triangulateKnownPair(K1, K2, R12, t12, matched.points[0], matched.points[1]);
+    // A ray within a degree or so of view 2's plane: those views do not fix the end point's depth.
+    const cv::Mat segments3d = liftSegmentsKnownPair(K1, K2, R12, t12, matched.lines[0], matched.lines[1], 1e-2);
     for (int i = 0; i < matched.points[2].rows; ++i)
     {
         if (!pointInliers.at<uchar>(i))

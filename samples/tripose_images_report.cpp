@@ -30,6 +30,7 @@
 #include "image_features.hpp"
 #include "image_input.hpp"
 #include "problem_io.hpp"
+#include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 #include "two_view_geometry.hpp"
@@ -147,9 +148,8 @@ Outcome runTriangulationPnp(const cv::Mat points[3], const std::vector<cv::Mat>&
     if (points[0].rows < 4)
         return Outcome();
     const int64 start = cv::getTickCount();
-    const cv::Matx34d P1 = projectionMatrix(cv::Matx33d(K[0]), cv::Matx33d::eye(), cv::Vec3d());
-    const cv::Matx34d P2 = projectionMatrix(cv::Matx33d(K[1]), cv::Matx33d(R12), cv::Vec3d(t12));
-    const cv::Mat X = triangulatePoints(points[0], points[1], P1, P2);
+    const cv::Mat X = cv::tripose::support::triangulateKnownPair(cv::Matx33d(K[0]), cv::Matx33d(K[1]), cv::Matx33d(R12),
+                                                                 cv::Vec3d(t12), points[0], points[1]);
     cv::Mat rvec, t, inliers;
     const bool found = cv::solvePnPRansac(X.reshape(3), points[2].reshape(2), K[2], cv::noArray(), rvec, t, false,
                                           params.maxIterations, (float)params.threshold, params.confidence, inliers,

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -64,7 +65,8 @@ AnyArray asArray(nb::handle object, const std::string& name)
     return a;
 }
 
-//! The values of @p a in row-major order as a @p rows x @p cols matrix named @p name.
+//! The values of @p a (one or two dimensions, any strides) in row-major order as a @p rows x @p cols
+//! matrix named @p name.
 tripose::ArgumentMatrix copyMatrix(const AnyArray& a, const std::string& name, int rows, int cols)
 {
     tripose::ArgumentMatrix m;
@@ -73,26 +75,17 @@ tripose::ArgumentMatrix copyMatrix(const AnyArray& a, const std::string& name, i
     m.cols = cols;
     m.singlePrecision = a.dtype() == nb::dtype<float>();
     m.values.resize((size_t)rows * cols);
-    const size_t n = m.values.size();
-    const bool isDouble = !m.singlePrecision;
-    const char* base = static_cast<const char*>(a.data());
-    const size_t itemSize = isDouble ? sizeof(double) : sizeof(float);
-    // Walk the array in C order whatever its strides (numpy strides are in elements here).
-    std::vector<size_t> index(a.ndim(), 0);
-    for (size_t i = 0; i < n; ++i)
-    {
-        int64_t offset = 0;
-        for (size_t d = 0; d < a.ndim(); ++d)
-            offset += (int64_t)index[d] * a.stride(d);
-        const char* p = base + offset * (int64_t)itemSize;
-        m.values[i] = isDouble ? *reinterpret_cast<const double*>(p) : (double)*reinterpret_cast<const float*>(p);
-        for (size_t d = a.ndim(); d-- > 0;)
+    // numpy strides are in elements here; a vector is read as one row.
+    const size_t outer = a.ndim() == 2 ? a.shape(0) : 1, inner = a.ndim() == 2 ? a.shape(1) : a.size();
+    const int64_t outerStride = a.ndim() == 2 ? a.stride(0) : 0, innerStride = a.stride(a.ndim() - 1);
+    double* out = m.values.data();
+    for (size_t r = 0; r < outer; ++r)
+        for (size_t c = 0; c < inner; ++c)
         {
-            if (++index[d] < a.shape(d))
-                break;
-            index[d] = 0;
+            const int64_t offset = (int64_t)r * outerStride + (int64_t)c * innerStride;
+            *out++ = m.singlePrecision ? (double)static_cast<const float*>(a.data())[offset]
+                                       : static_cast<const double*>(a.data())[offset];
         }
-    }
     return m;
 }
 
@@ -288,7 +281,7 @@ nb::list candidateList(const std::vector<tripose::ScoredPose>& candidates)
     return out;
 }
 
-nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, double rms)
+nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate)
 {
     nb::dict out;
     out["R"] = found ? rotationArray(estimate.pose.R) : nb::none();
@@ -296,11 +289,11 @@ nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, doubl
     out["num_inliers"] = found ? estimate.numInliers : 0;
     out["point_inliers"] = maskArray(estimate.pointInliers);
     out["line_inliers"] = maskArray(estimate.lineInliers);
-    out["rms"] = rms;
+    out["rms"] = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
     return out;
 }
 
-nb::object structureArrays(const tripose::RefinedStructure& s, int numPoints, int numLines, nb::dict& out)
+void writeStructure(const tripose::RefinedStructure& s, int numPoints, int numLines, nb::dict& out)
 {
     std::vector<double> points(3 * (size_t)numPoints), lines(6 * (size_t)numLines);
     for (int i = 0; i < numPoints; ++i)
@@ -314,7 +307,6 @@ nb::object structureArrays(const tripose::RefinedStructure& s, int numPoints, in
         }
     out["points3d"] = newArray({ (size_t)numPoints, 3 }, points.data()).cast();
     out["lines3d"] = newArray({ (size_t)numLines, 6 }, lines.data()).cast();
-    return out;
 }
 
 tripose::RansacOptions ransacOptions(double threshold, double confidence, int maxIterations, bool refine,
@@ -353,36 +345,83 @@ tripose::RefineOptions refineOptions(int maxIterations, const std::string& loss,
     return options;
 }
 
-tripose::ProblemArguments threeViewArguments(nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1,
-                                             nb::handle l2, nb::handle l3, nb::handle K, nb::handle dist)
+/** The arguments of a three-view problem, converted while the GIL is held; builder() makes its
+ViewSet (the core validates) without touching a Python object.
+*/
+struct ThreeViewProblem
 {
-    tripose::ProblemArguments args;
-    args.views.push_back(readView(p1, l1, "points1", "lines1", false));
-    args.views.push_back(readView(p2, l2, "points2", "lines2", false));
-    args.views.push_back(readView(p3, l3, "points3", "lines3", false));
-    readCalibration(K, dist, args);
-    return args;
-}
+    tripose::ProblemArguments arguments;
+    tripose::ArgumentMatrix R12, t12;
 
-tripose::ProblemArguments stereoArguments(nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1,
-                                          nb::handle l2, nb::handle l3, nb::handle l4, nb::handle K, nb::handle dist)
-{
-    tripose::ProblemArguments args;
-    args.views.push_back(readView(p1, l1, "points1", "lines1", false));
-    args.views.push_back(readView(p2, l2, "points2", "lines2", false));
-    args.views.push_back(readView(p3, l3, "points3", "lines3", true));
-    args.views.push_back(readView(p4, l4, "points4", "lines4", true));
-    readCalibration(K, dist, args);
-    return args;
-}
+    ThreeViewProblem(nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3,
+                     nb::handle K, nb::handle R12in, nb::handle t12in, nb::handle dist)
+    {
+        arguments.views.push_back(readView(p1, l1, "points1", "lines1", false));
+        arguments.views.push_back(readView(p2, l2, "points2", "lines2", false));
+        arguments.views.push_back(readView(p3, l3, "points3", "lines3", false));
+        readCalibration(K, dist, arguments);
+        R12 = readRotation(R12in, "R12");
+        t12 = readTranslation(t12in, "t12");
+    }
 
-//! The initial pose of a refinement, read as the core reads R12 / t12.
-tripose::CameraPose initialPose(nb::handle R, nb::handle t)
+    std::function<tripose::ViewSet()> builder(int minFeatures) const
+    {
+        return [this, minFeatures] { return tripose::buildThreeViewSet(arguments, R12, t12, minFeatures); };
+    }
+};
+
+//! The stereo rig's arguments (views 3 and 4 may miss features), as ThreeViewProblem.
+struct StereoProblem
 {
-    tripose::CameraPose pose;
-    pose.R = tripose::readRotation(readRotation(R, "R"));
-    pose.t = tripose::readTranslation(readTranslation(t, "t"), false);
-    return pose;
+    tripose::ProblemArguments arguments;
+    tripose::ArgumentMatrix R12, t12;
+
+    StereoProblem(nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2,
+                  nb::handle l3, nb::handle l4, nb::handle K, nb::handle R12in, nb::handle t12in, nb::handle dist)
+    {
+        arguments.views.push_back(readView(p1, l1, "points1", "lines1", false));
+        arguments.views.push_back(readView(p2, l2, "points2", "lines2", false));
+        arguments.views.push_back(readView(p3, l3, "points3", "lines3", true));
+        arguments.views.push_back(readView(p4, l4, "points4", "lines4", true));
+        readCalibration(K, dist, arguments);
+        R12 = readRotation(R12in, "R12");
+        t12 = readTranslation(t12in, "t12");
+    }
+
+    std::function<tripose::ViewSet()> builder(int minFeatures) const
+    {
+        return [this, minFeatures] { return tripose::buildStereoRigSet(arguments, R12, t12, minFeatures); };
+    }
+};
+
+//! Views at the world poses Rs, ts, plus @p unposedViews new views, every view free to miss features.
+struct MultiViewProblem
+{
+    std::vector<tripose::ArgumentMatrix> rotations, translations;
+    tripose::ProblemArguments arguments;
+
+    MultiViewProblem(nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
+                     size_t unposedViews)
+        : rotations(readPoseList(Rs, "Rs", true)), translations(readPoseList(ts, "ts", false)),
+          arguments(readPosedViews(points, lines, K, dist, rotations.size() + unposedViews))
+    {
+    }
+
+    //! The registration of one new view (estimatePoseMultiView's layout).
+    std::function<tripose::ViewSet()> newViewBuilder() const
+    {
+        return [this] { return tripose::buildMultiViewSet(arguments, rotations, translations, kMinFeatures); };
+    }
+};
+
+//! The robust estimator of an arrangement whose scorer is built from its views (stereo, multi-view).
+template <class Solver>
+std::function<bool(const tripose::ViewSet&, tripose::RobustEstimate&)> robustWith(const tripose::RansacOptions& options)
+{
+    return [options](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
+        const Solver solver(views);
+        return tripose::estimateRobust(views, solver, options, estimate);
+    };
 }
 
 nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
@@ -392,35 +431,57 @@ nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose&
     out["R"] = rotationArray(pose.R);
     out["t"] = vectorArray(pose.t);
     out["rms"] = rms;
-    structureArrays(structure, views.numPoints, views.numLines, out);
+    writeStructure(structure, views.numPoints, views.numLines, out);
     return out;
 }
 
-/** The RMS over the inliers of the residuals that decide them (PoseScorer::refitResiduals(): each
-feature re-triangulated from every view with the estimate); NaN without an estimate or inliers.
-*/
-double robustRms(bool found, const tripose::ViewSet& views, const tripose::RobustEstimate& estimate)
+//! The candidates of a problem: @p build makes its ViewSet, Solver is its PoseSolver; the GIL is
+//! released while they run.
+template <class Solver, class Build>
+nb::list runCandidates(Build build, bool refine)
 {
-    if (!found)
-        return std::numeric_limits<double>::quiet_NaN();
-    const tripose::PoseScorer scorer(views);
-    std::vector<double> pointResiduals, lineResiduals;
-    scorer.refitResiduals(estimate.pose, pointResiduals, lineResiduals);
-    double sum = 0;
-    int count = 0;
-    for (size_t i = 0; i < pointResiduals.size(); ++i)
-        if (estimate.pointInliers[i])
-        {
-            sum += pointResiduals[i] * pointResiduals[i];
-            ++count;
-        }
-    for (size_t i = 0; i < lineResiduals.size(); ++i)
-        if (estimate.lineInliers[i])
-        {
-            sum += lineResiduals[i] * lineResiduals[i];
-            ++count;
-        }
-    return count > 0 ? std::sqrt(sum / count) : std::numeric_limits<double>::quiet_NaN();
+    std::vector<tripose::ScoredPose> candidates;
+    {
+        nb::gil_scoped_release release;
+        const tripose::ViewSet views = build();
+        const Solver solver(views);
+        candidates = tripose::estimateCandidates(views, solver, refine);
+    }
+    return candidateList(candidates);
+}
+
+//! The robust estimate of a problem: @p estimate runs the estimator of its arrangement on the ViewSet
+//! that @p build makes (GIL released).
+template <class Build, class Estimate>
+nb::dict runRobust(Build build, Estimate estimate)
+{
+    tripose::RobustEstimate result;
+    bool found;
+    {
+        nb::gil_scoped_release release;
+        const tripose::ViewSet views = build();
+        found = estimate(views, result);
+    }
+    return robustResult(found, result);
+}
+
+//! The refinement of the initial pose (@p R, @p t) over the ViewSet that @p build makes (GIL released).
+template <class Build>
+nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const tripose::ArgumentMatrix& t,
+                       const tripose::RefineOptions& options)
+{
+    tripose::RefinedStructure structure;
+    tripose::CameraPose pose;
+    double rms;
+    tripose::ViewSet views;
+    {
+        nb::gil_scoped_release release;
+        views = build();
+        pose.R = tripose::readRotation(R);
+        pose.t = tripose::readTranslation(t, false);
+        rms = tripose::refineInitialPose(views, pose, options, &structure);
+    }
+    return refinedResult(views, pose, rms, structure);
 }
 
 } // namespace
@@ -443,194 +504,101 @@ NB_MODULE(_tripose_ext, m)
     m.def("estimate_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
              nb::handle R12, nb::handle t12, nb::handle dist, bool refine) {
-              const tripose::ProblemArguments args = threeViewArguments(p1, p2, p3, l1, l2, l3, K, dist);
-              const tripose::ArgumentMatrix R = readRotation(R12, "R12"), t = readTranslation(t12, "t12");
-              std::vector<tripose::ScoredPose> candidates;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildThreeViewSet(args, R, t, kMinFeatures);
-                  const tripose::LinearPoseSolver solver(views);
-                  candidates = tripose::estimateCandidates(views, solver, refine);
-              }
-              return candidateList(candidates);
+              const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
+              return runCandidates<tripose::LinearPoseSolver>(problem.builder(kMinFeatures), refine);
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("refine"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("refine"));
 
     m.def("estimate_pose_line_point_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
              nb::handle R12, nb::handle t12, nb::handle dist, double threshold, double confidence, int maxIterations,
              bool refine, uint64_t seed) {
-              const tripose::ProblemArguments args = threeViewArguments(p1, p2, p3, l1, l2, l3, K, dist);
-              const tripose::ArgumentMatrix R = readRotation(R12, "R12"), t = readTranslation(t12, "t12");
+              const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              tripose::RobustEstimate estimate;
-              bool found;
-              double rms;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildThreeViewSet(args, R, t, kMinFeatures);
-                  const tripose::PoseScorer scorer(views);
-                  const tripose::LinearPoseSolver linear(views);
-                  const tripose::HybridPoseSolver solver(views, scorer, linear);
-                  found = tripose::estimateRobust(views, scorer, solver, options, estimate);
-                  rms = robustRms(found, views, estimate);
-              }
-              return robustResult(found, estimate, rms);
+              return runRobust(problem.builder(kMinFeatures),
+                               [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
+                                   // The scorer's structure from views 1-2 is also what the minimal samples solve on.
+                                   const tripose::PoseScorer scorer(views);
+                                   const tripose::LinearPoseSolver linear(views);
+                                   const tripose::HybridPoseSolver solver(views, scorer, linear);
+                                   return tripose::estimateRobust(views, scorer, solver, options, estimate);
+                               });
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("maxIterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
     m.def("refine_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
              nb::handle R12, nb::handle t12, nb::handle R, nb::handle t, nb::handle dist, int maxIterations,
              const std::string& loss, double lossScale, double tolerance) {
-              const tripose::ProblemArguments args = threeViewArguments(p1, p2, p3, l1, l2, l3, K, dist);
-              const tripose::ArgumentMatrix R12m = readRotation(R12, "R12"), t12m = readTranslation(t12, "t12");
+              const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
               const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
-              tripose::RefinedStructure structure;
-              tripose::CameraPose pose;
-              double rms;
-              tripose::ViewSet views;
-              {
-                  nb::gil_scoped_release release;
-                  views = tripose::buildThreeViewSet(args, R12m, t12m, kMinRefineFeatures);
-                  pose.R = tripose::readRotation(Rm);
-                  pose.t = tripose::readTranslation(tm, false);
-                  rms = tripose::refineInitialPose(views, pose, options, &structure);
-              }
-              return refinedResult(views, pose, rms, structure);
+              return runRefinement(problem.builder(kMinRefineFeatures), Rm, tm, options);
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("maxIterations"), nb::arg("loss"), nb::arg("lossScale"), nb::arg("tolerance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 
     m.def("estimate_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist, bool refine) {
-              const tripose::ProblemArguments args = stereoArguments(p1, p2, p3, p4, l1, l2, l3, l4, K, dist);
-              const tripose::ArgumentMatrix R = readRotation(R12, "R12"), t = readTranslation(t12, "t12");
-              std::vector<tripose::ScoredPose> candidates;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildStereoRigSet(args, R, t, kMinStereoFeatures);
-                  const tripose::RigPoseSolver solver(views);
-                  candidates = tripose::estimateCandidates(views, solver, refine);
-              }
-              return candidateList(candidates);
+              const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
+              return runCandidates<tripose::RigPoseSolver>(problem.builder(kMinStereoFeatures), refine);
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("p4").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("l4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("refine"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("refine"));
 
     m.def("estimate_pose_line_point_stereo_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist, double threshold,
              double confidence, int maxIterations, bool refine, uint64_t seed) {
-              const tripose::ProblemArguments args = stereoArguments(p1, p2, p3, p4, l1, l2, l3, l4, K, dist);
-              const tripose::ArgumentMatrix R = readRotation(R12, "R12"), t = readTranslation(t12, "t12");
+              const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              tripose::RobustEstimate estimate;
-              bool found;
-              double rms;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildStereoRigSet(args, R, t, kMinStereoRansacFeatures);
-                  const tripose::RigPoseSolver solver(views);
-                  found = tripose::estimateRobust(views, solver, options, estimate);
-                  rms = robustRms(found, views, estimate);
-              }
-              return robustResult(found, estimate, rms);
+              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options));
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("p4").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("l4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("maxIterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
     m.def("refine_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle R, nb::handle t, nb::handle dist,
              int maxIterations, const std::string& loss, double lossScale, double tolerance) {
-              const tripose::ProblemArguments args = stereoArguments(p1, p2, p3, p4, l1, l2, l3, l4, K, dist);
-              const tripose::ArgumentMatrix R12m = readRotation(R12, "R12"), t12m = readTranslation(t12, "t12");
+              const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
               const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
-              tripose::RefinedStructure structure;
-              tripose::CameraPose pose;
-              double rms;
-              tripose::ViewSet views;
-              {
-                  nb::gil_scoped_release release;
-                  views = tripose::buildStereoRigSet(args, R12m, t12m, kMinStereoFeatures);
-                  pose.R = tripose::readRotation(Rm);
-                  pose.t = tripose::readTranslation(tm, false);
-                  rms = tripose::refineInitialPose(views, pose, options, &structure);
-              }
-              return refinedResult(views, pose, rms, structure);
+              return runRefinement(problem.builder(kMinStereoFeatures), Rm, tm, options);
           },
-          nb::arg("p1").none(), nb::arg("p2").none(), nb::arg("p3").none(), nb::arg("p4").none(), nb::arg("l1").none(), nb::arg("l2").none(), nb::arg("l3").none(), nb::arg("l4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("maxIterations"), nb::arg("loss"), nb::arg("lossScale"), nb::arg("tolerance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 
     m.def("estimate_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
              bool refine) {
-              const std::vector<tripose::ArgumentMatrix> rotations = readPoseList(Rs, "Rs", true);
-              const std::vector<tripose::ArgumentMatrix> translations = readPoseList(ts, "ts", false);
-              const tripose::ProblemArguments args = readPosedViews(points, lines, K, dist, rotations.size() + 1);
-              std::vector<tripose::ScoredPose> candidates;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildMultiViewSet(args, rotations, translations, kMinFeatures);
-                  const tripose::MultiViewPoseSolver solver(views);
-                  candidates = tripose::estimateCandidates(views, solver, refine);
-              }
-              return candidateList(candidates);
+              const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
+              return runCandidates<tripose::MultiViewPoseSolver>(problem.newViewBuilder(), refine);
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("refine"));
 
     m.def("estimate_pose_multiview_ransac",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
              double threshold, double confidence, int maxIterations, bool refine, uint64_t seed) {
-              const std::vector<tripose::ArgumentMatrix> rotations = readPoseList(Rs, "Rs", true);
-              const std::vector<tripose::ArgumentMatrix> translations = readPoseList(ts, "ts", false);
-              const tripose::ProblemArguments args = readPosedViews(points, lines, K, dist, rotations.size() + 1);
+              const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              tripose::RobustEstimate estimate;
-              bool found;
-              double rms;
-              {
-                  nb::gil_scoped_release release;
-                  const tripose::ViewSet views = tripose::buildMultiViewSet(args, rotations, translations, kMinFeatures);
-                  const tripose::MultiViewPoseSolver solver(views);
-                  found = tripose::estimateRobust(views, solver, options, estimate);
-                  rms = robustRms(found, views, estimate);
-              }
-              return robustResult(found, estimate, rms);
+              return runRobust(problem.newViewBuilder(), robustWith<tripose::MultiViewPoseSolver>(options));
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("maxIterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
     m.def("refine_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle R,
              nb::handle t, nb::handle dist, int maxIterations, const std::string& loss, double lossScale,
              double tolerance) {
-              const std::vector<tripose::ArgumentMatrix> rotations = readPoseList(Rs, "Rs", true);
-              const std::vector<tripose::ArgumentMatrix> translations = readPoseList(ts, "ts", false);
-              const tripose::ProblemArguments args = readPosedViews(points, lines, K, dist, rotations.size() + 1);
+              const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
               const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
-              tripose::RefinedStructure structure;
-              tripose::CameraPose pose;
-              double rms;
-              tripose::ViewSet views;
-              {
-                  nb::gil_scoped_release release;
-                  views = tripose::buildMultiViewSet(args, rotations, translations, kMinFeatures);
-                  pose.R = tripose::readRotation(Rm);
-                  pose.t = tripose::readTranslation(tm, false);
-                  rms = tripose::refineInitialPose(views, pose, options, &structure);
-              }
-              return refinedResult(views, pose, rms, structure);
+              return runRefinement(problem.newViewBuilder(), Rm, tm, options);
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("maxIterations"), nb::arg("loss"), nb::arg("lossScale"), nb::arg("tolerance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 
     m.def("refine_poses_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts,
              const std::vector<int>& fixedViews, nb::handle dist, int maxIterations, const std::string& loss,
              double lossScale, double tolerance) {
-              const std::vector<tripose::ArgumentMatrix> rotations = readPoseList(Rs, "Rs", true);
-              const std::vector<tripose::ArgumentMatrix> translations = readPoseList(ts, "ts", false);
-              const tripose::ProblemArguments args = readPosedViews(points, lines, K, dist, rotations.size());
+              const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 0);
               const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
               tripose::RefinedStructure structure;
               std::vector<tripose::CameraPose> all;
@@ -640,8 +608,8 @@ NB_MODULE(_tripose_ext, m)
                   nb::gil_scoped_release release;
                   std::vector<int> poseOfView;
                   std::vector<tripose::CameraPose> poses;
-                  views = tripose::buildSeveralPosesSet(args, rotations, translations, fixedViews, "fixed_views",
-                                                        poseOfView, poses);
+                  views = tripose::buildSeveralPosesSet(problem.arguments, problem.rotations, problem.translations,
+                                                        fixedViews, "fixed_views", poseOfView, poses);
                   rms = tripose::refineSeveralPoses(views, poseOfView, poses, options, &structure);
                   all = tripose::allViewPoses(views, poseOfView, poses);
               }
@@ -655,8 +623,8 @@ NB_MODULE(_tripose_ext, m)
               out["Rs"] = Rout;
               out["ts"] = tout;
               out["rms"] = rms;
-              structureArrays(structure, views.numPoints, views.numLines, out);
+              writeStructure(structure, views.numPoints, views.numLines, out);
               return out;
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("fixedViews"), nb::arg("dist").none(), nb::arg("maxIterations"), nb::arg("loss"), nb::arg("lossScale"), nb::arg("tolerance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("fixed_views"), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 }

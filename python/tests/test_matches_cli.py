@@ -15,19 +15,11 @@ import numpy as np
 import pytest
 
 import tripose
+from cli_tool import estimate_tool
 from scenes import add_outliers, stereo_scene, three_view_scene
 
 REPO = Path(__file__).resolve().parents[2]
 TOL = 1e-12
-
-
-def estimate_tool():
-    build = Path(os.environ.get("TRIPOSE_BUILD_DIR", REPO / "build"))
-    tool = build / "samples" / "tripose_estimate"
-    if not tool.is_file():
-        pytest.fail(f"{tool} is not built: build it with `cmake --build {build} --target tripose_estimate` "
-                    f"(or set TRIPOSE_BUILD_DIR to a build folder that has it)")
-    return tool
 
 
 def write_problem(path, values):

@@ -57,6 +57,11 @@ def _array(value: Any) -> Any:
     return value
 
 
+def _seed(seed: int) -> int:
+    """A seed as the 64 bits the sampler's generator starts from (a negative seed is a valid seed)."""
+    return int(seed) & 0xFFFFFFFFFFFFFFFF
+
+
 def _per_view(value: Any) -> Any:
     """K or dist: one array, or a list/tuple of one per view."""
     if isinstance(value, (list, tuple)) and len(value) > 0 and isinstance(value[0], np.ndarray):
@@ -111,7 +116,7 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     return _ext.estimate_pose_line_point_ransac(_array(points1), _array(points2), _array(points3), _array(lines1),
                                                 _array(lines2), _array(lines3), _per_view(K), _array(R12),
                                                 _array(t12), _per_view(dist), float(threshold), float(confidence),
-                                                int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+                                                int(max_iterations), bool(refine), _seed(seed))
 
 
 def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
@@ -162,7 +167,7 @@ def estimate_pose_line_point_stereo_ransac(points1: ArrayLike, points2: ArrayLik
     return _ext.estimate_pose_line_point_stereo_ransac(
         _array(points1), _array(points2), _array(points3), _array(points4), _array(lines1), _array(lines2),
         _array(lines3), _array(lines4), _per_view(K), _array(R12), _array(t12), _per_view(dist), float(threshold),
-        float(confidence), int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+        float(confidence), int(max_iterations), bool(refine), _seed(seed))
 
 
 def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
@@ -200,7 +205,7 @@ def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines:
     estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
     return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
                                                _view_list(ts, "ts"), _per_view(dist), float(threshold), float(confidence),
-                                               int(max_iterations), bool(refine), int(seed) & 0xFFFFFFFFFFFFFFFF)
+                                               int(max_iterations), bool(refine), _seed(seed))
 
 
 def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
@@ -223,7 +228,7 @@ def refine_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optiona
     together (at least two fixed views at distinct centres fix the frame and the scale).
 
     Rs, ts: every view's world pose (the initial values of the free ones). Returns a dict: Rs, ts
-    (every view's pose, the fixed ones as given), rms, points3d, lines3d.
+    (every view's pose; the fixed ones as given, made exact rotations), rms, points3d, lines3d.
     """
     flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
     return _ext.refine_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),

@@ -60,6 +60,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/synthetic_stereo_scene.hpp"
@@ -204,54 +205,19 @@ double medianOf(std::vector<double> v)
 // ---------------------------------------------------------------------------------------------
 // Triangulation from views 1-2: the structure the PnP peers work with.
 
-cv::Mat projection(const cv::Mat& K, const cv::Mat& R, const cv::Mat& t)
-{
-    cv::Mat Rt;
-    cv::hconcat(R, t, Rt);
-    return K * Rt;
-}
-
 //! Nx3 points triangulated (DLT) from views 1 and 2.
 cv::Mat triangulatePoints12(const Problem& p)
 {
-    if (p.points1.rows == 0)
-        return cv::Mat(0, 3, CV_64F);
-    const cv::Mat P1 = projection(p.K[0], cv::Mat::eye(3, 3, CV_64F), cv::Mat::zeros(3, 1, CV_64F));
-    const cv::Mat P2 = projection(p.K[1], p.R12, p.t12);
-    cv::Mat X4, X;
-    cv::triangulatePoints(P1, P2, p.points1.t(), p.points2.t(), X4);
-    cv::convertPointsFromHomogeneous(X4.t(), X);
-    return X.reshape(1, p.points1.rows);
+    return cv::tripose::support::triangulateKnownPair(cv::Matx33d(p.K[0]), cv::Matx33d(p.K[1]), cv::Matx33d(p.R12),
+                                                      cv::Vec3d(p.t12), p.points1, p.points2);
 }
 
-//! Mx6 3D segments from views 1 and 2: the view-1 end-point rays cut by the plane back-projected
-//! from the view-2 line (the 3D line is the intersection of the two planes).
+//! Mx6 3D segments from views 1 and 2 (NaN end points where the view-1 ray runs parallel to the
+//! plane of the view-2 line: the line is not determined by views 1-2).
 cv::Mat triangulateLines12(const Problem& p)
 {
-    cv::Mat L(p.lines1.rows, 6, CV_64F, cv::Scalar(std::numeric_limits<double>::quiet_NaN()));
-    const cv::Mat P2 = projection(p.K[1], p.R12, p.t12);
-    const cv::Mat K1inv = p.K[0].inv();
-    for (int i = 0; i < p.lines1.rows; ++i)
-    {
-        const double* s2 = p.lines2.ptr<double>(i);
-        const cv::Vec3d l2 = cv::Vec3d(s2[0], s2[1], 1.0).cross(cv::Vec3d(s2[2], s2[3], 1.0));
-        const cv::Mat plane = P2.t() * cv::Mat(l2);  // 4x1
-        const cv::Vec3d n(plane.at<double>(0), plane.at<double>(1), plane.at<double>(2));
-        const double d = plane.at<double>(3);
-        const double* s1 = p.lines1.ptr<double>(i);
-        for (int e = 0; e < 2; ++e)
-        {
-            const cv::Mat ray = K1inv * cv::Mat(cv::Vec3d(s1[2 * e], s1[2 * e + 1], 1.0));
-            const cv::Vec3d r(ray.at<double>(0), ray.at<double>(1), ray.at<double>(2));
-            const double denom = n.dot(r);
-            if (std::abs(denom) < 1e-12 * cv::norm(n) * cv::norm(r))
-                continue;  // ray parallel to the plane: the line is not determined by views 1-2
-            const double lambda = -d / denom;
-            for (int k = 0; k < 3; ++k)
-                L.at<double>(i, 3 * e + k) = lambda * r[k];
-        }
-    }
-    return L;
+    return cv::tripose::support::liftSegmentsKnownPair(cv::Matx33d(p.K[0]), cv::Matx33d(p.K[1]), cv::Matx33d(p.R12),
+                                                       cv::Vec3d(p.t12), p.lines1, p.lines2, 1e-12);
 }
 
 // ---------------------------------------------------------------------------------------------

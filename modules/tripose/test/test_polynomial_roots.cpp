@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_polynomials.hpp"
 
 #include "../src/core/linear/polynomial_roots.hpp"
 
@@ -10,24 +11,6 @@ namespace opencv_test {
 namespace {
 
 using ::tripose::solveRealPolynomialRoots;
-
-//! Coefficients (ascending) of lead * prod (x - r_i) * (x^2 + 1)^complexPairs.
-std::vector<double> polynomialFromRoots(const std::vector<double>& roots, int complexPairs, double lead)
-{
-    std::vector<double> c(1, lead);
-    auto multiply = [&c](const std::vector<double>& f) {
-        std::vector<double> out(c.size() + f.size() - 1, 0.0);
-        for (size_t i = 0; i < c.size(); ++i)
-            for (size_t j = 0; j < f.size(); ++j)
-                out[i + j] += c[i] * f[j];
-        c = out;
-    };
-    for (double r : roots)
-        multiply({ -r, 1.0 });
-    for (int k = 0; k < complexPairs; ++k)
-        multiply({ 1.0, 0.0, 1.0 });
-    return c;
-}
 
 TEST(Tripose_PolynomialRoots, finds_all_real_roots_of_random_degree_11)
 {
@@ -41,7 +24,7 @@ TEST(Tripose_PolynomialRoots, finds_all_real_roots_of_random_degree_11)
         for (double& r : roots)
             r = rng.uniform(-10.0, 10.0);
         std::sort(roots.begin(), roots.end());
-        const std::vector<double> c = polynomialFromRoots(roots, (11 - numReal) / 2, rng.uniform(0.1, 10.0));
+        const std::vector<double> c = polynomialFromRoots(roots, std::vector<Vec2d>((11 - numReal) / 2, Vec2d(0.0, 1.0)), rng.uniform(0.1, 10.0));
         double found[16];
         const int n = solveRealPolynomialRoots(c.data(), 11, found);
         if (n != numReal)
@@ -79,7 +62,7 @@ TEST(Tripose_PolynomialRoots, scale_of_roots_does_not_matter)
     for (double scale : { 1e-6, 1e-3, 1.0, 1e3, 1e6 })
     {
         const std::vector<double> expected = { -2.5 * scale, 0.5 * scale, 4.0 * scale };
-        const std::vector<double> c = polynomialFromRoots(expected, 1, 1.0);
+        const std::vector<double> c = polynomialFromRoots(expected, { Vec2d(0.0, 1.0) }, 1.0);
         double roots[5];
         ASSERT_EQ(solveRealPolynomialRoots(c.data(), 5, roots), 3) << "scale " << scale;
         for (int i = 0; i < 3; ++i)

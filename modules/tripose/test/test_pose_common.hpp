@@ -48,14 +48,8 @@ inline Vec3d toVec3(const Mat& m)
 inline Mat triangulateFromKnownPair(const std::vector<Mat>& K, const Mat& R12, const Mat& t12, const Mat& points1,
                                     const Mat& points2)
 {
-    Mat P1 = K[0] * Mat::eye(3, 4, CV_64F), P2(3, 4, CV_64F);
-    R12.copyTo(P2.colRange(0, 3));
-    t12.copyTo(P2.col(3));
-    P2 = K[1] * P2;
-    Mat X4, X;
-    triangulatePoints(P1, P2, points1.t(), points2.t(), X4);
-    convertPointsFromHomogeneous(X4.t(), X);
-    return X.reshape(1, points1.rows);
+    return cv::tripose::support::triangulateKnownPair(Matx33d(K[0]), Matx33d(K[1]), Matx33d(R12), Vec3d(t12), points1,
+                                                      points2);
 }
 
 using cv::tripose::support::PoseError;

@@ -9,6 +9,7 @@
 #include "opencv2/tripose.hpp"
 
 // The support library: scenes, data sets and pose errors of the tests (not part of the module).
+#include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_multiview_scene.hpp"
 #include "tripose_support/synthetic_scene.hpp"

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_precomp.hpp"
+#include "test_polynomials.hpp"
 
 #include "../src/core/minimal/sturm_roots.hpp"
 
@@ -10,25 +11,6 @@ namespace opencv_test {
 namespace {
 
 using ::tripose::solveRealRootsSturm;
-
-//! Ascending coefficients of lead * prod (x - r_i) * prod ((x - a_k)^2 + b_k^2).
-std::vector<double> polynomialFromRoots(const std::vector<double>& roots, const std::vector<Vec2d>& complexPairs,
-                                        double lead)
-{
-    std::vector<double> c(1, lead);
-    auto multiply = [&c](const std::vector<double>& f) {
-        std::vector<double> out(c.size() + f.size() - 1, 0.0);
-        for (size_t i = 0; i < c.size(); ++i)
-            for (size_t j = 0; j < f.size(); ++j)
-                out[i + j] += c[i] * f[j];
-        c = out;
-    };
-    for (double r : roots)
-        multiply({ -r, 1.0 });
-    for (const Vec2d& z : complexPairs)
-        multiply({ z[0] * z[0] + z[1] * z[1], -2.0 * z[0], 1.0 });
-    return c;
-}
 
 TEST(Tripose_SturmRoots, finds_the_real_roots_of_random_octics)
 {

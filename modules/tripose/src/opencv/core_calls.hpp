@@ -40,9 +40,8 @@ auto callCore(const char* function, const char* file, int line, Body body) -> de
     }
     catch (const core::Error& e)
     {
-        cv::error(errorCodeFor(e.code()), e.what(), function, file, line);
+        cv::error(errorCodeFor(e.code()), e.what(), function, file, line); // does not return
     }
-    throw std::logic_error("unreachable"); // cv::error() does not return
 }
 
 } // namespace detail

@@ -10,20 +10,25 @@ namespace cv {
 namespace tripose {
 namespace detail {
 
-core::RefineOptions toCoreOptions(const RefineParams& params, const char* name)
+namespace {
+
+core::RefineOptions convert(const RefineParams& params)
 {
     core::RefineOptions options;
     options.maxIterations = params.maxIterations;
+    // An out-of-range value is representable (the enumeration's type is int): the check reports it.
+    options.loss = static_cast<core::Loss>(params.loss);
     options.lossScale = params.lossScale;
     options.tolerance = params.tolerance;
-    if (params.loss != LOSS_SQUARED && params.loss != LOSS_HUBER && params.loss != LOSS_CAUCHY)
-    {
-        // The fields are reported in their order: a bad maxIterations comes first.
-        TRIPOSE_CALL_CORE([&] { core::checkRefineOptions(options, name); });
-        CV_Error_(Error::StsBadArg, ("%s.loss must be LOSS_SQUARED (0), LOSS_HUBER (1) or LOSS_CAUCHY (2) (got %d)",
-                                     name, params.loss));
-    }
-    options.loss = static_cast<core::Loss>(params.loss);
+    return options;
+}
+
+} // namespace
+
+core::RefineOptions toCoreOptions(const RefineParams& params)
+{
+    const core::RefineOptions options = convert(params);
+    core::checkRefineOptions(options, "params");
     return options;
 }
 
@@ -35,16 +40,10 @@ core::RansacOptions toCoreOptions(const RansacParams& params)
     options.maxIterations = params.maxIterations;
     options.localOptimization = params.localOptimization;
     options.refine = params.refine;
+    options.refineOptions = convert(params.refineParams);
     // A negative seed is a valid seed: its bits, as a 64-bit value, seed the generator.
     options.seed = (uint64_t)(int64_t)params.seed;
-    if (params.refine)
-    {
-        // The fields are reported in their order: the sampling parameters come first.
-        core::RansacOptions sampling = options;
-        sampling.refine = false;
-        TRIPOSE_CALL_CORE([&] { core::checkRansacOptions(sampling); });
-        options.refineOptions = toCoreOptions(params.refineParams, "params.refineParams");
-    }
+    core::checkRansacOptions(options, "params");
     return options;
 }
 

@@ -14,10 +14,10 @@ namespace cv {
 namespace tripose {
 namespace detail {
 
-/** The core's options from the public parameter structs. The loss, an int here, is checked on the
-way (cv::Exception naming "<name>.loss"); the core checks the other fields, in their order.
+/** The core's options from the public parameter structs, checked (core::Error naming
+"params.<field>", which the entry points turn into cv::Exception).
 */
-core::RefineOptions toCoreOptions(const RefineParams& params, const char* name = "params");
+core::RefineOptions toCoreOptions(const RefineParams& params);
 core::RansacOptions toCoreOptions(const RansacParams& params);
 
 //! Raises cv::Exception naming @p method unless it is POSE_LINEAR or POSE_LINEAR_REFINE.

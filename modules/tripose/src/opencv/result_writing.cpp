@@ -5,7 +5,6 @@
 #include "../precomp.hpp"
 
 #include "opencv_compat.hpp"
-#include "argument_reading.hpp"
 #include "result_writing.hpp"
 
 namespace cv {
@@ -128,16 +127,6 @@ void writeStructure(const core::RefinedStructure& structure, int numPoints, int 
                 out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
             }
     }
-}
-
-Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
-{
-    const Mat m = arr.getMat();
-    form.rodrigues = m.total() * m.channels() == 3;
-    form.rows = m.rows;
-    form.cols = m.cols;
-    // Validated like R12; returned as an exact rotation, which the multiplicative update needs.
-    return readRotation(arr, "R");
 }
 
 void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out)

@@ -12,6 +12,7 @@
 #include "../core/estimator/scored_pose.hpp"
 #include "../core/refine/ml_refinement.hpp"
 #include "../core/robust/robust_estimator.hpp"
+#include "argument_reading.hpp"
 #include "core_calls.hpp"
 
 namespace cv {
@@ -41,16 +42,6 @@ int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, Output
 //! The refined structure (Nx3 points, Mx6 line end points, CV_64F), where wanted.
 void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
                     OutputArray lines3d);
-
-//! How the caller gave a rotation (3x3 matrix or Rodrigues vector), so that it is written back so.
-struct RotationForm
-{
-    bool rodrigues = false;
-    int rows = 3, cols = 3;
-};
-
-//! The initial rotation of a refinement (named "R" in errors) and the form it came in.
-Eigen::Matrix3d readInitialRotation(InputArray R, RotationForm& form);
 
 //! @p rotation written to @p out in @p form.
 void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out);

@@ -85,7 +85,6 @@ bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const Ransac
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                     const RansacOptions& options, RobustEstimate& estimate)
 {
-    checkRansacOptions(options);
     const MultiStartRefiner refiner(views, options.refineOptions, &solver, hasSeveralBasins(views, scorer));
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
         return true;
@@ -98,14 +97,12 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
 double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
                          RefinedStructure* structure)
 {
-    checkRefineOptions(options);
     return refinePoseAndStructure(views, pose, options, nullptr, nullptr, structure).finalRms;
 }
 
 double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
                           const RefineOptions& options, RefinedStructure* structure)
 {
-    checkRefineOptions(options);
     return refinePosesAndStructure(views, poseOfView, poses, options, structure).finalRms;
 }
 

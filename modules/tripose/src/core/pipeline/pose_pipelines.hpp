@@ -30,8 +30,7 @@ several basins, from starts around the best one), the distinct minima ranked by 
 std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolver& solver, bool refine);
 
 /** The robust estimate: RANSAC over @p solver's samples scored by @p scorer, then the refinement
-that @p options asks for. @p options is checked first (Error naming "params.<field>").
-Returns false (and @p estimate's masks all zero) when no pose was found.
+that @p options asks for. @p options must be valid (checkRansacOptions()). Returns false (and @p estimate's masks all zero) when no pose was found.
 */
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                     const RansacOptions& options, RobustEstimate& estimate);
@@ -40,14 +39,14 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
 bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
                     RobustEstimate& estimate);
 
-/** Refines @p pose (in place) and the structure over every view of @p views; @p options is checked
-first. Returns the final RMS reprojection error (px).
+/** Refines @p pose (in place) and the structure over every view of @p views; @p options must be
+valid (checkRefineOptions()). Returns the final RMS reprojection error (px).
 */
 double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
                          RefinedStructure* structure = nullptr);
 
 /** Refines several poses (@p poseOfView, @p poses as in refinePosesAndStructure()) and the
-structure; @p options is checked first. Returns the final RMS reprojection error (px).
+structure; @p options must be valid. Returns the final RMS reprojection error (px).
 */
 double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,
                           const RefineOptions& options, RefinedStructure* structure = nullptr);

@@ -373,14 +373,6 @@ int viewsSeeing(const ViewSet& set, bool point, int i, int begin, int end)
     return seen;
 }
 
-//! The caller's name for the points (or lines) of every view: "points" for "points[2]".
-std::string kindName(const ArgumentMatrix& perViewArgument, const char* fallback)
-{
-    const std::string& name = perViewArgument.name;
-    const size_t bracket = name.find('[');
-    return bracket == std::string::npos ? std::string(fallback) : name.substr(0, bracket);
-}
-
 } // namespace
 
 Eigen::Vector3d readTranslation(const ArgumentMatrix& m, bool nonZero)
@@ -464,24 +456,22 @@ ViewSet buildMultiViewSet(const ProblemArguments& arguments, const std::vector<A
     TRIPOSE_ASSERT((int)set.views.size() == numKnown + 1);
     set.views[numKnown].estimated = true; // mounted at the identity: it is the estimated camera
     if (!knownCentresDiffer(set))
-        fail(ErrorCode::BadArgument, "%s: every known view has the same centre: no baseline fixes the scale",
-             kindName(ts[0], "ts").c_str());
+        fail(ErrorCode::BadArgument, "ts: every known view has the same centre: no baseline fixes the scale");
 
     const View& target = set.views[numKnown];
     for (int kind = 0; kind < 2; ++kind)
     {
         const bool point = kind == 0;
-        const std::string name = point ? kindName(arguments.views[0].points, "points")
-                                       : kindName(arguments.views[0].lines, "lines");
+        const char* name = point ? "points" : "lines";
         for (int i = 0; i < (point ? set.numPoints : set.numLines); ++i)
         {
             if (!(point ? target.seesPoint(i) : target.seesLine(i)))
                 fail(ErrorCode::BadArgument, "%s[%d] (the new view) does not see %s %d: every feature must be seen "
-                     "in the new view", name.c_str(), numKnown, point ? "point" : "line", i);
+                     "in the new view", name, numKnown, point ? "point" : "line", i);
             const int seen = viewsSeeing(set, point, i, 0, numKnown);
             if (seen < 2)
                 fail(ErrorCode::BadArgument, "%s %d is seen in %d known view(s) of %s: every feature must be seen in "
-                     "at least two known views", point ? "point" : "line", i, seen, name.c_str());
+                     "at least two known views", point ? "point" : "line", i, seen, name);
         }
     }
     requireFeatures(set.numPoints, set.numLines, minFeatures);
@@ -517,14 +507,13 @@ ViewSet buildSeveralPosesSet(const ProblemArguments& arguments, const std::vecto
     for (int kind = 0; kind < 2; ++kind)
     {
         const bool point = kind == 0;
-        const std::string name = point ? kindName(arguments.views[0].points, "points")
-                                       : kindName(arguments.views[0].lines, "lines");
+        const char* name = point ? "points" : "lines";
         for (int i = 0; i < (point ? set.numPoints : set.numLines); ++i)
         {
             const int seen = viewsSeeing(set, point, i, 0, numViews);
             if (seen < 2)
                 fail(ErrorCode::BadArgument, "%s %d is seen in %d view(s) of %s: every feature must be seen in at "
-                     "least two views", point ? "point" : "line", i, seen, name.c_str());
+                     "least two views", point ? "point" : "line", i, seen, name);
         }
     }
     requireFeatures(set.numPoints, set.numLines, 1);

@@ -36,7 +36,10 @@ in view 3 or 4.
 ViewSet buildStereoRigSet(const ProblemArguments& arguments, const ArgumentMatrix& R12, const ArgumentMatrix& t12,
                           int minFeatures);
 
-/** Registration against several known views: views = {known view 0, ..., known view V-1 at their
+/** The multi-view layouts name their per-view arguments points[v], lines[v], Rs[k] and ts[k], in
+every adapter; their errors name those.
+
+Registration against several known views: views = {known view 0, ..., known view V-1 at their
 world poses Rs[k], ts[k], the new view (estimated)}. At least two known views, not all at one
 centre; every feature seen in the new view and in at least two known views.
 */

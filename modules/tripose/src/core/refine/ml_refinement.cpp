@@ -352,7 +352,6 @@ private:
         {
             const Vector6d step = system_.poseStep().template segment<6>(6 * p);
             const Eigen::Vector3d omega = step.head<3>();
-            const double angle = omega.norm();
             const CameraPose& a = from.poses[p];
             CameraPose& b = to.poses[p];
             b.R = rotateLeft(omega, a.R);

@@ -116,10 +116,17 @@ private:
                 break;
         }
         const double t2 = params_.threshold * params_.threshold;
-        double cost = 0;
+        double cost = 0, inlierSquares = 0;
         for (const std::vector<double>* r : { &pointResiduals_, &lineResiduals_ })
             for (double e : *r)
+            {
                 cost += std::min(e * e, t2);
+                // The masks compare these same residuals with the threshold.
+                if (e < params_.threshold)
+                    inlierSquares += e * e;
+            }
+        estimate.inlierRms = estimate.numInliers > 0 ? std::sqrt(inlierSquares / estimate.numInliers)
+                                                     : std::numeric_limits<double>::quiet_NaN();
         return cost;
     }
 

@@ -19,6 +19,8 @@ struct RobustEstimate
     std::vector<unsigned char> pointInliers, lineInliers;
     int numInliers = 0;
     int iterations = 0; //!< Samples drawn.
+    //! RMS (px) over the inliers of the residuals that decide them (PoseScorer::refitResiduals()).
+    double inlierRms = 0;
 };
 
 /** LO-MSAC over the samples of @p solver, hypotheses scored by @p scorer against 2 x threshold,

@@ -28,7 +28,8 @@ void checkRefineOptions(const RefineOptions& options, const char* name, const Re
         fail(ErrorCode::BadArgument, "%s must be positive (got %d)", fieldName(name, fields.maxIterations).c_str(),
              options.maxIterations);
     if (options.loss != Loss::Squared && options.loss != Loss::Huber && options.loss != Loss::Cauchy)
-        fail(ErrorCode::BadArgument, "%s is not a known loss (got %d)", fieldName(name, fields.loss).c_str(), (int)options.loss);
+        fail(ErrorCode::BadArgument, "%s must be %s (got %d)", fieldName(name, fields.loss).c_str(), fields.lossValues,
+             (int)options.loss);
     if (!(options.lossScale > 0) || !std::isfinite(options.lossScale))
         fail(ErrorCode::BadArgument, "%s must be a positive, finite number of pixels (got %g)",
              fieldName(name, fields.lossScale).c_str(), options.lossScale);

@@ -10,7 +10,7 @@
 namespace tripose {
 
 //! Loss applied to the reprojection error of each observation (a point, or a segment's two end points, in one view).
-enum class Loss
+enum class Loss : int
 {
     Squared = 0, //!< Least squares: the maximum-likelihood estimate under Gaussian noise.
     Huber = 1,   //!< Quadratic up to RefineOptions::lossScale pixels, linear beyond.
@@ -38,13 +38,16 @@ struct RansacOptions
     uint64_t seed = 0;              //!< Seed of the sampler: the same seed gives the same result.
 };
 
-/** Checks @p options, throwing Error(BadArgument) that names the first field out of range as
-"<name>.<field>"; @p fieldNames gives each field's name in the caller's language.
+/** The checks of the options, which each adapter runs on what its caller passed (the pipelines
+expect valid options): Error(BadArgument) naming the first field out of range as "<name>.<field>",
+or "<field>" alone when @p name is empty. @p fieldNames gives the fields' names in the caller's
+language; the defaults are the C++ API's (RansacParams, RefineParams).
 */
 struct RefineOptionNames
 {
     const char* maxIterations = "maxIterations";
     const char* loss = "loss";
+    const char* lossValues = "LOSS_SQUARED (0), LOSS_HUBER (1) or LOSS_CAUCHY (2)";
     const char* lossScale = "lossScale";
     const char* tolerance = "tolerance";
 };
