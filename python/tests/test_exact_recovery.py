@@ -5,10 +5,9 @@ the precision of the arithmetic: rotation error < 1e-6 rad and |t - t_true| / |t
 solvers reach ~1e-10 on typical scenes; 1e-6 leaves room for ill-conditioned but valid ones).
 
 Why ">= 99 % of the scenes" and not all of them: random scenes include rare configurations close
-to degenerate ones, where a minimal solver loses the true root to rounding. Measured on 1000 scenes
-per mix, the package misses the truth in 0-2 of them (3P1L: seed 36; 0P4L: seeds 6 and 853 of
-three_view_scene); 99 % on 200 scenes allows two such scenes and fails on a third, i.e. on a
-failure rate ten times the measured one. The scenes are seeded, so each run checks the same ones.
+to degenerate ones, where a minimal solver loses the true root to rounding (the measured rate is in
+doc/accuracy.md). 99 % on 200 scenes allows two such scenes and fails on a third, about ten times
+that rate. The scenes are seeded, so each run checks the same ones.
 """
 import numpy as np
 import pytest
@@ -192,10 +191,9 @@ def test_ransac_is_deterministic_for_a_seed():
 
 
 # Refinement from a pose 2 degrees and 5 % of |t| away converges to the truth. Levenberg-Marquardt
-# from that far needs more than the default 30 iterations in a few scenes (measured on 200 per
-# problem: three-view seed 130, stereo seeds 7 and 128, multi-view seed 3; stereo seed 7 creeps at
-# an RMS of ~1.2 px for about 150 iterations); all converge within 300. The tests give 300 and
-# check every scene; test_refine_default_iterations_mostly_enough checks the default.
+# from that far needs more than the default 30 iterations in a few scenes (doc/accuracy.md), all of
+# them fewer than 300. The tests give 300 and check every scene;
+# test_refine_default_iterations_mostly_enough checks the default.
 REFINE_ITERATIONS = 300
 
 
@@ -232,7 +230,7 @@ def test_refine_from_perturbed_pose(kind):
 
 @pytest.mark.parametrize("kind", ["three", "stereo", "multi"])
 def test_refine_default_iterations_mostly_enough(kind):
-    # The default of 30 iterations: at most 2 of these 100 scenes may need more (0 or 1 measured).
+    # The default of 30 iterations: at most 2 of these 100 scenes may need more (doc/accuracy.md).
     slow = []
     for seed in range(100):
         s, r = refine_problem(kind, seed)
