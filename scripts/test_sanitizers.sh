@@ -29,6 +29,11 @@ nice cmake --build "$build" -j2
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# Under the sanitizers the suite runs single-threaded some 25 times slower. Two statistical tests
+# repeat, over hundreds of scenes, code paths that the rest of the suite runs under the sanitizers
+# too (the stereo RANSAC and refinement; the narrow-baseline multi-start search, kept in its 1 %
+# regime): they run at full speed in the standalone ctest and are left out here.
+export GTEST_FILTER="-Tripose_Stereo.ransac_reaches_the_four_view_limit_and_beats_the_alternatives:Regimes/Tripose_MlOptimum.estimates_reach_the_optimum_from_the_truth/1"
 log="$build/ctest.log"
 status=0
 (cd "$build" && ctest --output-on-failure) 2>&1 | tee "$log" || status=$?
