@@ -594,9 +594,9 @@ NB_MODULE(_tripose_ext, m)
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 
-    m.def("refine_poses_multiview",
-          [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts,
-             const std::vector<int>& fixedViews, nb::handle dist, int maxIterations, const std::string& loss,
+    m.def("adjust_poses_multiview",
+          [](nb::handle points, nb::handle lines, nb::handle K, const std::vector<int>& fixedViews, nb::handle Rs,
+             nb::handle ts, nb::handle dist, int maxIterations, const std::string& loss,
              double lossScale, double tolerance) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 0);
               const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
@@ -626,5 +626,5 @@ NB_MODULE(_tripose_ext, m)
               writeStructure(structure, views.numPoints, views.numLines, out);
               return out;
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("fixed_views"), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("fixed_views"), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
 }

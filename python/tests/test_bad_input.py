@@ -308,7 +308,7 @@ def test_multiview_catalogue(call, case):
     expect_rejected(call, argument, error, **multiview_args(**changes))
 
 
-def refine_poses_args(**changes):
+def adjust_poses_args(**changes):
     a = multiview_args(Rs=MULTI.Rs + [MULTI.R], ts=MULTI.ts + [MULTI.t], fixed_views=[True, True, False, False])
     a.update(changes)
     return a
@@ -323,8 +323,8 @@ def refine_poses_args(**changes):
     ("loss", ValueError, dict(loss="absolute")),
     ("Rs", TypeError, dict(Rs=np.stack(MULTI.Rs + [MULTI.R]))),
 ])
-def test_refine_poses_multiview_catalogue(argument, error, changes):
-    expect_rejected(tripose.refine_poses_multiview, argument, error, **refine_poses_args(**changes))
+def test_adjust_poses_multiview_catalogue(argument, error, changes):
+    expect_rejected(tripose.adjust_poses_multiview, argument, error, **adjust_poses_args(**changes))
 
 
 # Accepted variety: float32, any memory layout, lists.

@@ -250,7 +250,7 @@ def test_refine_three_view_rotation_vector_and_robust_losses():
         assert pose_close(r["R"], r["t"], s.R, s.t, TOL), loss
 
 
-def test_refine_poses_multiview_three_free_views():
+def test_adjust_poses_multiview_three_free_views():
     # Five views: the first two fixed (they fix frame and scale), the other three start perturbed.
     for seed in range(20):
         s = multiview_scene(seed, 12, 8, num_known=4, missing=0.0)
@@ -260,7 +260,7 @@ def test_refine_poses_multiview_three_free_views():
         for k in (2, 3, 4):
             Rs0[k], ts0[k] = perturb_pose(rng, Rs_true[k], ts_true[k])
         fixed = [True, True, False, False, False]
-        r = tripose.refine_poses_multiview(s.points, s.lines, s.K, Rs0, ts0, fixed, max_iterations=REFINE_ITERATIONS)
+        r = tripose.adjust_poses_multiview(s.points, s.lines, s.K, fixed, Rs0, ts0, max_iterations=REFINE_ITERATIONS)
         assert len(r["Rs"]) == 5 and len(r["ts"]) == 5
         for k in range(5):
             assert pose_close(r["Rs"][k], r["ts"][k], Rs_true[k], ts_true[k], TOL), (seed, k)

@@ -41,7 +41,7 @@ __all__ = [
     "estimate_pose_multiview",
     "estimate_pose_multiview_ransac",
     "refine_pose_multiview",
-    "refine_poses_multiview",
+    "adjust_poses_multiview",
 ]
 
 ArrayLike = Union[np.ndarray, Sequence[Any], None]
@@ -219,18 +219,19 @@ def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional
                                       str(loss), float(loss_scale), float(tolerance))
 
 
-def refine_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
-                           K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike],
-                           fixed_views: Sequence[bool], *, dist: ArrayLike = None, max_iterations: int = 30,
+def adjust_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                           K: ArrayLike, fixed_views: Sequence[bool], Rs: Sequence[ArrayLike],
+                           ts: Sequence[ArrayLike], *, dist: ArrayLike = None, max_iterations: int = 30,
                            loss: str = "squared", loss_scale: float = 1.0,
                            tolerance: float = 1e-10) -> Dict[str, Any]:
     """Local adjustment: the world poses of the views not in fixed_views and the structure refined
     together (at least two fixed views at distinct centres fix the frame and the scale).
 
-    Rs, ts: every view's world pose (the initial values of the free ones). Returns a dict: Rs, ts
-    (every view's pose; the fixed ones as given, made exact rotations), rms, points3d, lines3d.
+    fixed_views: one flag per view, true where its pose stays fixed. Rs, ts: every view's world pose
+    (the initial values of the free ones). Returns a dict: Rs, ts (every view's pose; the fixed ones
+    as given, made exact rotations), rms, points3d, lines3d.
     """
     flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
-    return _ext.refine_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
-                                       _view_list(ts, "ts"), flags, _per_view(dist), int(max_iterations), str(loss),
-                                       float(loss_scale), float(tolerance))
+    return _ext.adjust_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), flags,
+                                       _view_list(Rs, "Rs"), _view_list(ts, "ts"), _per_view(dist),
+                                       int(max_iterations), str(loss), float(loss_scale), float(tolerance))

@@ -123,9 +123,8 @@ double adjustFrames(const SequenceObservations& sequence, std::vector<TrackedFra
         l.clear();
     if (points.size() + lines.size() < (size_t)kMinFeatures)
         return std::numeric_limits<double>::infinity();
-    std::vector<cv::Mat> refinedRs, refinedTs;
-    const double rms =
-        cv::tripose::refinePosesMultiView(p, l, K, cv::noArray(), Rs, ts, fixedMask, refinedRs, refinedTs, params);
+    std::vector<cv::Mat> refinedRs = Rs, refinedTs = ts; // refined in place
+    const double rms = cv::tripose::adjustPosesMultiView(p, l, K, cv::noArray(), fixedMask, refinedRs, refinedTs, params);
     if (!std::isfinite(rms))
         return rms;
     for (size_t v = fixed.size(); v < all.size(); ++v)

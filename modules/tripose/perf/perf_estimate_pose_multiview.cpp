@@ -83,7 +83,10 @@ PERF_TEST_P(Tripose_RefinePosesMultiView, refine, testing::Values(MultiViewCount
     declare.iterations(100);
     TEST_CYCLE()
     {
-        cv::tripose::refinePosesMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, fixed, refinedRs, refinedTs);
+        // Every cycle from the same start: the poses are refined in place.
+        refinedRs.assign(Rs.begin(), Rs.end());
+        refinedTs.assign(ts.begin(), ts.end());
+        cv::tripose::adjustPosesMultiView(s.points, s.lines, s.K, noArray(), fixed, refinedRs, refinedTs);
     }
     SANITY_CHECK_NOTHING();
 }

@@ -17,7 +17,8 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
                           InputArray lines1, InputArray lines2, InputArray lines3,
                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                           InputArray R12, InputArray t12, OutputArray R, OutputArray t, int method,
-                          OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray reprojectionErrors)
+                          OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
+                          OutputArray reprojectionErrors)
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
@@ -26,7 +27,8 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
                                                                        cameraMatrix, distCoeffs, R12, t12);
         const detail::core::LinearPoseSolver solver(views);
         return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
-                                       R, t, Rs, ts, reprojectionErrors, "Rs", "ts");
+                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                       "candidateTs");
     });
 }
 

@@ -25,7 +25,8 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
                                 InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t, int method,
-                                OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray reprojectionErrors)
+                                OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
+                          OutputArray reprojectionErrors)
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
@@ -35,7 +36,8 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
                                        distCoeffs, R12, t12, kMinStereoFeatures);
         const detail::core::RigPoseSolver solver(views);
         return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
-                                       R, t, Rs, ts, reprojectionErrors, "Rs", "ts");
+                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                       "candidateTs");
     });
 }
 

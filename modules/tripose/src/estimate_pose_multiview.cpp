@@ -67,10 +67,10 @@ double refinePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, 
     });
 }
 
-double refinePosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
-                            InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
-                            InputArray fixedViews, OutputArrayOfArrays refinedRs, OutputArrayOfArrays refinedTs,
-                            const RefineParams& params, OutputArray points3d, OutputArray lines3d)
+double adjustPosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
+                            InputArrayOfArrays distCoeffs, InputArray fixedViews, InputOutputArrayOfArrays Rs,
+                            InputOutputArrayOfArrays ts, const RefineParams& params, OutputArray points3d,
+                            OutputArray lines3d)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
@@ -81,8 +81,7 @@ double refinePosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines,
         const detail::core::RefineOptions options = detail::toCoreOptions(params);
         detail::core::RefinedStructure structure;
         const double rms = detail::core::refineSeveralPoses(views, poseOfView, poses, options, &structure);
-        detail::writePoseVectors(detail::core::allViewPoses(views, poseOfView, poses), refinedRs, refinedTs,
-                                 "refinedRs", "refinedTs");
+        detail::writePoseVectors(detail::core::allViewPoses(views, poseOfView, poses), Rs, ts, "Rs", "ts");
         detail::writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
         return rms;
     });

@@ -237,7 +237,7 @@ TEST_F(Tripose_BadInput, homogeneous_lines_with_distortion)
 
 // Flags and outputs of the linear solver.
 TEST_F(Tripose_BadInput, unknown_method) { call.method = 42; expectRejectedBy(LINEAR, call, "method"); }
-TEST_F(Tripose_BadInput, candidates_output_not_a_vector) { call.candidatesAsMat = true; expectRejectedBy(LINEAR, call, "Rs"); }
+TEST_F(Tripose_BadInput, candidates_output_not_a_vector) { call.candidatesAsMat = true; expectRejectedBy(LINEAR, call, "candidateRs"); }
 
 // Parameters of the robust estimator.
 TEST_F(Tripose_BadInput, ransac_threshold_zero) { call.ransac.threshold = 0; expectRejectedBy(RANSAC, call, "params.threshold"); }

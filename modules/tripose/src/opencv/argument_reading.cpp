@@ -294,16 +294,6 @@ Eigen::Vector3d readTranslation(InputArray translation, const char* name, bool n
     return core::readTranslation(readTranslationArgument(translation, name), nonZero);
 }
 
-Eigen::Matrix3d readInitialRotation(InputArray arr, RotationForm& form)
-{
-    const Mat m = arr.getMat();
-    form.rodrigues = m.total() * m.channels() == 3;
-    form.rows = m.rows;
-    form.cols = m.cols;
-    // Validated like R12; returned as an exact rotation, which the multiplicative update needs.
-    return readRotation(arr, "R");
-}
-
 } // namespace detail
 } // namespace tripose
 } // namespace cv

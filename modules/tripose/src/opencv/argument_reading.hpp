@@ -39,7 +39,7 @@ core::ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays l
                                  InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
                                  int minFeatures);
 
-//! Several views whose poses are refined together (refinePosesMultiView()).
+//! Several views whose poses are refined together (adjustPosesMultiView()).
 core::ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArrays lines,
                                     InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                     InputArrayOfArrays Rs, InputArrayOfArrays ts, InputArray fixedViews,
@@ -47,16 +47,6 @@ core::ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArray
 
 //! A 3x3 rotation matrix or a Rodrigues vector, checked and made an exact rotation.
 Eigen::Matrix3d readRotation(InputArray rotation, const char* name);
-
-//! How the caller gave a rotation (3x3 matrix or Rodrigues vector), so that it is written back so.
-struct RotationForm
-{
-    bool rodrigues = false;
-    int rows = 3, cols = 3;
-};
-
-//! The initial rotation of a refinement (named "R" in errors) and the form it came in.
-Eigen::Matrix3d readInitialRotation(InputArray R, RotationForm& form);
 
 //! A 3-element translation, finite (and non-zero with @p nonZero).
 Eigen::Vector3d readTranslation(InputArray translation, const char* name, bool nonZero);

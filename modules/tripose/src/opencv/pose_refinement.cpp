@@ -17,15 +17,14 @@ namespace detail {
 double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
                        OutputArray points3d, OutputArray lines3d)
 {
-    RotationForm form;
     core::CameraPose pose;
-    pose.R = readInitialRotation(R, form);
+    // An exact rotation, which the multiplicative update needs.
+    pose.R = readRotation(R, "R");
     pose.t = readTranslation(t, "t", false);
     const core::RefineOptions options = toCoreOptions(params);
     core::RefinedStructure structure;
     const double rms = core::refineInitialPose(views, pose, options, &structure);
-    writeRotation(pose.R, form, R);
-    Mat(Matx31d(pose.t.x(), pose.t.y(), pose.t.z())).copyTo(t);
+    writePose(&pose, R, t);
     writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
     return rms;
 }

@@ -4,7 +4,6 @@
 
 #include "../precomp.hpp"
 
-#include "opencv_compat.hpp"
 #include "result_writing.hpp"
 
 namespace cv {
@@ -127,19 +126,6 @@ void writeStructure(const core::RefinedStructure& structure, int numPoints, int 
                 out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
             }
     }
-}
-
-void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out)
-{
-    const Mat R = toMat(rotation);
-    if (!form.rodrigues)
-    {
-        R.copyTo(out);
-        return;
-    }
-    Mat rvec;
-    Rodrigues(R, rvec);
-    rvec.reshape(1, form.rows).copyTo(out);
 }
 
 } // namespace detail

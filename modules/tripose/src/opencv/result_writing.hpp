@@ -19,7 +19,7 @@ namespace cv {
 namespace tripose {
 namespace detail {
 
-//! R (3x3) and t (3x1) as CV_64F; both released when @p pose is null.
+//! R (3x3) and t (3x1) as CV_64F, the one form of every pose output; both released when @p pose is null.
 void writePose(const core::CameraPose* pose, OutputArray R, OutputArray t);
 
 /** @p poses into vectors of 3x3 rotations and 3x1 translations (CV_64F), where wanted;
@@ -42,9 +42,6 @@ int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, Output
 //! The refined structure (Nx3 points, Mx6 line end points, CV_64F), where wanted.
 void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
                     OutputArray lines3d);
-
-//! @p rotation written to @p out in @p form.
-void writeRotation(const Eigen::Matrix3d& rotation, const RotationForm& form, OutputArray out);
 
 } // namespace detail
 } // namespace tripose

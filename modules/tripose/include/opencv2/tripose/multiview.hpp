@@ -6,7 +6,6 @@
 #define OPENCV_TRIPOSE_MULTIVIEW_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/tripose/compat.hpp"
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"
@@ -100,7 +99,7 @@ structure are estimated, the known views are fixed; each feature contributes its
 view that sees it.
 
 Arguments as in estimatePoseMultiView() and refinePoseLinePoint().
-@param R Input: initial rotation of the new view (3x3 or Rodrigues). Output: refined, in the same form, CV_64F.
+@param R Input: initial rotation of the new view (3x3 or Rodrigues). Output: the refined rotation, 3x3 CV_64F.
 @param t Input: initial translation of the new view. Output: 3x1 CV_64F.
 @param params See RefineParams.
 @param points3d Optional output: Nx3 CV_64F refined points in the world frame.
@@ -117,10 +116,8 @@ CV_EXPORTS_W double refinePoseMultiView(
     const RefineParams& params = RefineParams(),
     OutputArray points3d = noArray(), OutputArray lines3d = noArray());
 
-//! @}
-
-/** @brief Maximum-likelihood refinement of several views' poses and the structure together (a bundle
-adjustment in which some views stay fixed), for the local refinement of a tracker's recent frames.
+/** @brief Local adjustment: maximum-likelihood refinement of several views' poses and the structure
+together (a bundle adjustment in which some views stay fixed), for the recent frames of a tracker.
 
 V views at world poses \f$[R_k | t_k]\f$ (k = 0..V-1), each mapping a world point \f$X\f$ to
 \f$x \sim K_k(R_k X + t_k)\f$. The views whose @p fixedViews entry is zero are refined together with
@@ -140,12 +137,12 @@ none. An empty vector means no points.
 @param lines One array per view likewise: Mx4 segments or Mx3 homogeneous lines (one kind in all views).
 @param cameraMatrix One 3x3 intrinsic matrix shared by every view, or a vector of V.
 @param distCoeffs Distortion coefficients, one vector or V; empty for none.
-@param Rs Initial world rotations of the V views (3x3 or Rodrigues, CV_32F/CV_64F); the fixed ones' are their poses.
-@param ts Initial world translations of the V views (3 elements each).
 @param fixedViews V values (CV_8U, CV_8S or CV_32S): nonzero where the view's pose is fixed.
-@param refinedRs Output: V 3x3 CV_64F rotations, the free views' refined, the fixed views' as given
-(as the nearest exact rotation, like every input rotation).
-@param refinedTs Output: V 3x1 CV_64F translations likewise.
+@param Rs Input: the V views' world rotations (3x3 or Rodrigues, CV_32F/CV_64F), the free ones' as
+initial values. Output: V 3x3 CV_64F rotations, the free views' refined, the fixed views' as given
+(as the nearest exact rotation, like every input rotation). A std::vector<Mat>.
+@param ts Input: the V views' world translations (3 elements each). Output: V 3x1 CV_64F
+translations likewise. A std::vector<Mat>.
 @param params See RefineParams.
 @param points3d Optional output: Nx3 CV_64F refined points in the world frame.
 @param lines3d Optional output: Mx6 CV_64F, two points of each refined line (see refinePoseMultiView()).
@@ -155,13 +152,15 @@ that enter the cost; +inf when none does (poses then unchanged).
 view is fixed, fewer than two fixed views or fixed views at one centre, or a feature seen by fewer
 than two views.
 */
-CV_EXPORTS_W double refinePosesMultiView(
+CV_EXPORTS_W double adjustPosesMultiView(
     InputArrayOfArrays points, InputArrayOfArrays lines,
     CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
-    InputArrayOfArrays Rs, InputArrayOfArrays ts, InputArray fixedViews,
-    OutputArrayOfArrays refinedRs, OutputArrayOfArrays refinedTs,
+    InputArray fixedViews,
+    InputOutputArrayOfArrays Rs, InputOutputArrayOfArrays ts,
     const RefineParams& params = RefineParams(),
     OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+
+//! @}
 
 } // namespace tripose
 } // namespace cv

@@ -6,7 +6,6 @@
 #define OPENCV_TRIPOSE_POSE_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/tripose/compat.hpp"
 
 namespace cv {
 namespace tripose {
@@ -68,9 +67,9 @@ shared by the views or a vector of three; empty means no distortion.
 @param R Output rotation of view 3 (3x3, CV_64F): the best candidate. Empty when no solution is found.
 @param t Output translation of view 3 (3x1, CV_64F).
 @param method One of #PoseMethod.
-@param Rs Optional output: every candidate rotation (3x3 CV_64F), best first.
-@param ts Optional output: the matching translations (3x1 CV_64F).
-@param reprojectionErrors Optional output: per candidate, in pixels (CV_64F, same order as Rs): the
+@param candidateRs Optional output: every candidate rotation (3x3 CV_64F), best first.
+@param candidateTs Optional output: the matching translations (3x1 CV_64F).
+@param reprojectionErrors Optional output: per candidate, in pixels (CV_64F, same order as candidateRs): the
 RMS reprojection error in view 3 (POSE_LINEAR) or over the three views after refinement
 (POSE_LINEAR_REFINE).
 @return The number of candidate poses (0 when the geometry admits none, e.g. degenerate input).
@@ -86,7 +85,7 @@ CV_EXPORTS_W int estimatePoseLinePoint(
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,
-    OutputArrayOfArrays Rs = noArray(), OutputArrayOfArrays ts = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
     OutputArray reprojectionErrors = noArray());
 
 //! @}

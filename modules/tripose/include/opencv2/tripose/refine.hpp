@@ -6,7 +6,6 @@
 #define OPENCV_TRIPOSE_REFINE_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/tripose/compat.hpp"
 
 namespace cv {
 namespace tripose {
@@ -22,7 +21,9 @@ enum RobustLoss
     LOSS_CAUCHY = 2,  //!< \f$c^2 \log(1 + e^2 / c^2)\f$ with \f$c\f$ = RefineParams::lossScale: gross errors barely count.
 };
 
-/** @brief Parameters of refinePoseLinePoint().
+/** @brief Parameters of the maximum-likelihood refinement: refinePoseLinePoint(),
+refinePoseLinePointStereo(), refinePoseMultiView(), adjustPosesMultiView(), and the final stage of
+the RANSAC estimators (RansacParams::refineParams).
 */
 struct CV_EXPORTS_W_SIMPLE RefineParams
 {
@@ -67,8 +68,8 @@ the point of the line closest to the principal point stand in for the end points
 @param R12 Rotation of view 2: 3x3 matrix or 3-element Rodrigues vector, CV_32F or CV_64F.
 @param t12 Translation of view 2, 3x1 or 1x3, non-zero.
 @param R Input: initial rotation of view 3, 3x3 matrix or 3-element Rodrigues vector, CV_32F or
-CV_64F. Output: the refined rotation as CV_64F, in the form it was given (a Rodrigues vector keeps
-its shape).
+CV_64F. Output: the refined rotation, 3x3 CV_64F (like every rotation output; a Rodrigues vector
+given here comes back as a matrix).
 @param t Input: initial translation of view 3, 3 elements, CV_32F or CV_64F. Output: 3x1 CV_64F.
 @param params See RefineParams.
 @param points3d Optional output: Nx3 CV_64F refined 3D points in the frame of view 1.

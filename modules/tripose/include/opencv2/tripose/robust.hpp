@@ -6,7 +6,6 @@
 #define OPENCV_TRIPOSE_ROBUST_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/tripose/compat.hpp"
 #include "opencv2/tripose/refine.hpp"
 
 namespace cv {
@@ -15,23 +14,25 @@ namespace tripose {
 //! @addtogroup tripose_pose
 //! @{
 
-/** @brief Parameters of estimatePoseLinePointRansac().
+/** @brief Parameters of the RANSAC estimators: estimatePoseLinePointRansac(),
+estimatePoseLinePointStereoRansac() and estimatePoseMultiViewRansac().
 */
 struct CV_EXPORTS_W_SIMPLE RansacParams
 {
     CV_WRAP RansacParams();
     /** Inlier threshold in pixels (default 2). A feature is an inlier of the returned pose when its
-    RMS reprojection error over the three views, the feature re-triangulated from all three with
-    that pose, is below it (a point: its two coordinates in each view; a line: the distances of its
-    two observed end points to the projected 3D line in each view). While sampling, hypotheses are
-    scored on view 3 alone against structure triangulated from views 1-2, which carries the
+    RMS reprojection error over every view that sees it, the feature re-triangulated from all of
+    them with that pose, is below it (a point: its two coordinates in each view; a line: the
+    distances of its two observed end points to the projected 3D line in each view). While
+    sampling, hypotheses are scored on the estimated view(s) alone (view 3; views 3 and 4 of a rig;
+    the new view) against structure triangulated from the known views, which carries the
     triangulation error of those views: there the threshold is doubled.
     */
     CV_PROP_RW double threshold;
     CV_PROP_RW double confidence;      //!< Probability, in (0, 1), of drawing at least one all-inlier sample (default 0.999).
     CV_PROP_RW int maxIterations;      //!< Upper bound on the number of samples (default 10000).
     CV_PROP_RW bool localOptimization; //!< Re-estimate from the inliers of every new best model (default true).
-    CV_PROP_RW bool refine;            //!< Finish with refinePoseLinePoint() over the inliers, with refineParams (default true).
+    CV_PROP_RW bool refine;            //!< Finish with the maximum-likelihood refinement over the inliers (refinePoseLinePoint() and its siblings), with refineParams (default true).
     CV_PROP_RW RefineParams refineParams; //!< Parameters of the final refinement (default RefineParams()).
     CV_PROP_RW int seed;               //!< Seed of the sampler: the same seed gives the same result (default 0).
 };

@@ -6,7 +6,6 @@
 #define OPENCV_TRIPOSE_STEREO_HPP
 
 #include "opencv2/core.hpp"
-#include "opencv2/tripose/compat.hpp"
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"
@@ -57,8 +56,8 @@ right, left, right for a rig with two different cameras).
 @param R Output rotation of view 3 (3x3, CV_64F): the best candidate; empty when there is none.
 @param t Output translation of view 3 (3x1, CV_64F), metric.
 @param method POSE_LINEAR or POSE_LINEAR_REFINE.
-@param Rs Optional output: every candidate rotation, best first.
-@param ts Optional output: the matching translations.
+@param candidateRs Optional output: every candidate rotation (3x3 CV_64F), best first.
+@param candidateTs Optional output: the matching translations (3x1 CV_64F).
 @param reprojectionErrors Optional output: per candidate, the RMS reprojection error (px) in views 3
 and 4 (POSE_LINEAR) or over the four views after refinement (POSE_LINEAR_REFINE).
 @return The number of candidate poses (0 when the features do not determine the motion).
@@ -73,7 +72,7 @@ CV_EXPORTS_W int estimatePoseLinePointStereo(
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,
-    OutputArrayOfArrays Rs = noArray(), OutputArrayOfArrays ts = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
     OutputArray reprojectionErrors = noArray());
 
 /** @brief Robust motion of a stereo rig from point and line correspondences with outliers.
@@ -107,7 +106,7 @@ and the structure are estimated, view 4 moves with view 3 (the rig is kept rigid
 fixed; each feature contributes its residuals in the views that see it.
 
 Arguments as in estimatePoseLinePointStereo() and refinePoseLinePoint().
-@param R Input: initial rotation of view 3 (3x3 or Rodrigues). Output: refined, in the same form, CV_64F.
+@param R Input: initial rotation of view 3 (3x3 or Rodrigues). Output: the refined rotation, 3x3 CV_64F.
 @param t Input: initial translation of view 3. Output: 3x1 CV_64F.
 @param params See RefineParams.
 @param points3d Optional output: Nx3 CV_64F refined points in the frame of view 1.

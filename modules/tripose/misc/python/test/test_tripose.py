@@ -805,7 +805,7 @@ class tripose_test(NewOpenCVTests):
         expect_error('unknown_method', 'method', dict(method=3), ('linear',))
 
     def test_multiview(self):
-        self.assertTrue(hasattr(cv.tripose, 'refinePosesMultiView'), 'cv.tripose.refinePosesMultiView is missing from the bindings')
+        self.assertTrue(hasattr(cv.tripose, 'refinePoseMultiView'), 'cv.tripose.refinePoseMultiView is missing from the bindings')
         # Registration against four known views that each see a random subset of the features:
         # exact without noise (linear and refined), the inliers found among gross outliers.
         for seed in range(3):
@@ -819,7 +819,8 @@ class tripose_test(NewOpenCVTests):
             rms, R1, t1 = cv.tripose.refinePoseMultiView(scene.points, scene.lines, scene.K, None, scene.Rs,
                                                          scene.ts, rvec, scene.t + 0.2)[:3]
             self.assertLess(rms, 1e-6, what)
-            self.check_pose(cv.Rodrigues(R1)[0], t1, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
+            self.assertEqual(R1.shape, (3, 3), what)  # a rotation vector in, a matrix out
+            self.check_pose(R1, t1, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
         scene = make_multiview_scene(4, 30, 10, 7, outliers=0.3)
         params = cv.tripose.RansacParams()
         params.seed = 1
@@ -836,7 +837,7 @@ class tripose_test(NewOpenCVTests):
             self.assertTrue(names_argument(str(e), 'Rs'), str(e))
 
     def test_multiview_several_poses(self):
-        self.assertTrue(hasattr(cv.tripose, 'refinePosesMultiView'), 'cv.tripose.refinePosesMultiView is missing from the bindings')
+        self.assertTrue(hasattr(cv.tripose, 'adjustPosesMultiView'), 'cv.tripose.adjustPosesMultiView is missing from the bindings')
         # Views 0 and 1 fixed, the other known views and the new one moved off: the joint refinement
         # returns every pose exactly; the fixed ones come back as given.
         scene = make_multiview_scene(4, 20, 20, 11)
@@ -847,8 +848,8 @@ class tripose_test(NewOpenCVTests):
                    for v, R in enumerate(Rs)]
         start_t = [t if v < 2 else t + rng.uniform(-0.3, 0.3, (3, 1)) for v, t in enumerate(ts)]
         fixed = np.array([1, 1, 0, 0, 0], np.uint8)
-        rms, refined_R, refined_t, points3d, lines3d = cv.tripose.refinePosesMultiView(
-            scene.points, scene.lines, scene.K, None, start_R, start_t, fixed)
+        rms, refined_R, refined_t, points3d, lines3d = cv.tripose.adjustPosesMultiView(
+            scene.points, scene.lines, scene.K, None, fixed, start_R, start_t)
         self.assertLess(rms, 1e-6)
         self.assertEqual(len(refined_R), 5)
         self.assertEqual(points3d.shape, (20, 3))
@@ -858,8 +859,8 @@ class tripose_test(NewOpenCVTests):
             self.assertLess(translation_error(refined_t[v], ts[v]), EXACT_TRANSLATION, 'view %d' % v)
         for bad, name in (([1, 0, 0, 0, 0], 'fixedViews'), ([1, 1, 1, 1, 1], 'fixedViews'), ([1, 1, 0], 'fixedViews')):
             try:
-                cv.tripose.refinePosesMultiView(scene.points, scene.lines, scene.K, None, start_R, start_t,
-                                                np.array(bad, np.uint8))
+                cv.tripose.adjustPosesMultiView(scene.points, scene.lines, scene.K, None, np.array(bad, np.uint8),
+                                                start_R, start_t)
                 self.fail('fixedViews %s was accepted' % bad)
             except cv.error as e:
                 self.assertTrue(names_argument(str(e), name), str(e))
