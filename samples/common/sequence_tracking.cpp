@@ -212,4 +212,11 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
     return frames;
 }
 
+std::vector<std::string> trackResultKeys()
+{
+    return { "sequence",           "correspondences", "window",      "method",        "local_refine",
+             "poses",              "status",          "features",    "inliers",       "rotation_error_deg",
+             "position_error",     "path_length",     "drift_percent", "ms_per_frame" };
+}
+
 } // namespace tripose_samples

@@ -9,6 +9,7 @@
 #ifndef TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
 #define TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
 
+#include <string>
 #include <vector>
 
 #include <opencv2/tripose.hpp>
@@ -29,7 +30,7 @@ struct TrackOptions
     bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
     /** Local adjustment after each registration: the registered frames of the window, the new one
-    included, and the structure refined together (refinePosesMultiView, Huber loss at the RANSAC
+    included, and the structure refined together (adjustPosesMultiView, Huber loss at the RANSAC
     threshold) against every earlier frame with a pose, held fixed (frames 0 and 1 among them). */
     bool localAdjustment = false;
 };
@@ -60,7 +61,7 @@ bool registrationViews(const SequenceObservations& sequence, const std::vector<T
                        std::vector<cv::Mat>& cameraMatrices, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts,
                        int& features);
 
-/** Refines frames @p free and the structure together (refinePosesMultiView) with frames @p fixed held,
+/** Refines frames @p free and the structure together (adjustPosesMultiView) with frames @p fixed held,
 on the features seen by at least two of these frames, one of them free. Returns the RMS error (px);
 +inf, frames unchanged, when the refinement fails or fewer than four features qualify.
 @p fixed must hold two frames at distinct centres.
@@ -74,6 +75,10 @@ shares four features with them. Frames 0 and 1 are given.
 @throws cv::Exception when the observations are inconsistent (from the module, naming the argument).
 */
 std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options);
+
+//! The top-level keys of tripose_track's result file (poses: one row per frame, R row-major then t),
+//! which tools that read the file back check its keys against.
+std::vector<std::string> trackResultKeys();
 
 } // namespace tripose_samples
 

@@ -9,16 +9,20 @@
 //       each frame from 2 on registered (RANSAC + refinement) against every other frame at the
 //       sequence's poses: the error of registration alone, per frame in % of the path;
 //   tripose_tracking_study --data <sequence> --adjust [--start track.yml] [--loss squared|huber]
-//       every frame from 2 on and the structure refined together (refinePosesMultiView, frames 0
+//       every frame from 2 on and the structure refined together (adjustPosesMultiView, frames 0
 //       and 1 fixed; Huber loss at 2 px by default), started at the sequence's poses or at the poses
 //       of a tripose_track output: the maximum-likelihood estimate of the whole sequence given
-//       frames 0 and 1; prints each frame's position error and the last frame's drift.
+//       frames 0 and 1; prints each frame's position error and the last frame's drift. A key of
+//       track.yml that tripose_track does not write is an error naming it (--allow-unknown-keys:
+//       accept such keys).
 
+#include <exception>
 #include <iostream>
 #include <string>
 
 #include <opencv2/tripose.hpp>
 
+#include "problem_io.hpp"
 #include "sequence_tracking.hpp"
 #include "tripose_support/vgg_dataset.hpp"
 
@@ -35,7 +39,7 @@ int main(int argc, char** argv)
 {
     std::string data, start;
     std::string loss = "huber";
-    bool floor = false, adjust = false;
+    bool floor = false, adjust = false, allowUnknownKeys = false;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -49,6 +53,8 @@ int main(int argc, char** argv)
             adjust = true;
         else if (arg == "--floor")
             floor = true;
+        else if (arg == "--allow-unknown-keys")
+            allowUnknownKeys = true;
         else
         {
             std::cerr << "tripose_tracking_study: unknown or incomplete argument " << arg << "\n";
@@ -58,7 +64,7 @@ int main(int argc, char** argv)
     if (floor == adjust || (loss != "huber" && loss != "squared"))
     {
         std::cerr << "usage: tripose_tracking_study --data <sequence> (--floor | --adjust [--start track.yml] "
-                     "[--loss squared|huber])\n";
+                     "[--loss squared|huber] [--allow-unknown-keys])\n";
         return 1;
     }
     try
@@ -108,7 +114,12 @@ int main(int argc, char** argv)
             cv::FileStorage fs(start, cv::FileStorage::READ);
             cv::Mat poses;
             if (fs.isOpened())
+            {
+                // A typo ("pose") would otherwise read as a missing key and a confusing message.
+                if (!allowUnknownKeys)
+                    tripose_samples::checkKeys(fs.root().keys(), tripose_samples::trackResultKeys(), start);
                 fs["poses"] >> poses;
+            }
             if (poses.rows != F || poses.cols != 12 || poses.type() != CV_64F || !cv::checkRange(poses.rowRange(2, F)))
             {
                 std::cerr << "tripose_tracking_study: " << start << ": expected poses, " << F
@@ -141,6 +152,11 @@ int main(int argc, char** argv)
     catch (const cv::Exception& e)
     {
         std::cerr << "tripose_tracking_study: " << e.err << "\n";
+        return 1;
+    }
+    catch (const std::exception& e) // an unknown key of --start's file
+    {
+        std::cerr << "tripose_tracking_study: " << e.what() << "\n";
         return 1;
     }
     return 0;

@@ -1,9 +1,9 @@
 """Keys the tools do not know are errors: a misspelt key (point1 for points1) would otherwise read as
 an absent one and give a wrong answer or a message about something else. Each tool that reads a
-key/value file (tripose_estimate: the problem file; tripose_stereo_chessboard: the image list) names
-the unknown key and the nearest known one, exits with status 1 and writes nothing;
---allow-unknown-keys reads a file that carries other data. tripose_track reads the VGG sequences'
-own text files, which have no keys.
+key/value file (tripose_estimate: the problem file; tripose_stereo_chessboard: the image list;
+tripose_tracking_study: the track file of --start) names the unknown key and the nearest known one,
+exits with status 1 and writes nothing; --allow-unknown-keys reads a file that carries other data.
+tripose_track reads the VGG sequences' own text files, which have no keys.
 """
 import subprocess
 
@@ -185,3 +185,22 @@ def test_chessboard_list_with_other_data(tmp_path, extension):
     (data / name).write_text(list_text(extension, "imagelist"))
     proc = chessboard(data, name)
     assert proc.returncode == 0, proc.stderr
+
+
+def run_tracking_study(track_file, *extra):
+    study = build_tool("tripose_tracking_study", folder="test/evaluation")
+    return subprocess.run([str(study), "--data", str(REPO / "test" / "data" / "vgg" / "Merton-College-I"),
+                           "--adjust", "--start", str(track_file), *extra], capture_output=True, text=True)
+
+
+def test_tracking_study_start_file_key_is_checked(tmp_path):
+    # The --start file is tripose_track's output; "pose" for "poses" is named with the nearest key.
+    track = tmp_path / "track.yml"
+    write_problem(track, {"pose": np.zeros((3, 12)), "window": np.array([[5.0]])})
+    proc = run_tracking_study(track)
+    assert proc.returncode == 1, (proc.stdout, proc.stderr)
+    assert f"unknown key 'pose' in {track} (did you mean 'poses'?)" in proc.stderr, proc.stderr
+    # Opted out, the key check passes and the file is then read for what it lacks: the poses.
+    proc = run_tracking_study(track, "--allow-unknown-keys")
+    assert proc.returncode == 1, (proc.stdout, proc.stderr)
+    assert "unknown key" not in proc.stderr and "expected poses" in proc.stderr, proc.stderr
