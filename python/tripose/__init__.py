@@ -48,25 +48,9 @@ ArrayLike = Union[np.ndarray, Sequence[Any], None]
 Pose = Tuple[np.ndarray, np.ndarray]
 
 
-def _array(value: Any) -> Any:
-    """numpy arrays pass through untouched (the extension reads any layout); lists are converted."""
-    if value is None or type(value) is np.ndarray:
-        return value
-    if isinstance(value, (list, tuple)) and (len(value) == 0 or not isinstance(value[0], np.ndarray)):
-        return np.asarray(value, dtype=np.float64)
-    return value
-
-
 def _seed(seed: int) -> int:
     """A seed as the 64 bits the sampler's generator starts from (a negative seed is a valid seed)."""
     return int(seed) & 0xFFFFFFFFFFFFFFFF
-
-
-def _per_view(value: Any) -> Any:
-    """K or dist: one array, or a list/tuple of one per view."""
-    if isinstance(value, (list, tuple)) and len(value) > 0 and isinstance(value[0], np.ndarray):
-        return list(value)
-    return _array(value)
 
 
 def _view_list(value: Any, name: str) -> Any:
@@ -75,7 +59,7 @@ def _view_list(value: Any, name: str) -> Any:
         return None
     if not isinstance(value, (list, tuple)):
         raise TypeError(f"{name} must be a list of arrays, one per view, got {type(value).__name__}")
-    return [_array(v) for v in value]
+    return list(value)
 
 
 def estimate_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
@@ -90,9 +74,9 @@ def estimate_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: Ar
     Returns the candidate poses as a list of (R, t), best first (lowest reprojection error in
     view 3); empty when the geometry determines no pose.
     """
-    return _ext.estimate_pose_line_point(_array(points1), _array(points2), _array(points3), _array(lines1),
-                                         _array(lines2), _array(lines3), _per_view(K), _array(R12), _array(t12),
-                                         _per_view(dist), bool(refine))
+    return _ext.estimate_pose_line_point(points1, points2, points3, lines1,
+                                         lines2, lines3, K, R12, t12,
+                                         dist, bool(refine))
 
 
 def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
@@ -113,9 +97,9 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     in the frame of view 1, x_cam = R @ X + t; view 2 is at [R12 | t12] (see help(tripose) for the
     conventions).
     """
-    return _ext.estimate_pose_line_point_ransac(_array(points1), _array(points2), _array(points3), _array(lines1),
-                                                _array(lines2), _array(lines3), _per_view(K), _array(R12),
-                                                _array(t12), _per_view(dist), float(threshold), float(confidence),
+    return _ext.estimate_pose_line_point_ransac(points1, points2, points3, lines1,
+                                                lines2, lines3, K, R12,
+                                                t12, dist, float(threshold), float(confidence),
                                                 int(max_iterations), bool(refine), _seed(seed))
 
 
@@ -133,9 +117,9 @@ def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: Arra
     Returns a dict: R (3x3), t (3,), rms (final RMS reprojection error, px), points3d (N, 3),
     lines3d (M, 6: two 3D end points per line).
     """
-    return _ext.refine_pose_line_point(_array(points1), _array(points2), _array(points3), _array(lines1),
-                                       _array(lines2), _array(lines3), _per_view(K), _array(R12), _array(t12),
-                                       _array(R), _array(t), _per_view(dist), int(max_iterations), str(loss),
+    return _ext.refine_pose_line_point(points1, points2, points3, lines1,
+                                       lines2, lines3, K, R12, t12,
+                                       R, t, dist, int(max_iterations), str(loss),
                                        float(loss_scale), float(tolerance))
 
 
@@ -149,9 +133,9 @@ def estimate_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, poin
     of them does not see a feature; every feature must be seen in view 3 or 4). (R12, t12): the rig.
     Returns the candidates as a list of (R, t), best first.
     """
-    return _ext.estimate_pose_line_point_stereo(_array(points1), _array(points2), _array(points3), _array(points4),
-                                                _array(lines1), _array(lines2), _array(lines3), _array(lines4),
-                                                _per_view(K), _array(R12), _array(t12), _per_view(dist),
+    return _ext.estimate_pose_line_point_stereo(points1, points2, points3, points4,
+                                                lines1, lines2, lines3, lines4,
+                                                K, R12, t12, dist,
                                                 bool(refine))
 
 
@@ -165,8 +149,8 @@ def estimate_pose_line_point_stereo_ransac(points1: ArrayLike, points2: ArrayLik
     estimate_pose_line_point_ransac for the arguments). Returns the dict of
     estimate_pose_line_point_ransac."""
     return _ext.estimate_pose_line_point_stereo_ransac(
-        _array(points1), _array(points2), _array(points3), _array(points4), _array(lines1), _array(lines2),
-        _array(lines3), _array(lines4), _per_view(K), _array(R12), _array(t12), _per_view(dist), float(threshold),
+        points1, points2, points3, points4, lines1, lines2,
+        lines3, lines4, K, R12, t12, dist, float(threshold),
         float(confidence), int(max_iterations), bool(refine), _seed(seed))
 
 
@@ -178,9 +162,9 @@ def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points
     """Maximum-likelihood refinement of a stereo rig's motion over its four views (arguments and
     result as refine_pose_line_point)."""
     return _ext.refine_pose_line_point_stereo(
-        _array(points1), _array(points2), _array(points3), _array(points4), _array(lines1), _array(lines2),
-        _array(lines3), _array(lines4), _per_view(K), _array(R12), _array(t12), _array(R), _array(t),
-        _per_view(dist), int(max_iterations), str(loss), float(loss_scale), float(tolerance))
+        points1, points2, points3, points4, lines1, lines2,
+        lines3, lines4, K, R12, t12, R, t,
+        dist, int(max_iterations), str(loss), float(loss_scale), float(tolerance))
 
 
 def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
@@ -192,8 +176,8 @@ def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Option
     does not see a feature; every feature must be seen by the new view and two known views.
     Returns the candidates as a list of (R, t), best first.
     """
-    return _ext.estimate_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
-                                        _view_list(ts, "ts"), _per_view(dist), bool(refine))
+    return _ext.estimate_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
+                                        _view_list(ts, "ts"), dist, bool(refine))
 
 
 def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
@@ -203,8 +187,8 @@ def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines:
                                    seed: int = 0) -> Dict[str, Any]:
     """Robust world pose of a new view against several known views (arguments as
     estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
-    return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
-                                               _view_list(ts, "ts"), _per_view(dist), float(threshold), float(confidence),
+    return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
+                                               _view_list(ts, "ts"), dist, float(threshold), float(confidence),
                                                int(max_iterations), bool(refine), _seed(seed))
 
 
@@ -214,8 +198,8 @@ def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional
                           loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
     """Maximum-likelihood refinement of a new view's world pose (R, t) and the structure over every
     view, the known views fixed (result as refine_pose_line_point)."""
-    return _ext.refine_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), _view_list(Rs, "Rs"),
-                                      _view_list(ts, "ts"), _array(R), _array(t), _per_view(dist), int(max_iterations),
+    return _ext.refine_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
+                                      _view_list(ts, "ts"), R, t, dist, int(max_iterations),
                                       str(loss), float(loss_scale), float(tolerance))
 
 
@@ -232,6 +216,6 @@ def adjust_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optiona
     as given, made exact rotations), rms, points3d, lines3d.
     """
     flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
-    return _ext.adjust_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), _per_view(K), flags,
-                                       _view_list(Rs, "Rs"), _view_list(ts, "ts"), _per_view(dist),
+    return _ext.adjust_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, flags,
+                                       _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist,
                                        int(max_iterations), str(loss), float(loss_scale), float(tolerance))

@@ -1,6 +1,9 @@
 """What the Python package adds to the time of an estimate (a benchmark, not a test).
 
-In one process, interleaved (one run of each variant in turn, repeated), median of many runs:
+Median of many runs, in one session:
+  * the C++ API (cv::tripose, through build/test/benchmark/tripose_problem_benchmark) on the same
+    arrays, written to a problem file: its runs alternate, in rounds, with the package's, and the
+    two sides must return the same pose;
   * estimate_pose_line_point on a 4P+4L scene through the public wrapper (tripose) and through
     the extension function directly (tripose._tripose_ext): the wrapper's cost;
   * the same problem with float32 and with Fortran-order arrays: the conversion's cost;
@@ -8,10 +11,13 @@ In one process, interleaved (one run of each variant in turn, repeated), median 
     benchmark tripose_benchmark times as "lin+refine"), and refine=True, which refines every
     candidate and further starts (POSE_LINEAR_REFINE; much slower on few features);
   * estimate_pose_line_point_ransac on 100P+40L with 30 % outliers and 0.5 px noise.
-Run with the installed package: python test/benchmark/python_overhead.py [--runs N]
+Run with the installed package (and cv2 from opencv-contrib-python-headless, to write the problem
+files): python test/benchmark/python_overhead.py [--runs N] [--rounds K] [--build build]
 """
 import argparse
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -35,10 +41,54 @@ def interleaved(variants, runs):
     return {name: float(np.median(t)) for name, t in times.items()}
 
 
+REPO = Path(__file__).resolve().parents[2]
+
+
+def write_problem(path, points, lines, K, R12, t12):
+    """A three-view problem file as tripose_estimate reads it."""
+    import cv2  # only to write the file; the package never imports it
+
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
+    fs.write("K", np.asarray(K, np.float64))
+    fs.write("R12", np.asarray(R12, np.float64))
+    fs.write("t12", np.asarray(t12, np.float64).reshape(3, 1))
+    for v in range(3):
+        fs.write(f"points{v + 1}", np.ascontiguousarray(points[v], np.float64))
+        fs.write(f"lines{v + 1}", np.ascontiguousarray(lines[v], np.float64))
+    fs.release()
+
+
+def cpp_median(tool, problem, method, runs):
+    """Median seconds per call of the C++ API on @p problem, and the (R, t) it returned."""
+    out = subprocess.run([str(tool), "--input", str(problem), "--method", method, "--runs", str(runs)],
+                         check=True, capture_output=True, text=True).stdout.split("\n")
+    values = {line.split()[0]: [float(x) for x in line.split()[1:]] for line in out if line.strip()}
+    return values["median_us"][0] * 1e-6, np.array(values["R"]).reshape(3, 3), np.array(values["t"])
+
+
+def compare_with_cpp(tool, problem, method, python_call, runs, rounds):
+    """Rounds of (the C++ API's runs, then the package's runs): the median over rounds of each side's
+    median, and the largest pose difference between the two sides."""
+    cpp, py, difference = [], [], 0.0
+    for _ in range(rounds):
+        seconds, R, t = cpp_median(tool, problem, method, runs)
+        cpp.append(seconds)
+        result = python_call()
+        R_py, t_py = (result[0] if isinstance(result, list) else (result["R"], result["t"]))
+        difference = max(difference, float(np.abs(R - R_py).max()), float(np.abs(t - t_py).max()))
+        py.append(interleaved({"py": python_call}, runs)["py"])
+    return float(np.median(cpp)), float(np.median(py)), difference
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=2000)
+    parser.add_argument("--rounds", type=int, default=5, help="alternations of the C++ and the Python runs")
+    parser.add_argument("--build", type=Path, default=REPO / "build", help="the CMake build folder")
     args = parser.parse_args()
+    tool = args.build / "test" / "benchmark" / "tripose_problem_benchmark"
+    if not tool.is_file():
+        sys.exit(f"{tool} is not built: cmake --build {args.build} --target tripose_problem_benchmark")
 
     s = three_view_scene(1, 4, 4)
     rng = np.random.default_rng(0)
@@ -92,6 +142,23 @@ def main():
         base = ransac_reference if name.startswith("100P") else reference
         print(f"{name:42s} {1e6 * seconds:9.1f} us {seconds / base:8.3f}")
     print(f"wrapper overhead on 4P+4L: {1e6 * (results['4P+4L linear, tripose'] - reference):.1f} us per call")
+
+    # The package beside the C++ API on the same arrays.
+    ransac_runs = max(50, args.runs // 20)
+    with tempfile.TemporaryDirectory() as folder:
+        small_file, big_file = Path(folder) / "small.yml", Path(folder) / "big.yml"
+        write_problem(small_file, points, lines, s.K, s.R12, s.t12)
+        write_problem(big_file, big_points, big_lines, b.K, b.R12, b.t12)
+        rows = [("4P+4L linear", *compare_with_cpp(tool, small_file, "linear",
+                                                   lambda: tripose.estimate_pose_line_point(*small),
+                                                   args.runs, args.rounds)),
+                ("100P+40L RANSAC + refine", *compare_with_cpp(tool, big_file, "ransac",
+                                                               lambda: tripose.estimate_pose_line_point_ransac(*big),
+                                                               ransac_runs, args.rounds))]
+    print(f"\n{'problem':26s} {'C++ API':>10s} {'tripose':>10s} {'added':>10s} {'ratio':>7s} {'pose diff':>10s}")
+    for name, cpp, py, difference in rows:
+        print(f"{name:26s} {1e6 * cpp:7.1f} us {1e6 * py:7.1f} us {1e6 * (py - cpp):7.1f} us {py / cpp:7.3f} "
+              f"{difference:10.1e}")
 
 
 if __name__ == "__main__":
