@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds tripose as an OpenCV extra module (-DOPENCV_EXTRA_MODULES_PATH=<repo>/modules) inside a
 # minimal OpenCV: only the modules tripose needs, OpenCV's test module (ts) and the Python 3
-# bindings, and only the targets the tests use (opencv_test_tripose, opencv_perf_tripose, cv2).
+# bindings, and only the targets the tests use (opencv_test_tripose, cv2; opencv_perf_tripose with
+# TRIPOSE_INTREE_PERF=1).
 #
 #   bash scripts/build_opencv_intree.sh [4|5|<sdist version>] [--run COMMAND...]   (default 4 = 4.12.0.88)
 #
@@ -17,7 +18,8 @@
 #   OPENCV_INTREE_SOURCE=<opencv source folder>
 # With --run, COMMAND runs after the build while the lock is still held, so that another checkout
 # sharing the cache cannot relink the libraries under the tests.
-# Environment: TRIPOSE_OPENCV_JOBS (default 2), TRIPOSE_OPENCV_NICE (default 15).
+# Environment: TRIPOSE_OPENCV_JOBS (default 2), TRIPOSE_OPENCV_NICE (default 15), TRIPOSE_INTREE_PERF
+# (1: build the perf tests too).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -130,7 +132,10 @@ for m in tripose python3 ts; do
 done
 t_configured=$(seconds)
 
-targets=(opencv_test_tripose opencv_perf_tripose opencv_python3)
+# The perf tests are compiled by the standalone build already (the same sources on the ts shim);
+# here they are built only on request (TRIPOSE_INTREE_PERF=1), to run them on OpenCV's own ts.
+targets=(opencv_test_tripose opencv_python3)
+if [ "${TRIPOSE_INTREE_PERF:-0}" = 1 ]; then targets+=(opencv_perf_tripose); fi
 log "building ${targets[*]} (-j$jobs, nice $niceness)"
 nice -n "$niceness" cmake --build "$bld" -j "$jobs" --target "${targets[@]}"
 t_built=$(seconds)
