@@ -20,9 +20,6 @@ namespace {
 
 // det / trace^3 of a point's triangulation normal matrix below which its rays are parallel.
 constexpr double kPointConditioning = 1e-14;
-// Sine of the angle below which a view-1 end ray grazes the plane of the other known view: the
-// lifted end point is then undetermined.
-constexpr double kGrazingSine = 1e-9;
 // Ratio of the planes' singular values below which known views do not pin a line down.
 constexpr double kLineConditioning = 1e-5;
 
@@ -114,13 +111,13 @@ void PoseScorer::triangulateKnown()
             valid = true;
         for (int end = 0; end < 2 && valid; ++end)
         {
-            const Eigen::Vector3d ray = poses[known[0]].R.transpose() * first.calibratedLineEnd(i, end).homogeneous();
+            const Eigen::Vector2d x = first.calibratedLineEnd(i, end);
             Eigen::Vector3d X = Eigen::Vector3d::Zero();
             double depth;
             if (known.size() == 2)
-                valid = intersectRayPlane(origin, ray, plane, kGrazingSine, X, depth);
+                valid = liftLineEnd(poses[known[0]], x, plane, X, depth);
             else
-                X = closestPointToRay(L, ray, origin);
+                X = closestPointToRay(L, poses[known[0]].R.transpose() * x.homogeneous(), origin);
             // Ends lifted behind a known view (grazing rays under noise) are not structure.
             for (size_t k = 0; k < known.size() && valid; ++k)
                 valid = poses[known[k]].toCamera(X).z() > minDepth_;
