@@ -10,20 +10,12 @@
 
 #include "../support/error.hpp"
 
+#include "../geometry/conditioning.hpp"
 #include "../geometry/residuals.hpp"
 #include "../geometry/triangulation.hpp"
 #include "pose_scorer.hpp"
 
 namespace tripose {
-
-namespace {
-
-// det / trace^3 of a point's triangulation normal matrix below which its rays are parallel.
-constexpr double kPointConditioning = 1e-14;
-// Ratio of the planes' singular values below which known views do not pin a line down.
-constexpr double kLineConditioning = 1e-5;
-
-} // namespace
 
 double PoseScore::rms() const
 {
@@ -78,7 +70,8 @@ void PoseScorer::triangulateKnown()
     for (int i = 0; i < set.numPoints; ++i)
     {
         Eigen::Vector3d X;
-        if (!(triangulatePoint(set, poses.data(), i, ViewSelection::Known, X, kPointConditioning, minDepth_) > 0))
+        if (!(triangulatePoint(set, poses.data(), i, ViewSelection::Known, X, kPointTriangulationConditioning,
+                               minDepth_) > 0))
             continue;
         // A point triangulated behind a known view is noise, not structure: it must not vote.
         bool inFront = true;
@@ -105,7 +98,8 @@ void PoseScorer::triangulateKnown()
         const View& first = set.views[known[0]];
         const Eigen::Vector3d origin = poses[known[0]].centre();
         PluckerLine L;
-        bool valid = known.size() > 2 && triangulateLine(set, poses.data(), i, ViewSelection::Known, L, kLineConditioning);
+        bool valid = known.size() > 2 &&
+                     triangulateLine(set, poses.data(), i, ViewSelection::Known, L, kLineTriangulationConditioning);
         const Eigen::Vector4d plane = backProjectLine(poses[known[1]], 1.0, set.views[known[1]].calibratedLines[i]);
         if (known.size() == 2)
             valid = true;
@@ -254,7 +248,8 @@ void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& poi
     for (int i = 0; i < set_.numPoints; ++i)
     {
         Eigen::Vector3d X;
-        if (!(triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointConditioning, minDepth_) > 0))
+        if (!(triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointTriangulationConditioning,
+                               minDepth_) > 0))
             continue;
         double sum = 0;
         int count = 0;
