@@ -193,51 +193,6 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
     return s;
 }
 
-void PoseScorer::residuals(const CameraPose& pose, std::vector<double>& pointResiduals,
-                           std::vector<double>& lineResiduals) const
-{
-    const double inf = std::numeric_limits<double>::infinity();
-    // Sums of r^2 and observation counts per feature, over the estimated views that see it.
-    std::vector<double> pointSum(set_.numPoints, 0.0), lineSum(set_.numLines, 0.0);
-    std::vector<int> pointCount(set_.numPoints, 0), lineCount(set_.numLines, 0);
-    pointResiduals.assign(set_.numPoints, inf);
-    lineResiduals.assign(set_.numLines, inf);
-    std::vector<unsigned char> pointFailed(set_.numPoints, 0), lineFailed(set_.numLines, 0);
-    for (const EstimatedView& e : estimated_)
-    {
-        const View& view = set_.views[e.view];
-        const CameraPose p = view.poseFor(pose);
-        Eigen::Vector2d r;
-        for (const PointTerm& term : e.points)
-        {
-            if (pointResidual(view.camera, p.toCamera(term.X), term.observed, r))
-            {
-                pointSum[term.feature] += r.squaredNorm();
-                ++pointCount[term.feature];
-            }
-            else
-                pointFailed[term.feature] = 1;
-        }
-        for (const LineTerm& term : e.lines)
-        {
-            const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
-            if (a.z() > 0 && b.z() > 0 && lineResidual(view.camera, a.cross(b), term.end0, term.end1, r))
-            {
-                lineSum[term.feature] += 0.5 * r.squaredNorm();
-                ++lineCount[term.feature];
-            }
-            else
-                lineFailed[term.feature] = 1;
-        }
-    }
-    for (int i = 0; i < set_.numPoints; ++i)
-        if (pointCount[i] > 0 && !pointFailed[i])
-            pointResiduals[i] = std::sqrt(pointSum[i] / pointCount[i]);
-    for (int i = 0; i < set_.numLines; ++i)
-        if (lineCount[i] > 0 && !lineFailed[i])
-            lineResiduals[i] = std::sqrt(lineSum[i] / lineCount[i]);
-}
-
 void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,
                                 std::vector<double>& lineResiduals) const
 {
