@@ -6,7 +6,7 @@
 // (generateSyntheticStereoScene: baseline 0.1-0.5 m roughly along x, cameras within 3 degrees of
 // parallel, features 5-30 m in front of view 1 and inside all four 640x480 images at f = 800 px,
 // the rig moving 0.3-3 m and turning up to 20 degrees between times A and B), the geometry of
-// codegen/prototypes/stereo_rig.py, the solver's specification. Each feature's time-B visibility
+// test/evaluation/codegen/stereo_rig.py, the solver's specification. Each feature's time-B visibility
 // is given per mix; the ViewSet is read from the scene by the module's input function.
 
 #include "test_precomp.hpp"

@@ -2,8 +2,8 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// Synthetic stereo-rig scenes: the geometry of codegen/prototypes/stereo_rig.py (a rig of nearly
-// parallel cameras a short baseline apart, structure 5-30 m ahead, a motion of a few metres and a
+// Synthetic stereo-rig scenes: the geometry of test/evaluation/codegen/stereo_rig.py (a rig of
+// nearly parallel cameras a short baseline apart, structure 5-30 m ahead, a motion of a few metres and a
 // moderate turn), in the frame of view 1.
 
 #include "tripose_support/synthetic_stereo_scene.hpp"

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include "line_parameterization.hpp"
+#include "rotation.hpp"
 
 namespace tripose {
 
@@ -61,12 +62,7 @@ Eigen::Matrix<double, 6, 4> OrthonormalLine::pluckerJacobian() const
 OrthonormalLine OrthonormalLine::plus(const Eigen::Vector4d& delta) const
 {
     OrthonormalLine out;
-    const Eigen::Vector3d theta = delta.head<3>();
-    const double angle = theta.norm();
-    if (angle > 0)
-        out.U = U * Eigen::AngleAxisd(angle, theta / angle).toRotationMatrix();
-    else
-        out.U = U;
+    out.U = rotateRight(U, delta.head<3>());
     const double c = std::cos(delta(3)), s = std::sin(delta(3));
     out.w1 = c * w1 - s * w2;
     out.w2 = s * w1 + c * w2;

@@ -14,12 +14,22 @@ namespace tripose {
 Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M);
 
 /** exp([w]x) R: the left multiplicative update by which every iterative method here moves a
-rotation (the refinement, the algebraic polishes), so that their increments mean the same.
+rotation (the refinement, the algebraic polishes, the minimal solvers' Newton polish), so that their
+increments mean the same.
 */
 inline Eigen::Matrix3d rotateLeft(const Eigen::Vector3d& w, const Eigen::Matrix3d& R)
 {
     const double angle = w.norm();
     return angle > 0 ? Eigen::Matrix3d(Eigen::AngleAxisd(angle, w / angle) * R) : R;
+}
+
+/** R exp([w]x): the right update, in the frame of R itself, by which the orthonormal line
+parameterisation moves its rotation U (line_parameterization).
+*/
+inline Eigen::Matrix3d rotateRight(const Eigen::Matrix3d& R, const Eigen::Vector3d& w)
+{
+    const double angle = w.norm();
+    return angle > 0 ? Eigen::Matrix3d(R * Eigen::AngleAxisd(angle, w / angle).toRotationMatrix()) : R;
 }
 
 //! The rotation matrix of a rotation vector (axis times angle in radians).

@@ -71,6 +71,26 @@ inline bool intersectRayPlane(const Eigen::Vector3d& origin, const Eigen::Vector
     return depth > 0 && X.allFinite();
 }
 
+/** Sine of the angle between an end point's ray and the plane it is lifted onto (liftLineEnd())
+below which the intersection is not taken. The depth's rounding error is about 1e-16 / sine of the
+depth, so at this bound it still holds seven digits, more than any image measurement carries: the
+bound only keeps the arithmetic defined. The larger uncertainty of a grazing ray under image noise
+(the depth error grows as 1 / sine) is weighed where the lifted point is used: the linear solver
+weights the point's row by the sine, the scorer tests the point's depth in every known view.
+*/
+constexpr double kGrazingSine = 1e-9;
+
+/** End point @p end (calibrated image coordinates) of a line seen by a camera at @p pose, lifted
+onto @p plane, the line's back-projected plane from another view (backProjectLine()): where the end
+point's ray meets the plane. @p depth receives its depth in the camera. Returns false when the ray
+grazes the plane (kGrazingSine) or meets it behind the camera.
+*/
+inline bool liftLineEnd(const CameraPose& pose, const Eigen::Vector2d& end, const Eigen::Vector4d& plane,
+                        Eigen::Vector3d& X, double& depth)
+{
+    return intersectRayPlane(pose.centre(), pose.R.transpose() * end.homogeneous(), plane, kGrazingSine, X, depth);
+}
+
 } // namespace tripose
 
 #endif // OPENCV_TRIPOSE_GEOMETRY_TRIANGULATION_HPP

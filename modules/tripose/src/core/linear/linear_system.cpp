@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include "../generated/line_rows.hpp"
+#include "../geometry/conditioning.hpp"
 #include "../generated/point_rows.hpp"
 #include "line_end_points.hpp"
 #include "linear_system.hpp"
@@ -67,7 +68,7 @@ ConstraintMatrix buildConstraintMatrix(const ViewSet& set, double translationSca
             // neither kind dominates the conditioning of A^T A whatever the normalising scales.
             const double blockNorm = A.middleRows(row, 4).norm();
             if (blockNorm > 0)
-                A.middleRows(row, 4) *= std::sqrt(2.0) / blockNorm;
+                A.middleRows(row, 4) *= kBalancedBlockNorm / blockNorm;
             row += 4;
         }
     }

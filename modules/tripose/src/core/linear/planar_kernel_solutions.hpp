@@ -39,7 +39,7 @@ StructureFlatness structurePlane(const ViewSet& set, const CameraPose& pose12, c
 Every P3 + a pi^T (a in R^3) maps the structure as P3 = [R | t] does, so the kernel of A holds that
 3-dimensional family besides v: its dimension is 4 from four features on (5 for two points and two
 lines, which do not fix a plane-to-image homography), whatever the count of the general case
-(codegen/prototypes/planar_kernel.py measures it). The family is known from the plane: A
+(test/evaluation/codegen/planar_kernel.py measures it). The family is known from the plane: A
 restricted to its orthogonal complement has a kernel of dimension 1 (2), containing
 w = lambda v + a pi^T for some a. On directions u orthogonal to the plane's normal n, w's rotation
 block maps u to lambda R u, which fixes R up to the sign of lambda: the second sign gives R turned

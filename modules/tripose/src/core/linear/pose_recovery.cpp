@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "pose_recovery.hpp"
+#include "rotation_polish.hpp"
 
 #include "../geometry/rotation.hpp"
 
@@ -48,63 +49,34 @@ bool poseFromSolutionVector(const Vector12d& v, const ReducedNormalSystem& syste
 
 namespace {
 
-//! Below this step (rad) the polish keeps its Gauss-Newton matrix (see polishPoseAlgebraic()).
-constexpr double kChordStepAngle = 1e-2;
+//! r^T S r, the algebraic error with t eliminated, as polishRotation() reads it.
+struct ReducedNormalCost
+{
+    const Matrix9d& S;
+
+    double evaluate(const Vector9d& r, Vector9d& halfGradient) const
+    {
+        // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
+        halfGradient = S.lazyProduct(r);
+        return r.dot(halfGradient);
+    }
+    Eigen::Matrix3d gaussNewtonMatrix(const Eigen::Matrix<double, 9, 3>& D) const
+    {
+        return D.transpose().lazyProduct(S.lazyProduct(D));
+    }
+};
+
+//! Steps of the polish: it starts from the nearest rotation of a kernel solution, near the minimum,
+//! where Gauss-Newton converges in a few; the bound caps the cost of a candidate that does not.
+constexpr int kPolishIterations = 5;
 
 } // namespace
 
 void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose)
 {
-    const Matrix9d& S = system.S;
-    Vector9d r = Eigen::Map<const Vector9d>(pose.R.data());
-    Vector9d Sr = S.lazyProduct(r); // kept from the error evaluation for the next gradient
-    double error = r.dot(Sr);
-    Eigen::Matrix3d Hinv = Eigen::Matrix3d::Zero(); // set in the first iteration
-    double lastAngle = HUGE_VAL;
-    for (int iteration = 0; iteration < 5 && error > 0; ++iteration)
-    {
-        // d r_j / d w = -[r_j]x for the columns r_j of R.
-        Eigen::Matrix<double, 9, 3> D;
-        for (int j = 0; j < 3; ++j)
-            D.block<3, 3>(3 * j, 0) = -skew(pose.R.col(j));
-        // The Gauss-Newton matrix D^T S D changes with R by about the last step: once the steps
-        // are small (near the minimum) the previous one serves (a chord step), which saves its
-        // 9x9x3 product; convergence stays superlinear as the steps shrink.
-        const bool fresh = lastAngle > kChordStepAngle;
-        if (fresh)
-        {
-            // lazyProduct: coefficient-wise products beat Eigen's blocked GEMM at these sizes.
-            const Eigen::Matrix3d H = D.transpose().lazyProduct(S.lazyProduct(D));
-            // 3x3 symmetric positive (semi-)definite: the closed-form inverse is the cheapest
-            // solve; a singular H gives a non-finite step, which ends the polish.
-            Hinv = H.inverse();
-        }
-        const Eigen::Vector3d step = -(Hinv * (D.transpose() * Sr));
-        if (!step.allFinite())
-            break;
-        const double angle = step.norm();
-        const Eigen::Matrix3d next = rotateLeft(step, pose.R);
-        const Vector9d rNext = Eigen::Map<const Vector9d>(next.data());
-        const Vector9d SrNext = S.lazyProduct(rNext);
-        const double nextError = rNext.dot(SrNext);
-        if (!(nextError < error))
-        {
-            if (fresh)
-                break;
-            lastAngle = HUGE_VAL; // a stale matrix may be the cause: retry with a fresh one
-            continue;
-        }
-        pose.R = next;
-        lastAngle = angle;
-        r = rNext;
-        Sr = SrNext;
-        // Converged once a step gains nothing measurable.
-        const bool converged = error - nextError <= 1e-12 * error;
-        error = nextError;
-        if (converged)
-            break;
-    }
-    pose.t = system.T * r;
+    const ReducedNormalCost cost = { system.S };
+    polishRotation(cost, kPolishIterations, pose.R);
+    pose.t = system.T * Eigen::Map<const Vector9d>(pose.R.data());
 }
 
 } // namespace tripose

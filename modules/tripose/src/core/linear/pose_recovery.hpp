@@ -39,13 +39,9 @@ false for a degenerate v (det(R) ~ 0).
 */
 bool poseFromSolutionVector(const Vector12d& v, const ReducedNormalSystem& system, CameraPose& pose);
 
-/** Gauss-Newton on the algebraic error over R in SO(3) with t eliminated (r^T S r, left increment
-R <- exp([w]x) R), from @p pose; t is set to its least-squares value T r at the end. The same
-minimum as over (R, t) jointly, at half the cost per step. The nearest rotation of a kernel
-solution does not minimise the algebraic error; with exact data this restores the exact pose to
-full precision whatever the conditioning of the coefficient step, and with noise it lowers the
-error the method minimises. Steps that do not lower the error are rejected, so the result is never
-worse than the input rotation.
+/** The algebraic error over R in SO(3) with t eliminated (r^T S r) minimised from @p pose by
+polishRotation(); t is set to its least-squares value T r at the end. The same minimum as over
+(R, t) jointly, at half the cost per step.
 */
 void polishPoseAlgebraic(const ReducedNormalSystem& system, CameraPose& pose);
 

@@ -41,8 +41,8 @@ views fix f at those points and the other constraints then overlap:
   line seen in both 2;
 - four or more: M is fixed.
 When every time-B observation is in one view the system is the homogeneous three-view one, whose
-kernel holds the true v: d >= 1. (codegen/prototypes/stereo_rig.py checks this rule against numeric
-ranks for every mix of up to six features.)
+kernel holds the true v: d >= 1. (test/evaluation/codegen/stereo_rig.py checks this rule against
+numeric ranks for every mix of up to six features.)
 */
 int rigKernelDimension(const RigFeatureCounts& counts);
 

@@ -16,8 +16,9 @@
 #include "affine_kernel_solutions.hpp"
 #include "pose_recovery.hpp"
 #include "rig_solver.hpp"
-#include "../geometry/rotation.hpp"
 #include "rig_system.hpp"
+#include "rotation_polish.hpp"
+#include "../geometry/rotation.hpp"
 
 namespace tripose {
 
@@ -42,52 +43,29 @@ struct ScoredCandidate
 
 /** The algebraic error |A v - b|^2 of a pose with t at its least-squares value for R, in the
 triangular factor of the system: |B r - beta|^2, B and beta the rotation columns and the right-hand
-side with the span of the translation columns projected out.
+side with the span of the translation columns projected out. Read by polishRotation().
 */
 struct ReducedRigSystem
 {
     Eigen::Matrix<double, 12, 9> B;
     Vector12d beta;
 
-    double error(const Eigen::Matrix3d& R) const
+    double evaluate(const Eigen::Matrix<double, 9, 1>& r, Eigen::Matrix<double, 9, 1>& halfGradient) const
     {
-        return (B * Eigen::Map<const Eigen::Matrix<double, 9, 1>>(R.data()) - beta).squaredNorm();
+        const Vector12d residual = B * r - beta;
+        halfGradient = B.transpose() * residual;
+        return residual.squaredNorm();
+    }
+    Eigen::Matrix3d gaussNewtonMatrix(const Eigen::Matrix<double, 9, 3>& D) const
+    {
+        const Eigen::Matrix<double, 12, 3> J = B * D;
+        return J.transpose() * J;
     }
 };
 
-/** Gauss-Newton on the algebraic error over R in SO(3) (left increment R <- exp([w]x) R). The
-nearest rotation of a solution vector does not minimise it: where the kernel combinations are
-ill-conditioned (two solutions close together, a minimal problem near a degenerate one) it is only
-near the solution, and with noise it is not the minimum the method stands for. Steps that do not
-lower the error are rejected, so the result is never worse than the input.
-*/
-void polishRotation(const ReducedRigSystem& system, Eigen::Matrix3d& R)
-{
-    double error = system.error(R);
-    for (int iteration = 0; iteration < 10 && error > 0; ++iteration)
-    {
-        // d r_j / d w = -[r_j]x for the columns r_j of R.
-        Eigen::Matrix<double, 9, 3> D;
-        for (int j = 0; j < 3; ++j)
-            D.block<3, 3>(3 * j, 0) = -skew(R.col(j));
-        const Eigen::Matrix<double, 12, 3> J = system.B * D;
-        const Vector12d residual = system.B * Eigen::Map<const Eigen::Matrix<double, 9, 1>>(R.data()) - system.beta;
-        const Eigen::Vector3d step = -(J.transpose() * J).ldlt().solve(J.transpose() * residual);
-        const double angle = step.norm();
-        if (!std::isfinite(angle) || angle == 0)
-            break;
-        const Eigen::Matrix3d next = rotateLeft(step, R);
-        const double nextError = system.error(next);
-        if (!(nextError < error))
-            break;
-        R = next;
-        // Converged once a step gains nothing measurable.
-        const bool converged = error - nextError <= 1e-12 * error;
-        error = nextError;
-        if (converged)
-            break;
-    }
-}
+//! Steps of the polish: where the kernel combinations are ill-conditioned (two solutions close
+//! together, a minimal problem near a degenerate one) its start is only near the minimum.
+constexpr int kPolishIterations = 10;
 
 } // namespace
 
@@ -166,7 +144,7 @@ int rigPoseCandidates(const ViewSet& set, std::vector<CameraPose>& poses, const 
             continue;
         ScoredCandidate candidate;
         candidate.pose.R = nearestRotation(Eigen::Map<const Eigen::Matrix3d>(v.data()));
-        polishRotation(reduced, candidate.pose.R);
+        polishRotation(reduced, kPolishIterations, candidate.pose.R);
         const Eigen::Map<const Eigen::Matrix<double, 9, 1>> r(candidate.pose.R.data());
         candidate.pose.t = translation.solve(c - R.leftCols<9>() * r);
         Vector12d fitted;

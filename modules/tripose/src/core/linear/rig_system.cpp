@@ -13,6 +13,7 @@
 #include "../generated/line_rows.hpp"
 #include "../generated/point_rows.hpp"
 #include "../generated/rig_rows.hpp"
+#include "../geometry/conditioning.hpp"
 #include "line_end_points.hpp"
 #include "point_normalization.hpp"
 #include "rig_system.hpp"
@@ -21,13 +22,13 @@ namespace tripose {
 
 namespace {
 
-//! Scales a block of rows to Frobenius norm sqrt 2, its right-hand sides with it.
+//! Scales a block of rows to Frobenius norm kBalancedBlockNorm, its right-hand sides with it.
 void balanceBlock(RigSystem& system, int row, int count)
 {
     const double norm = system.A.middleRows(row, count).norm();
     if (!(norm > 0))
         return;
-    const double scale = std::sqrt(2.0) / norm;
+    const double scale = kBalancedBlockNorm / norm;
     system.A.middleRows(row, count) *= scale;
     system.b.segment(row, count) *= scale;
 }

@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "incidences.hpp"
+#include "../geometry/rotation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -81,9 +82,7 @@ bool polishPose(const MinimalIncidences& incidences, CameraPose& pose)
         if (!delta.allFinite())
             break;
         CameraPose next = pose;
-        const double angle = delta.head<3>().norm();
-        if (angle > 0)
-            next.R = Eigen::AngleAxisd(angle, delta.head<3>() / angle).toRotationMatrix() * pose.R;
+        next.R = rotateLeft(delta.head<3>(), pose.R);
         next.t += delta.tail<3>();
         Eigen::Matrix<double, 6, 1> nextR;
         Eigen::Matrix<double, 6, 6> nextJ;

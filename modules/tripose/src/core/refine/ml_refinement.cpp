@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include "../geometry/conditioning.hpp"
 #include "../geometry/line_parameterization.hpp"
 #include "../geometry/triangulation.hpp"
 #include "ml_refinement.hpp"
@@ -27,10 +28,6 @@ namespace {
 // An RMS of 1e-10 px is an exact fit: nothing is left to gain.
 constexpr double kNegligibleSquare = 1e-20;
 constexpr double kMaxLambda = 1e16;
-// det / trace^3 of a point's triangulation normal matrix below which its depth is undetermined.
-constexpr double kPointConditioning = 1e-14;
-// Singular value ratio (second / first) of a line's planes below which they do not pin it down.
-constexpr double kLineConditioning = 1e-5;
 
 //! Robust cost and plain sum of squares of a set of residuals.
 struct CostSum
@@ -214,7 +211,8 @@ private:
             const int i = points_[k].index;
             Eigen::Vector3d X = Eigen::Vector3d::Zero();
             const bool triangulated =
-                triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointConditioning, minDepth_) > 0;
+                triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointTriangulationConditioning,
+                                 minDepth_) > 0;
             points_[k].initialized = triangulated;
             if (!triangulated)
                 continue;
@@ -230,7 +228,7 @@ private:
         {
             const int i = lines_[k].index;
             PluckerLine L;
-            if (!(triangulateLine(set_, poses.data(), i, ViewSelection::All, L, kLineConditioning) &&
+            if (!(triangulateLine(set_, poses.data(), i, ViewSelection::All, L, kLineTriangulationConditioning) &&
                   OrthonormalLine::fromPlucker(L, e.lines[k])))
             {
                 // Not determined by the views: keep any finite fit for the output, outside the cost.

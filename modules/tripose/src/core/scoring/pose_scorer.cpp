@@ -10,23 +10,12 @@
 
 #include "../support/error.hpp"
 
+#include "../geometry/conditioning.hpp"
 #include "../geometry/residuals.hpp"
 #include "../geometry/triangulation.hpp"
 #include "pose_scorer.hpp"
 
 namespace tripose {
-
-namespace {
-
-// det / trace^3 of a point's triangulation normal matrix below which its rays are parallel.
-constexpr double kPointConditioning = 1e-14;
-// Sine of the angle below which a view-1 end ray grazes the plane of the other known view: the
-// lifted end point is then undetermined.
-constexpr double kGrazingSine = 1e-9;
-// Ratio of the planes' singular values below which known views do not pin a line down.
-constexpr double kLineConditioning = 1e-5;
-
-} // namespace
 
 double PoseScore::rms() const
 {
@@ -81,7 +70,8 @@ void PoseScorer::triangulateKnown()
     for (int i = 0; i < set.numPoints; ++i)
     {
         Eigen::Vector3d X;
-        if (!(triangulatePoint(set, poses.data(), i, ViewSelection::Known, X, kPointConditioning, minDepth_) > 0))
+        if (!(triangulatePoint(set, poses.data(), i, ViewSelection::Known, X, kPointTriangulationConditioning,
+                               minDepth_) > 0))
             continue;
         // A point triangulated behind a known view is noise, not structure: it must not vote.
         bool inFront = true;
@@ -108,19 +98,20 @@ void PoseScorer::triangulateKnown()
         const View& first = set.views[known[0]];
         const Eigen::Vector3d origin = poses[known[0]].centre();
         PluckerLine L;
-        bool valid = known.size() > 2 && triangulateLine(set, poses.data(), i, ViewSelection::Known, L, kLineConditioning);
+        bool valid = known.size() > 2 &&
+                     triangulateLine(set, poses.data(), i, ViewSelection::Known, L, kLineTriangulationConditioning);
         const Eigen::Vector4d plane = backProjectLine(poses[known[1]], 1.0, set.views[known[1]].calibratedLines[i]);
         if (known.size() == 2)
             valid = true;
         for (int end = 0; end < 2 && valid; ++end)
         {
-            const Eigen::Vector3d ray = poses[known[0]].R.transpose() * first.calibratedLineEnd(i, end).homogeneous();
+            const Eigen::Vector2d x = first.calibratedLineEnd(i, end);
             Eigen::Vector3d X = Eigen::Vector3d::Zero();
             double depth;
             if (known.size() == 2)
-                valid = intersectRayPlane(origin, ray, plane, kGrazingSine, X, depth);
+                valid = liftLineEnd(poses[known[0]], x, plane, X, depth);
             else
-                X = closestPointToRay(L, ray, origin);
+                X = closestPointToRay(L, poses[known[0]].R.transpose() * x.homogeneous(), origin);
             // Ends lifted behind a known view (grazing rays under noise) are not structure.
             for (size_t k = 0; k < known.size() && valid; ++k)
                 valid = poses[known[k]].toCamera(X).z() > minDepth_;
@@ -202,51 +193,6 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
     return s;
 }
 
-void PoseScorer::residuals(const CameraPose& pose, std::vector<double>& pointResiduals,
-                           std::vector<double>& lineResiduals) const
-{
-    const double inf = std::numeric_limits<double>::infinity();
-    // Sums of r^2 and observation counts per feature, over the estimated views that see it.
-    std::vector<double> pointSum(set_.numPoints, 0.0), lineSum(set_.numLines, 0.0);
-    std::vector<int> pointCount(set_.numPoints, 0), lineCount(set_.numLines, 0);
-    pointResiduals.assign(set_.numPoints, inf);
-    lineResiduals.assign(set_.numLines, inf);
-    std::vector<unsigned char> pointFailed(set_.numPoints, 0), lineFailed(set_.numLines, 0);
-    for (const EstimatedView& e : estimated_)
-    {
-        const View& view = set_.views[e.view];
-        const CameraPose p = view.poseFor(pose);
-        Eigen::Vector2d r;
-        for (const PointTerm& term : e.points)
-        {
-            if (pointResidual(view.camera, p.toCamera(term.X), term.observed, r))
-            {
-                pointSum[term.feature] += r.squaredNorm();
-                ++pointCount[term.feature];
-            }
-            else
-                pointFailed[term.feature] = 1;
-        }
-        for (const LineTerm& term : e.lines)
-        {
-            const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
-            if (a.z() > 0 && b.z() > 0 && lineResidual(view.camera, a.cross(b), term.end0, term.end1, r))
-            {
-                lineSum[term.feature] += 0.5 * r.squaredNorm();
-                ++lineCount[term.feature];
-            }
-            else
-                lineFailed[term.feature] = 1;
-        }
-    }
-    for (int i = 0; i < set_.numPoints; ++i)
-        if (pointCount[i] > 0 && !pointFailed[i])
-            pointResiduals[i] = std::sqrt(pointSum[i] / pointCount[i]);
-    for (int i = 0; i < set_.numLines; ++i)
-        if (lineCount[i] > 0 && !lineFailed[i])
-            lineResiduals[i] = std::sqrt(lineSum[i] / lineCount[i]);
-}
-
 void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,
                                 std::vector<double>& lineResiduals) const
 {
@@ -257,7 +203,8 @@ void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& poi
     for (int i = 0; i < set_.numPoints; ++i)
     {
         Eigen::Vector3d X;
-        if (!(triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointConditioning, minDepth_) > 0))
+        if (!(triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointTriangulationConditioning,
+                               minDepth_) > 0))
             continue;
         double sum = 0;
         int count = 0;

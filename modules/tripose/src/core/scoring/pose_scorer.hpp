@@ -59,11 +59,6 @@ public:
     PoseScore score(const CameraPose& pose, double threshold = std::numeric_limits<double>::infinity(),
                     double bound = std::numeric_limits<double>::infinity(), FeatureSubset* inliers = nullptr) const;
 
-    /** Per feature: the RMS over the estimated views that see it of sqrt(r^2), in pixels; +inf where
-    the feature has no structure or lies behind an estimated view.
-    */
-    void residuals(const CameraPose& pose, std::vector<double>& pointResiduals, std::vector<double>& lineResiduals) const;
-
     /** Per feature: the RMS reprojection error (px) over every view that sees it and every coordinate
     (a point: 2 per view; a line: its 2 end-point distances per view), the feature triangulated from
     all of them with the estimated views at @p pose; +inf where it cannot be triangulated or lies

@@ -13,7 +13,7 @@ removed has its rotation block equal to s R on the plane's directions (s = +-|.|
 (up to the rotation by pi about n, which puts the structure behind view 3); with 2P+2L two such
 vectors, combined first (planar_rotations).
 
-    /work/main/.venv/bin/python codegen/prototypes/planar_kernel.py
+    .venv/bin/python test/evaluation/codegen/planar_kernel.py
 """
 import numpy as np
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Measurements behind the N = 4 design choice (reported in codegen/README.md).
+"""Measurements behind the N = 4 design choice (reported in doc/accuracy.md,
+"The N = 4 null vector").
 
 Compares ways to obtain the null vector u(b3) of the 5x6 matrix of eq. (24):
   staged      the generated kernel: matrix coefficients expanded in v, minors by a memoized
@@ -12,7 +13,7 @@ Compares ways to obtain the null vector u(b3) of the 5x6 matrix of eq. (24):
 Accuracy: relative error of u's coefficients against a 50-digit evaluation of the same program,
 over random orthonormal kernel vectors (as an SVD returns them).
 
-    .venv/bin/python codegen/measure_n4.py [--skip-expanded]
+    .venv/bin/python test/evaluation/codegen/measure_n4.py [--skip-expanded]
 """
 
 import argparse
@@ -26,7 +27,8 @@ import numpy as np
 import symengine
 import sympy
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+# The generator the measured kernels come from.
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "codegen"))
 
 from tripose_codegen.cse import build_program, program_op_count  # noqa: E402
 from tripose_codegen.evaluate import compile_program  # noqa: E402

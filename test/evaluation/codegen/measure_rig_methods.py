@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Measurements behind the choice of method per kernel dimension d of the stereo-rig system
-(reported in codegen/README.md, "Stereo rig").
+(reported in doc/accuracy.md, "The stereo rig's method per kernel dimension").
 
 1. Reach (exact data, random d-dimensional affine kernels through a pose): the dimension of the
    solution space of C m = 0, each monomial of c an unknown, with the six column constraints
@@ -17,7 +17,7 @@
    Errors: rotation (deg) and translation relative to its length of the selected candidate, or
    of the best one where several poses fit exact data.
 
-    .venv/bin/python codegen/prototypes/measure_rig_methods.py [--scenes 500] [--noise 0.5 1]
+    .venv/bin/python test/evaluation/codegen/measure_rig_methods.py [--scenes 500] [--noise 0.5 1]
 """
 
 import argparse
@@ -65,7 +65,7 @@ SIX_XL_DEGREE = {3: 3, 4: 4}
 
 
 def reach(rng, trials=3):
-    from_tests = Path(__file__).resolve().parents[1] / "tests"
+    from_tests = Path(__file__).resolve().parents[3] / "codegen" / "tests"
     sys.path.insert(0, str(from_tests))
     from conftest import pose_vector, random_rotation
 

@@ -29,13 +29,13 @@ time A, [I|0]; 2 = right camera at time A, the rig [R12|t12] (known); 3 = left c
 4. Each candidate: R = the rotation nearest to [r1 r2 r3] (SVD, det +1), then t re-estimated by
    least squares from A_t t = b - A_r vec(R); candidates ordered by |A v - b|.
 
-    .venv/bin/python codegen/prototypes/stereo_rig.py [--scenes 1000] [--seed 0]
+    .venv/bin/python test/evaluation/codegen/stereo_rig.py [--scenes 1000] [--seed 0]
 
 prints, per feature mix, the kernel dimension d, how many poses fit exact data (solution_count),
 how often the true pose is recovered from noise-free data (the first candidate where one pose
 fits, any candidate where several do) and the largest errors of the successes.
 
-    .venv/bin/python codegen/prototypes/stereo_rig.py --check-counts 6
+    .venv/bin/python test/evaluation/codegen/stereo_rig.py --check-counts 6
 
 checks kernel_dimension and solution_count against numeric ranks for every mix of up to six
 features.
@@ -58,7 +58,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "codegen"))
 
 from tripose_codegen.evaluate import numeric_kernel  # noqa: E402
 
