@@ -48,20 +48,25 @@ their errors as they are (doc/accuracy.md has the figures). */
 constexpr double kModerateTriangulationAngleDeg = 15.0;
 constexpr double kNoisyPlanarThickness = 0.35;
 
-/** True for the regimes with several basins: a weak triangulation angle, planar structure, or
-mostly lines (under a quarter of the features are points: a line's residuals leave the motion
-along it free, and a planar target seen through lines alone has a mirrored motion that explains
-most of them nearly as well, doc/stereo.md).
-*/
-inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+//! True for the regimes of the structure with several basins: a weak triangulation angle or planar
+//! structure.
+inline bool structureHasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {
-    if (4 * set.numPoints < set.numFeatures())
-        return true;
     const double angle = medianTriangulationAngleDeg(set, scorer);
     if (angle < kWeakTriangulationAngleDeg)
         return true;
     const double thickness = structureThickness(set, scorer);
     return thickness < kPlanarThickness || (angle < kModerateTriangulationAngleDeg && thickness < kNoisyPlanarThickness);
+}
+
+/** True for the regimes with several basins: those of the structure (structureHasSeveralBasins()),
+or mostly lines (under a quarter of the features are points: a line's residuals leave the motion
+along it free, and a planar target seen through lines alone has a mirrored motion that explains
+most of them nearly as well, doc/stereo.md).
+*/
+inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+{
+    return 4 * set.numPoints < set.numFeatures() || structureHasSeveralBasins(set, scorer);
 }
 
 } // namespace tripose
