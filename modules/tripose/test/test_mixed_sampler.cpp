@@ -21,7 +21,7 @@ MixedSampling threeFeatureKinds(int points, int lines)
 {
     MixedSampling sampling;
     for (int p = 3; p >= 0; --p)
-        sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p });
+        sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p, 1.0 });
     for (int i = 0; i < points; ++i)
         sampling.points.push_back(3 * i);
     for (int i = 0; i < lines; ++i)
@@ -140,7 +140,7 @@ TEST(Tripose_MixedSampler, the_model_s_own_sample_is_no_support)
 TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
 {
     MixedSampling points;
-    points.kinds.push_back(MixedSampling::Kind{ 3, 0 });
+    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
     for (int i = 0; i < 100; ++i)
         points.points.push_back(i);
     MixedSampler sampler(points, 1);
@@ -187,7 +187,7 @@ TEST(Tripose_MixedSampler, same_seed_same_samples)
 TEST(Tripose_MixedSampler, no_sample_from_pools_too_small)
 {
     MixedSampling sampling;
-    sampling.kinds.push_back(MixedSampling::Kind{ 3, 0 });
+    sampling.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
     sampling.points = { 0, 1 };
     MixedSampler sampler(sampling, 0);
     FeatureSubset sample;

@@ -22,6 +22,8 @@ struct MixedSampling
     {
         int points;
         int lines;
+        //! Time of a sample of this kind (its solve and the scoring of its poses), relative to the others.
+        double cost;
     };
     std::vector<Kind> kinds;
     std::vector<int> points, lines; //!< The pools: point and line indices a sample may draw.

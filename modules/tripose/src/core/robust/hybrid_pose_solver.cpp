@@ -13,6 +13,14 @@
 
 namespace tripose {
 
+namespace {
+
+// Time of a sample with lines relative to a P3P sample: the line solvers take three times as long
+// (doc/minimal_solvers.md) and return more poses to score.
+constexpr double kLineSampleCost = 3.0;
+
+} // namespace
+
 HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer, const PoseSolver& linear)
     : set_(set), scorer_(scorer), linear_(linear)
 {
@@ -36,7 +44,7 @@ HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer,
         sampling_ = Sampling::Mixed;
         for (int points = 3; points >= 0; --points)
             if (points <= numPoints && 3 - points <= numLines)
-                mixed_.kinds.push_back(MixedSampling::Kind{ points, 3 - points });
+                mixed_.kinds.push_back(MixedSampling::Kind{ points, 3 - points, points == 3 ? 1.0 : kLineSampleCost });
     }
     else if (numPoints >= kMinPoints && 4 * numPoints >= set.numFeatures())
         sampling_ = Sampling::PointTriples;

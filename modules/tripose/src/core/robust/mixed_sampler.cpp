@@ -40,37 +40,40 @@ std::vector<unsigned char> membership(const std::vector<int>& pool)
 
 MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
     : sampling_(sampling), rng_(seed), inPointPool_(membership(sampling.points)),
-      inLinePool_(membership(sampling.lines)), drawn_(sampling.kinds.size(), 0), weights_(sampling.kinds.size(), 0.0),
-      pointPool_((int)sampling.points.size()), linePool_((int)sampling.lines.size())
+      inLinePool_(membership(sampling.lines)), drawn_(sampling.kinds.size(), 0), weights_(sampling.kinds.size(), 0.0)
 {}
 
 void MixedSampler::setInliers(const FeatureSubset& inliers, const FeatureSubset& sample)
 {
-    const auto count = [](const std::vector<int>& features, const std::vector<unsigned char>& pool) {
-        int n = 0;
-        for (int i : features)
-            n += i < (int)pool.size() && pool[i];
-        return n;
+    const auto count = [](const std::vector<int>& inliers, const std::vector<int>& sample,
+                          const std::vector<unsigned char>& pool, PoolSupport& support) {
+        int all = 0, own = 0;
+        for (int i : inliers)
+            if (i < (int)pool.size() && pool[i])
+            {
+                ++all;
+                own += std::find(sample.begin(), sample.end(), i) != sample.end();
+            }
+        support.inliers = all > own ? all : 0;
+        support.beyondSample = all - own;
+        support.sampleInliers = own;
     };
-    const auto countBoth = [&](const std::vector<int>& features, const std::vector<int>& others,
-                               const std::vector<unsigned char>& pool) {
-        int n = 0;
-        for (int i : features)
-            n += i < (int)pool.size() && pool[i] && std::find(others.begin(), others.end(), i) != others.end();
-        return n;
-    };
-    const int samplePoints = countBoth(sample.points, inliers.points, inPointPool_);
-    const int sampleLines = countBoth(sample.lines, inliers.lines, inLinePool_);
-    pointInliers_ = count(inliers.points, inPointPool_) - samplePoints;
-    lineInliers_ = count(inliers.lines, inLinePool_) - sampleLines;
-    pointPool_ = (int)sampling_.points.size() - samplePoints;
-    linePool_ = (int)sampling_.lines.size() - sampleLines;
+    count(inliers.points, sample.points, inPointPool_, points_);
+    count(inliers.lines, sample.lines, inLinePool_, lines_);
 }
 
 double MixedSampler::successProbability(int k) const
 {
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    return allGood(pointInliers_, pointPool_, kind.points) * allGood(lineInliers_, linePool_, kind.lines);
+    return allGood(points_.inliers, (int)sampling_.points.size(), kind.points) *
+           allGood(lines_.inliers, (int)sampling_.lines.size(), kind.lines);
+}
+
+double MixedSampler::choiceWeight(int k) const
+{
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    return allGood(points_.beyondSample, (int)sampling_.points.size() - points_.sampleInliers, kind.points) *
+           allGood(lines_.beyondSample, (int)sampling_.lines.size() - lines_.sampleInliers, kind.lines);
 }
 
 bool MixedSampler::canDraw(int k) const
@@ -86,14 +89,14 @@ int MixedSampler::chooseKind()
     int drawable = 0;
     for (int k = 0; k < kinds; ++k)
     {
-        weights_[k] = successProbability(k);
+        weights_[k] = choiceWeight(k) / sampling_.kinds[k].cost;
         supported += weights_[k];
         drawable += canDraw(k);
     }
     if (drawable == 0)
         return -1;
     // Each kind's weight: its part of the uniform share (all of the weight while no model has
-    // support) and its share of the success probabilities.
+    // support beyond its sample) and its share of the choice weights.
     const double uniform = supported > 0 ? kExplorationShare : 1.0;
     for (int k = 0; k < kinds; ++k)
         weights_[k] = canDraw(k) ? uniform / drawable + (1 - uniform) * (supported > 0 ? weights_[k] / supported : 0.0)
