@@ -27,16 +27,16 @@ HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer,
     int estimated = 0;
     for (const View& view : set.views)
         estimated += view.estimated;
-    // One estimated camera, the last view, that sees every feature: the three-view problem.
+    // One estimated camera, the last view (the three-view problem; registration against several
+    // known views), absolute-posed on the structure of the known views.
     const View& last = set.views.back();
-    if (estimated != 1 || !last.estimated || !last.pointSeen.empty() || !last.lineSeen.empty() ||
-        medianTriangulationAngleDeg(set, scorer) < kWeakTriangulationAngleDeg)
+    if (estimated != 1 || !last.estimated || medianTriangulationAngleDeg(set, scorer) < kWeakTriangulationAngleDeg)
         return;
     for (int i = 0; i < set.numPoints; ++i)
-        if (scorer.hasKnownPoint(i))
+        if (last.seesPoint(i) && scorer.hasKnownPoint(i))
             mixed_.points.push_back(i);
     for (int i = 0; i < set.numLines; ++i)
-        if (scorer.hasKnownLine(i) && linePlaneAngleDeg(set, i) >= kWeakLinePlaneAngleDeg)
+        if (last.seesLine(i) && scorer.hasKnownLine(i) && linePlaneAngleDeg(set, i) >= kWeakLinePlaneAngleDeg)
             mixed_.lines.push_back(i);
     const int numPoints = (int)mixed_.points.size(), numLines = (int)mixed_.lines.size();
     if (numPoints + numLines >= kMinMixedFeatures)
@@ -46,7 +46,8 @@ HybridPoseSolver::HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer,
             if (points <= numPoints && 3 - points <= numLines)
                 mixed_.kinds.push_back(MixedSampling::Kind{ points, 3 - points, points == 3 ? 1.0 : kLineSampleCost });
     }
-    else if (numPoints >= kMinPoints && 4 * numPoints >= set.numFeatures())
+    // Point triples are drawn from every point (samplePool()): the estimated view must see them all.
+    else if (last.pointSeen.empty() && numPoints >= kMinPoints && 4 * numPoints >= set.numFeatures())
         sampling_ = Sampling::PointTriples;
 }
 
