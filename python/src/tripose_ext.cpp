@@ -713,7 +713,14 @@ NB_MODULE(_tripose_ext, m)
              double threshold, double confidence, int maxIterations, bool refine, uint64_t seed) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.newViewBuilder(), robustWith<tripose::MultiViewPoseSolver>(options));
+              return runRobust(problem.newViewBuilder(),
+                               [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
+                                   // The scorer's structure from the known views is also what the minimal samples solve on.
+                                   const tripose::PoseScorer scorer(views);
+                                   const tripose::MultiViewPoseSolver linear(views);
+                                   const tripose::HybridPoseSolver solver(views, scorer, linear);
+                                   return tripose::estimateRobust(views, scorer, solver, options, estimate);
+                               });
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 

@@ -5,7 +5,8 @@
 """Side-by-side speed of estimatePoseLinePointRansac and PoseLib's adaptive PnPL RANSAC.
 
     .venv/bin/python test/evaluation/ransac_vs_poselib.py --tool build/test/evaluation/tripose_evaluate \
-        [--tool build-base/test/evaluation/tripose_evaluate] [--points 100 --lines 40] [--rounds 3]
+        [--tool build-base/test/evaluation/tripose_evaluate] [--label after --label before] \
+        [--points 100 --lines 40] [--outliers 0 0.5] [--rounds 3]
 
 The same seeded synthetic scenes (tripose_evaluate synthetic, 1 px noise, --threshold px for both
 methods) for every tool and outlier ratio; PoseLib (estimate_absolute_pose_pnpl, min_iterations 0)
@@ -47,6 +48,8 @@ def poselib_trial(trial, repeats):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--tool", action="append", required=True, help="tripose_evaluate binary (repeatable)")
+    ap.add_argument("--label", action="append", default=[],
+                    help="column title of each --tool, in their order (default: the build folder's name)")
     ap.add_argument("--points", type=int, default=100)
     ap.add_argument("--lines", type=int, default=40)
     ap.add_argument("--noise", type=float, default=1.0)
@@ -83,8 +86,9 @@ def main():
 
     print(f"{a.points}P+{a.lines}L, {a.noise} px noise, threshold {a.threshold} px, "
           f"{a.rounds * a.trials} scenes per ratio, median of {a.repeats} calls per scene")
-    header = "| outliers |" + "".join(f" {Path(n).parent.parent.parent.name or n} ms (x PoseLib) | rot deg |"
-                                      for n in names) + " PoseLib adaptive ms | rot deg |"
+    labels = a.label + [Path(n).parent.parent.parent.name or n for n in names[len(a.label):]]
+    header = "| outliers |" + "".join(f" {label} ms (x PoseLib) | rot deg |"
+                                      for label in labels) + " PoseLib adaptive ms | rot deg |"
     print(header)
     print("|" + " --- |" * (1 + 2 * len(names) + 2))
     for ratio in a.outliers:

@@ -57,6 +57,72 @@ TEST(Tripose_MultiView, exact_on_noise_free_scenes_with_partial_visibility)
         }
 }
 
+//! Swaps pairs among the first half of the rows of @p m that are seen (not NaN): those matches
+//! become wrong. Returns the mask of the rows left right (seen rows only).
+Mat swapHalfOfTheSeenRows(Mat& m)
+{
+    if (m.empty())
+        return Mat();
+    std::vector<int> seen;
+    for (int i = 0; i < m.rows; ++i)
+        if (cvIsNaN(m.at<double>(i, 0)) == 0)
+            seen.push_back(i);
+    Mat right(m.rows, 1, CV_8U, Scalar(0));
+    for (int i : seen)
+        right.at<uchar>(i) = 1;
+    for (size_t k = 0; k + 1 < seen.size() / 2; k += 2)
+    {
+        Mat a = m.row(seen[k]).clone();
+        m.row(seen[k + 1]).copyTo(m.row(seen[k]));
+        a.copyTo(m.row(seen[k + 1]));
+        right.at<uchar>(seen[k]) = right.at<uchar>(seen[k + 1]) = 0;
+    }
+    return right;
+}
+
+// Line-dominated registration with about half of the new view's matches wrong, noise-free: the
+// robust estimator draws samples of points and lines mixed on the known views' structure and
+// returns the pose to rounding wherever the inliers it finds are the right matches (a wrong match
+// can fall within the threshold by chance).
+TEST(Tripose_MultiView, line_dominated_ransac_with_half_the_matches_wrong)
+{
+    const MixCase cases[] = { { 3, 0, 60 }, { 4, 3, 60 }, { 3, 10, 100 } };
+    for (const MixCase& c : cases)
+    {
+        int exact = 0;
+        for (int seed = 1; seed <= 10; ++seed)
+        {
+            SCOPED_TRACE(cv::format("%d known views, %d points, %d lines, seed %d", c.known, c.points, c.lines, seed));
+            MultiViewScene s(c.known, c.points, c.lines, 7000 + 10 * c.lines + seed);
+            // A kind the scene has none of has no arrays at all.
+            const Mat rightPoints = s.points.empty() ? Mat() : swapHalfOfTheSeenRows(s.points.back());
+            const Mat rightLines = s.lines.empty() ? Mat() : swapHalfOfTheSeenRows(s.lines.back());
+            cv::tripose::RansacParams params;
+            params.threshold = 0.5;
+            params.seed = seed;
+            Mat R, t, pointInliers, lineInliers;
+            ASSERT_GT(cv::tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, noArray(), s.Rs, s.ts, R, t,
+                                                               params, pointInliers, lineInliers),
+                      0);
+            const cv::tripose::support::PoseError e = poseError(R, t, Mat(s.R), Mat(s.t));
+            const auto same = [](const Mat& a, const Mat& b) {
+                return a.total() == b.total() && (a.empty() || cv::countNonZero(a.reshape(1, 1) != b.reshape(1, 1)) == 0);
+            };
+            const bool masksRight = same(pointInliers, rightPoints) && same(lineInliers, rightLines);
+            if (masksRight)
+            {
+                EXPECT_LT(e.rotationDeg, kExactRotationDeg);
+                EXPECT_LT(e.relativeTranslation, kExactTranslation);
+            }
+            EXPECT_LT(e.rotationDeg, 0.1);
+            exact += masksRight && e.rotationDeg < kExactRotationDeg;
+        }
+        std::cout << c.known << " known views, " << c.points << "P+" << c.lines << "L, half the matches wrong: exact "
+                  << exact << "/10" << std::endl;
+        EXPECT_GE(exact, 6);
+    }
+}
+
 TEST(Tripose_MultiView, refinement_returns_to_the_exact_pose)
 {
     const MultiViewScene s(4, 15, 15, 77);

@@ -40,30 +40,36 @@ struct CV_EXPORTS_W_SIMPLE RansacParams
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 
 RANSAC over minimal samples, with:
-- samples of three points, each solved as an absolute-pose (P3P) problem on the points triangulated
-  from views 1 and 2, when those are good: at least 8 points with structure, a quarter of the
-  features or more, and a median triangulation angle between views 1 and 2 of 2 degrees or more.
-  The stopping rule then counts point inliers; lines vote in every score and take part in the
+- when the median triangulation angle between views 1 and 2 is 2 degrees or more, samples of three
+  features solved as absolute-pose problems on the structure triangulated from views 1 and 2:
+  from 20 features with structure on, three points (P3P), two points and a line, a point and two
+  lines, or three lines, each kind chosen per sample in proportion to the probability that it is
+  all inliers (from the inlier ratios of points and of lines of the best model so far; lines whose
+  planes in views 1 and 2 meet at under 3 degrees are not drawn), and the stopping rule counts the
+  samples of every kind; on smaller sets three points when there are at least 8 with structure
+  and a quarter of the features or more. Every feature votes in every score and takes part in the
   local optimisation and the refinement;
-- otherwise (narrow baselines, few points) samples of four features (any mix of points and lines:
-  the smallest set the linear solver of estimatePoseLinePoint() handles), which need no
-  triangulated structure;
+- otherwise (narrow baselines, small sets with few points) samples of four features (any mix of
+  points and lines: the smallest set the linear solver of estimatePoseLinePoint() handles), which
+  need no triangulated structure;
 - hypotheses scored by truncated least squares (MSAC) on their residuals in view 3, in pixels,
   against the structure triangulated from views 1 and 2: for a point the distance of its
   reprojection, for a line the RMS of the distances of its two observed end points to the
   reprojected 3D line, truncated at 2 x RansacParams::threshold (see there);
 - local optimisation: the linear solver re-run on the inliers of each new best model;
-- adaptive stopping from the inlier ratio at the requested confidence;
+- adaptive stopping from the inlier ratios at the requested confidence;
 - with few features (at most 1024 distinct samples, and no more than maxIterations), every distinct
   sample drawn once instead, in an order set by the seed; when none has support, the linear solution
   over all features goes on to the inlier test;
 - final maximum-likelihood refinement (as refinePoseLinePoint(), with RansacParams::refineParams) on
   the inliers, the inliers then re-classified and the refinement repeated until they settle (at most
-  three rounds). With at most 60 inliers the refinement also starts from the linear solution on the
-  inliers and from 26 starts that keep the rotation and move view 3's centre around view 1, each
-  re-triangulated until it settles, and keeps the lowest cost; with at most 60 features the same is
-  done from all features too, and the lower truncated cost of the two wins. A narrow baseline of
-  views 1-2 or planar structure otherwise leaves the pose in another local minimum in many scenes.
+  three rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
+  structure; also under a quarter of the features points, on sets that do not draw the samples of
+  points and lines mixed), with at most 60 inliers the refinement also starts from the linear
+  solution on the inliers and from 26 starts that keep the rotation and move view 3's centre around
+  view 1, each re-triangulated until it settles, and keeps the lowest cost; with at most 60
+  features the same is done from all features too, and the lower truncated cost of the two wins.
+  There a single refinement leaves the pose in another local minimum in many scenes.
 
 Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.

@@ -12,6 +12,23 @@
 
 namespace tripose {
 
+/** Samples of several kinds, for a solver that solves minimal sets of points and lines mixed (as
+LIMAP's hybrid RANSAC does): a kind is so many points and so many lines, each drawn from its own
+pool of features that the solver can use in a minimal sample.
+*/
+struct MixedSampling
+{
+    struct Kind
+    {
+        int points;
+        int lines;
+        //! Time of a sample of this kind (its solve and the scoring of its poses), relative to the others.
+        double cost;
+    };
+    std::vector<Kind> kinds;
+    std::vector<int> points, lines; //!< The pools: point and line indices a sample may draw.
+};
+
 /** The seam between a pose problem and the robust estimator (as calib3d's USAC separates them): the
 estimator loop draws samples, asks the solver for models, judges them with the PoseScorer and hands
 the best to the refiner; a new problem (another arrangement of views) supplies these two.
@@ -29,6 +46,10 @@ public:
     points. The stopping rule counts the inliers among these features.
     */
     virtual int samplePool(int numFeatures) const { return numFeatures; }
+    /** Non-null when the minimal samples are of several kinds (MixedSampling): each sample is then
+    one kind's points and lines from its pools, and sampleSize() and samplePool() do not apply.
+    */
+    virtual const MixedSampling* mixedSampling() const { return nullptr; }
     /** Appends the candidate poses of a minimal sample to @p models; returns how many. @p exhaustive:
     every distinct sample is drawn once (few features), so nothing else will repair a poor
     hypothesis and a solver may spend more per sample.

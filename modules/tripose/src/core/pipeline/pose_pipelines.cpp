@@ -85,7 +85,13 @@ bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const Ransac
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                     const RansacOptions& options, RobustEstimate& estimate)
 {
-    const MultiStartRefiner refiner(views, options.refineOptions, &solver, hasSeveralBasins(views, scorer));
+    // Mixed minimal samples include three-line samples of the whole set, scored on all of it: they
+    // find the basin of a line-dominated set as three-point samples do for points (doc/speed.md,
+    // "Mixed samples of points and lines"), and the starts would cost a hundred times the rest.
+    // The structure's own regimes (narrow pair, planar) still call for them.
+    const bool severalBasins =
+        solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
+    const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins);
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
         return true;
     estimate = RobustEstimate();

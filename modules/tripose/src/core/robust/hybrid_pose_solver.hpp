@@ -14,33 +14,58 @@ namespace tripose {
 view 3 on the structure that the PoseScorer triangulated from views 1-2 where that structure is
 good, the unified linear method's four-feature samples otherwise.
 
-With the points of views 1-2 triangulated, three points of view 3 are a P3P problem (solveP3P):
-a sample of three instead of four features, and a closed-form solver far cheaper than the linear
-one's degree-11 polynomial. Samples are then drawn from the points alone (samplePool()), so the
-stopping rule counts point inliers. Lines still vote in every score, and the local optimisation
-and estimateNonMinimal() use the linear solver on every inlier, points and lines, so the final
+With the points and lines of views 1-2 triangulated, three features of view 3 are a minimal
+absolute-pose problem: three points (solveP3P), two points and a line (solveP2P1L), a point and two
+lines (solveP1P2L) or three lines (solveP3L), each a sample of three instead of four features and a
+solver far cheaper than the linear one's degree-11 polynomial. From kMinMixedFeatures features with
+structure on, samples of all four kinds are drawn (mixedSampling(), MixedSampler), each kind in
+proportion to its probability of being all inliers: where the lines are plentiful or the reliable
+matches, the samples are mostly lines. Lines whose known planes meet at a grazing angle
+(kWeakLinePlaneAngleDeg) are left out of the samples. Every feature votes in every score, and the
+local optimisation and estimateNonMinimal() use the linear solver on every inlier, so the final
 pose is the linear method's on the consensus set.
 
+Smaller sets keep the single-kind samples whose every distinct sample the estimator enumerates
+(SampleGenerator): three points (P3P) when there are at least kMinPoints with structure and they
+are a quarter of the features, else four features for the linear solver.
+
 The four-feature linear sample stays the solver when views 1-2 triangulate poorly: a narrow
-baseline (median triangulation angle below kWeakTriangulationAngleDeg, scoring/known_structure.hpp), where the
-depths of the triangulated points carry an error that the linear method, which never triangulates,
-avoids; or too few points with structure (fewer than kMinPoints, or under a quarter of the
-features: line-dominated scenes, whose hypotheses must come from their lines).
+baseline (median triangulation angle below kWeakTriangulationAngleDeg, scoring/known_structure.hpp),
+where the depths of the triangulated structure carry an error that the linear method, which never
+triangulates, avoids.
 */
 class HybridPoseSolver : public PoseSolver
 {
 public:
     static constexpr int kMinPoints = 8;
+    /** From here on the samples of three features are too many to enumerate (C(20, 3) = 1140 >
+    SampleGenerator::kEnumerationLimit), and the mixed samples are drawn at random. */
+    static constexpr int kMinMixedFeatures = 20;
+
+    enum class Sampling
+    {
+        Linear,      //!< Four features of any kind, the linear solver.
+        PointTriples, //!< Three points, P3P.
+        Mixed,       //!< Three points, two points and a line, a point and two lines, or three lines.
+    };
 
     //! @p linear: the four-feature solver (kept for non-minimal sets and poor structure).
     HybridPoseSolver(const ViewSet& set, const PoseScorer& scorer, const PoseSolver& linear);
 
+    Sampling sampling() const { return sampling_; }
     //! True when samples are three points solved by P3P.
-    bool usesPointSamples() const { return pointSamples_; }
+    bool usesPointSamples() const { return sampling_ == Sampling::PointTriples; }
 
-    int sampleSize() const override { return pointSamples_ ? 3 : linear_.sampleSize(); }
+    int sampleSize() const override { return sampling_ == Sampling::Linear ? linear_.sampleSize() : 3; }
     int nonMinimalSize() const override { return linear_.nonMinimalSize(); }
-    int samplePool(int numFeatures) const override { return pointSamples_ ? set_.numPoints : numFeatures; }
+    int samplePool(int numFeatures) const override
+    {
+        return sampling_ == Sampling::PointTriples ? set_.numPoints : numFeatures;
+    }
+    const MixedSampling* mixedSampling() const override
+    {
+        return sampling_ == Sampling::Mixed ? &mixed_ : nullptr;
+    }
     int estimateMinimal(const FeatureSubset& sample, bool exhaustive, std::vector<CameraPose>& models) const override;
     int estimateNonMinimal(const FeatureSubset& features, std::vector<CameraPose>& models) const override
     {
@@ -51,7 +76,8 @@ private:
     const ViewSet& set_;
     const PoseScorer& scorer_;
     const PoseSolver& linear_;
-    bool pointSamples_ = false;
+    Sampling sampling_ = Sampling::Linear;
+    MixedSampling mixed_;
 };
 
 } // namespace tripose

@@ -12,6 +12,7 @@
 
 #include "../scoring/candidate_ranking.hpp"
 #include "robust_estimator.hpp"
+#include "mixed_sampler.hpp"
 #include "sample_generator.hpp"
 
 namespace tripose {
@@ -44,36 +45,20 @@ public:
 
     bool run(RobustEstimate& estimate)
     {
-        const int sampleSize = solver_.sampleSize();
-        pool_ = std::min(numFeatures_, solver_.samplePool(numFeatures_));
-        SampleGenerator samples(pool_, sampleSize, params_.maxIterations, params_.seed);
-        std::vector<int> indices(sampleSize);
-        FeatureSubset sample;
-        std::vector<CameraPose> candidates;
-        long maxIterations = params_.maxIterations;
-        int iteration = 0;
-        for (; iteration < maxIterations && samples.next(indices); ++iteration)
-        {
-            sample.assign(indices, numPoints_);
-            candidates.clear();
-            solver_.estimateMinimal(sample, samples.enumerates(), candidates);
-            if (!keepBest(candidates))
-                continue;
-            if (params_.localOptimization)
-                optimizeLocally();
-            maxIterations = std::min<long>(maxIterations, requiredIterations(inliersInPool(), sampleSize));
-        }
+        const MixedSampling* mixed = solver_.mixedSampling();
+        bool enumerated = false;
+        const int iterations = mixed ? sampleMixed(*mixed, estimate.samplesOfKind) : sampleUniform(enumerated);
         // With few features every sample was tried, and the structure of the known views alone may
         // put all their residuals over the threshold (a minimal set has no redundancy to test).
         // Then the solver's estimate over all features, ranked by the scorer, goes on to the
         // re-triangulated inlier test below.
         bool haveModel = std::isfinite(best_.cost) && best_.inliers > 0;
-        if (!haveModel && samples.enumerates())
+        if (!haveModel && enumerated)
             haveModel = adoptAllFeatureEstimate();
         if (!haveModel)
             return false;
 
-        estimate.iterations = iteration;
+        estimate.iterations = iterations;
         estimate.pose = bestPose_;
         double cost = settleInliers(estimate);
         // A small problem's hypotheses come from four features scored against the known views'
@@ -96,6 +81,60 @@ public:
     }
 
 private:
+    //! Samples of solver_.sampleSize() features from the first samplePool(); returns how many were
+    //! drawn. @p enumerated: every distinct sample was drawn once (SampleGenerator).
+    int sampleUniform(bool& enumerated)
+    {
+        const int sampleSize = solver_.sampleSize();
+        pool_ = std::min(numFeatures_, solver_.samplePool(numFeatures_));
+        SampleGenerator samples(pool_, sampleSize, params_.maxIterations, params_.seed);
+        enumerated = samples.enumerates();
+        std::vector<int> indices(sampleSize);
+        FeatureSubset sample;
+        long maxIterations = params_.maxIterations;
+        int iteration = 0;
+        for (; iteration < maxIterations && samples.next(indices); ++iteration)
+        {
+            sample.assign(indices, numPoints_);
+            if (tryMinimalSample(sample, samples.enumerates()))
+                maxIterations = std::min<long>(maxIterations, requiredIterations(inliersInPool(), sampleSize));
+        }
+        return iteration;
+    }
+
+    //! Samples of the solver's kinds (MixedSampler), until one all-inlier sample is drawn with the
+    //! requested confidence; @p samplesOfKind receives how many of each kind were drawn.
+    int sampleMixed(const MixedSampling& sampling, std::vector<int>& samplesOfKind)
+    {
+        MixedSampler samples(sampling, params_.seed);
+        FeatureSubset sample;
+        int iteration = 0;
+        for (; iteration < params_.maxIterations && samples.next(sample); ++iteration)
+        {
+            if (tryMinimalSample(sample, false))
+                samples.setInliers(bestInliers_, sample);
+            if (samples.confident(params_.confidence))
+            {
+                ++iteration;
+                break;
+            }
+        }
+        samplesOfKind = samples.samplesOfKind();
+        return iteration;
+    }
+
+    //! Solves @p sample and keeps the best of its poses (locally optimised); true if it improved.
+    bool tryMinimalSample(const FeatureSubset& sample, bool exhaustive)
+    {
+        candidates_.clear();
+        solver_.estimateMinimal(sample, exhaustive, candidates_);
+        if (!keepBest(candidates_))
+            return false;
+        if (params_.localOptimization)
+            optimizeLocally();
+        return true;
+    }
+
     /** Refinement on the inliers and their re-classification until they settle (at most a few rounds):
     refinement on the inliers may change their classification. @p classify: start from the inliers
     of the estimate's pose, else from the masks it holds. Returns the truncated cost of the final
@@ -241,6 +280,7 @@ private:
     const double samplingThreshold_;
     int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
     std::vector<double> pointResiduals_, lineResiduals_;
+    std::vector<CameraPose> candidates_;
     PoseScore best_ = worstScore();
     CameraPose bestPose_;
     FeatureSubset bestInliers_, inliers_;

@@ -19,6 +19,9 @@ struct RobustEstimate
     std::vector<unsigned char> pointInliers, lineInliers;
     int numInliers = 0;
     int iterations = 0; //!< Samples drawn.
+    //! With a solver of several sample kinds (PoseSolver::mixedSampling()): the samples drawn of
+    //! each kind, in the order of its kinds; empty otherwise.
+    std::vector<int> samplesOfKind;
     //! RMS (px) over the inliers of the residuals that decide them (PoseScorer::refitResiduals()).
     double inlierRms = 0;
 };

@@ -52,6 +52,21 @@ double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
     return angles[angles.size() / 2] * 180.0 / M_PI;
 }
 
+double linePlaneAngleDeg(const ViewSet& set, int line)
+{
+    Eigen::Vector3d normals[2];
+    int found = 0;
+    for (size_t v = 0; v < set.views.size() && found < 2; ++v)
+    {
+        const View& view = set.views[v];
+        if (!view.estimated && view.seesLine(line))
+            normals[found++] = view.pose.R.transpose() * view.calibratedLines[line];
+    }
+    if (found < 2)
+        return 0.0;
+    return std::atan2(normals[0].cross(normals[1]).norm(), std::abs(normals[0].dot(normals[1]))) * 180.0 / M_PI;
+}
+
 double structureThickness(const ViewSet& set, const PoseScorer& scorer)
 {
     std::vector<Eigen::Vector3d> X;

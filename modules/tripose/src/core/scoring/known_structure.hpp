@@ -20,6 +20,13 @@ several basins and a single refinement from the best hypothesis often stops in t
 //! known views; 0 when there are none.
 double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer);
 
+/** Angle (deg, 0 to 90) between the planes through line @p line's image lines in the first two known
+views that see it, which meet in the triangulated line; 0 when fewer than two known views see it.
+Near 0 the line lies close to an epipolar plane of the pair and its lifted end points slide along it
+with the image noise.
+*/
+double linePlaneAngleDeg(const ViewSet& set, int line);
+
 //! Smallest over largest singular value of the centred structure (points and line end points),
 //! without the positions far off its plane (trimPlaneFit()): near 0 for coplanar structure, noisy or
 //! not; 1 when there are fewer than four structure points.
@@ -27,6 +34,10 @@ double structureThickness(const ViewSet& set, const PoseScorer& scorer);
 
 //! Below this median angle the known pair's depth is poor (1-2 % of the depth as baseline).
 constexpr double kWeakTriangulationAngleDeg = 2.0;
+/** Below this plane angle (linePlaneAngleDeg()) a line's triangulated position is too poor to serve
+in a minimal sample: an end point's depth error is about the image error over the sine of the angle,
+20 times it at 3 degrees. Such lines still vote in every score. */
+constexpr double kWeakLinePlaneAngleDeg = 3.0;
 //! Below this thickness the structure counts as planar (a facade seen with noise).
 constexpr double kPlanarThickness = 0.05;
 /** With a moderate triangulation angle (the paper's small motion: about 8 degrees) noisy depths
@@ -37,20 +48,25 @@ their errors as they are (doc/accuracy.md has the figures). */
 constexpr double kModerateTriangulationAngleDeg = 15.0;
 constexpr double kNoisyPlanarThickness = 0.35;
 
-/** True for the regimes with several basins: a weak triangulation angle, planar structure, or
-mostly lines (under a quarter of the features are points: a line's residuals leave the motion
-along it free, and a planar target seen through lines alone has a mirrored motion that explains
-most of them nearly as well, doc/stereo.md).
-*/
-inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+//! True for the regimes of the structure with several basins: a weak triangulation angle or planar
+//! structure.
+inline bool structureHasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {
-    if (4 * set.numPoints < set.numFeatures())
-        return true;
     const double angle = medianTriangulationAngleDeg(set, scorer);
     if (angle < kWeakTriangulationAngleDeg)
         return true;
     const double thickness = structureThickness(set, scorer);
     return thickness < kPlanarThickness || (angle < kModerateTriangulationAngleDeg && thickness < kNoisyPlanarThickness);
+}
+
+/** True for the regimes with several basins: those of the structure (structureHasSeveralBasins()),
+or mostly lines (under a quarter of the features are points: a line's residuals leave the motion
+along it free, and a planar target seen through lines alone has a mirrored motion that explains
+most of them nearly as well, doc/stereo.md).
+*/
+inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
+{
+    return 4 * set.numPoints < set.numFeatures() || structureHasSeveralBasins(set, scorer);
 }
 
 } // namespace tripose

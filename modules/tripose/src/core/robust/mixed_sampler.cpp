@@ -1,0 +1,161 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mixed_sampler.hpp"
+
+namespace tripose {
+
+namespace {
+
+// The share of the samples whose kind is chosen uniformly (MixedSampler's description says why).
+constexpr double kExplorationShare = 0.1;
+
+//! Probability that @p count draws without replacement from @p size items, @p good of them good,
+//! are all good.
+double allGood(int good, int size, int count)
+{
+    double p = 1.0;
+    for (int j = 0; j < count; ++j)
+        p *= size - j > 0 ? std::max(0.0, double(good - j) / (size - j)) : 0.0;
+    return p;
+}
+
+std::vector<unsigned char> membership(const std::vector<int>& pool)
+{
+    int size = 0;
+    for (int i : pool)
+        size = std::max(size, i + 1);
+    std::vector<unsigned char> in(size, 0);
+    for (int i : pool)
+        in[i] = 1;
+    return in;
+}
+
+} // namespace
+
+MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
+    : sampling_(sampling), rng_(seed), inPointPool_(membership(sampling.points)),
+      inLinePool_(membership(sampling.lines)), drawn_(sampling.kinds.size(), 0), weights_(sampling.kinds.size(), 0.0)
+{}
+
+void MixedSampler::setInliers(const FeatureSubset& inliers, const FeatureSubset& sample)
+{
+    const auto count = [](const std::vector<int>& inliers, const std::vector<int>& sample,
+                          const std::vector<unsigned char>& pool, PoolSupport& support) {
+        int all = 0, own = 0;
+        for (int i : inliers)
+            if (i < (int)pool.size() && pool[i])
+            {
+                ++all;
+                own += std::find(sample.begin(), sample.end(), i) != sample.end();
+            }
+        support.inliers = all > own ? all : 0;
+        support.beyondSample = all - own;
+        support.sampleInliers = own;
+    };
+    count(inliers.points, sample.points, inPointPool_, points_);
+    count(inliers.lines, sample.lines, inLinePool_, lines_);
+}
+
+double MixedSampler::successProbability(int k) const
+{
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    return allGood(points_.inliers, (int)sampling_.points.size(), kind.points) *
+           allGood(lines_.inliers, (int)sampling_.lines.size(), kind.lines);
+}
+
+double MixedSampler::choiceWeight(int k) const
+{
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    return allGood(points_.beyondSample, (int)sampling_.points.size() - points_.sampleInliers, kind.points) *
+           allGood(lines_.beyondSample, (int)sampling_.lines.size() - lines_.sampleInliers, kind.lines);
+}
+
+bool MixedSampler::canDraw(int k) const
+{
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    return kind.points <= (int)sampling_.points.size() && kind.lines <= (int)sampling_.lines.size();
+}
+
+int MixedSampler::chooseKind()
+{
+    const int kinds = (int)sampling_.kinds.size();
+    double supported = 0;
+    int drawable = 0;
+    for (int k = 0; k < kinds; ++k)
+    {
+        weights_[k] = choiceWeight(k) / sampling_.kinds[k].cost;
+        supported += weights_[k];
+        drawable += canDraw(k);
+    }
+    if (drawable == 0)
+        return -1;
+    // Each kind's weight: its part of the uniform share (all of the weight while no model has
+    // support beyond its sample) and its share of the choice weights.
+    const double uniform = supported > 0 ? kExplorationShare : 1.0;
+    for (int k = 0; k < kinds; ++k)
+        weights_[k] = canDraw(k) ? uniform / drawable + (1 - uniform) * (supported > 0 ? weights_[k] / supported : 0.0)
+                                 : 0.0;
+    // 32 random bits in [0, 1): the weights sum to 1.
+    const double u = rng_.next() / 4294967296.0;
+    double sum = 0;
+    int last = -1;
+    for (int k = 0; k < kinds; ++k)
+    {
+        if (!(weights_[k] > 0))
+            continue;
+        last = k;
+        sum += weights_[k];
+        if (u < sum)
+            return k;
+    }
+    return last;
+}
+
+void MixedSampler::drawDistinct(const std::vector<int>& pool, int count, std::vector<int>& out)
+{
+    out.clear();
+    for (int k = 0; k < count; ++k)
+    {
+        int f;
+        do
+            f = pool[rng_.uniform(0, (int)pool.size())];
+        while (std::find(out.begin(), out.end(), f) != out.end());
+        out.push_back(f);
+    }
+}
+
+bool MixedSampler::next(FeatureSubset& sample)
+{
+    const int k = chooseKind();
+    if (k < 0)
+        return false;
+    drawDistinct(sampling_.points, sampling_.kinds[k].points, sample.points);
+    drawDistinct(sampling_.lines, sampling_.kinds[k].lines, sample.lines);
+    ++drawn_[k];
+    return true;
+}
+
+bool MixedSampler::confident(double confidence) const
+{
+    // log of the probability that every sample drawn so far had an outlier; log1p keeps tiny
+    // success probabilities from rounding to no progress.
+    double logAllFailed = 0;
+    for (size_t k = 0; k < drawn_.size(); ++k)
+    {
+        if (drawn_[k] == 0)
+            continue;
+        const double p = successProbability((int)k);
+        if (p >= 1.0)
+            return true;
+        logAllFailed += drawn_[k] * std::log1p(-p);
+    }
+    return logAllFailed <= std::log1p(-confidence);
+}
+
+} // namespace tripose

@@ -1,0 +1,82 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_ROBUST_MIXED_SAMPLER_HPP
+#define OPENCV_TRIPOSE_ROBUST_MIXED_SAMPLER_HPP
+
+#include <vector>
+
+#include <cstdint>
+
+#include "../estimator/pose_solver.hpp"
+#include "../support/random.hpp"
+
+namespace tripose {
+
+/** Samples of several kinds (MixedSampling) and when to stop drawing them, after the hybrid RANSAC
+of Camposeco et al. (CVPR 2018) that LIMAP and PoseLib use for points and lines.
+
+Each kind's success probability is the probability that a sample of it is all inliers, from the
+inlier counts of the best model so far in each pool, drawn without replacement:
+C(I_p, k_p) C(I_l, k_l) / (C(N_p, k_p) C(N_l, k_l)); a pool whose inliers are only features of the
+sample the model came from counts none there (they fit the model by construction, right or wrong:
+with a pool of three points, the three of a wrong P3P model would otherwise make every later P3P
+sample look certain, and stop the search at that pose). Drawing stops when every sample drawn so far
+failing has probability at most 1 - confidence: the product over kinds of
+(1 - p_kind)^(samples of that kind); with one kind this is the usual adaptive RANSAC bound.
+
+A kind is chosen per sample with probability proportional to the same all-inlier probability with
+the model's own sample left out of the counts and the pools, so that where lines are the reliable
+matches the samples are mostly lines, and a wrong model's own sample does not steer the choice to
+its kind. (Left out of the stopping rule as well, it would underestimate a right model's support in
+small pools: 20 points, 8 of them inliers, a third of the all-inlier probability, more than twice
+the samples.) A tenth of the samples is chosen uniformly among the kinds the pools can fill (all of
+them while no model has support beyond its sample), because a wrong model that gathered support of
+one kind alone would otherwise leave the kinds that can find the truth undrawn.
+*/
+class MixedSampler
+{
+public:
+    MixedSampler(const MixedSampling& sampling, uint64_t seed);
+
+    //! Chooses a kind and draws its sample into @p sample; false when no kind can be drawn.
+    bool next(FeatureSubset& sample);
+
+    /** Sets the inliers of the best model (any features; those outside the pools are ignored) and
+    the sample it was estimated from. */
+    void setInliers(const FeatureSubset& inliers, const FeatureSubset& sample);
+
+    //! True when an all-inlier sample is among those drawn with at least @p confidence.
+    bool confident(double confidence) const;
+
+    //! Samples drawn of each kind, in the order of MixedSampling::kinds.
+    const std::vector<int>& samplesOfKind() const { return drawn_; }
+
+private:
+    //! Probability that a sample of kind @p k is all inliers (the stopping rule).
+    double successProbability(int k) const;
+    //! The same without the best model's own sample (the choice of a kind).
+    double choiceWeight(int k) const;
+    bool canDraw(int k) const;
+    int chooseKind();
+    void drawDistinct(const std::vector<int>& pool, int count, std::vector<int>& out);
+
+    const MixedSampling& sampling_;
+    Random rng_;
+    std::vector<unsigned char> inPointPool_, inLinePool_; //!< Pool membership by feature index.
+    std::vector<int> drawn_;
+    std::vector<double> weights_;
+    //! The best model's inliers in one pool (setInliers()).
+    struct PoolSupport
+    {
+        int inliers = 0;       //!< All of them, or 0 when they are only its sample's features.
+        int beyondSample = 0;  //!< Those that are not features of its sample.
+        int sampleInliers = 0; //!< Features of its sample among them.
+    };
+    PoolSupport points_, lines_;
+};
+
+} // namespace tripose
+
+#endif // OPENCV_TRIPOSE_ROBUST_MIXED_SAMPLER_HPP

@@ -1,0 +1,198 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "test_precomp.hpp"
+
+#include <cmath>
+
+#include "../src/core/robust/mixed_sampler.hpp"
+
+namespace opencv_test {
+namespace {
+
+using ::tripose::FeatureSubset;
+using ::tripose::MixedSampler;
+using ::tripose::MixedSampling;
+
+//! The four kinds of the three-view problem over pools of @p points points and @p lines lines (every
+//! third index, so that the pools are not the first indices).
+MixedSampling threeFeatureKinds(int points, int lines)
+{
+    MixedSampling sampling;
+    for (int p = 3; p >= 0; --p)
+        sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p, 1.0 });
+    for (int i = 0; i < points; ++i)
+        sampling.points.push_back(3 * i);
+    for (int i = 0; i < lines; ++i)
+        sampling.lines.push_back(3 * i + 1);
+    return sampling;
+}
+
+FeatureSubset firstOfPools(const MixedSampling& sampling, int points, int lines)
+{
+    FeatureSubset subset;
+    subset.points.assign(sampling.points.begin(), sampling.points.begin() + points);
+    subset.lines.assign(sampling.lines.begin(), sampling.lines.begin() + lines);
+    return subset;
+}
+
+// Samples are one kind's distinct features from its pools; without a model every kind is drawn.
+TEST(Tripose_MixedSampler, samples_are_distinct_pool_features_of_one_kind)
+{
+    const MixedSampling sampling = threeFeatureKinds(10, 100);
+    MixedSampler sampler(sampling, 3);
+    FeatureSubset sample;
+    for (int draw = 0; draw < 2000; ++draw)
+    {
+        ASSERT_TRUE(sampler.next(sample));
+        ASSERT_EQ(3, sample.size());
+        bool kindFound = false;
+        for (const MixedSampling::Kind& kind : sampling.kinds)
+            kindFound = kindFound || ((int)sample.points.size() == kind.points && (int)sample.lines.size() == kind.lines);
+        EXPECT_TRUE(kindFound);
+        for (const std::vector<int>* drawn : { &sample.points, &sample.lines })
+        {
+            const std::vector<int>& pool = drawn == &sample.points ? sampling.points : sampling.lines;
+            for (size_t a = 0; a < drawn->size(); ++a)
+            {
+                EXPECT_NE(std::find(pool.begin(), pool.end(), (*drawn)[a]), pool.end());
+                for (size_t b = a + 1; b < drawn->size(); ++b)
+                    EXPECT_NE((*drawn)[a], (*drawn)[b]);
+            }
+        }
+    }
+    for (int count : sampler.samplesOfKind())
+        EXPECT_GT(count, 400) << "2000 draws of four kinds, uniform while no model has inliers";
+}
+
+// The kinds follow the inlier ratios, but for a tenth of the samples chosen uniformly: no point
+// inlier leaves three-line samples and that tenth; lines of which one in ten is an inlier, beside
+// points all inliers, leave mostly three-point samples.
+TEST(Tripose_MixedSampler, kinds_follow_the_inlier_ratios)
+{
+    const MixedSampling sampling = threeFeatureKinds(10, 100);
+    const FeatureSubset noSample;
+    MixedSampler linesOnly(sampling, 5);
+    linesOnly.setInliers(firstOfPools(sampling, 0, 50), noSample);
+    FeatureSubset sample;
+    for (int draw = 0; draw < 1000; ++draw)
+        ASSERT_TRUE(linesOnly.next(sample));
+    // Expected 925 three-line samples, 25 of each other kind.
+    EXPECT_GT(linesOnly.samplesOfKind()[3], 880);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_LT(linesOnly.samplesOfKind()[k], 50);
+
+    MixedSampler pointsFirst(sampling, 5);
+    pointsFirst.setInliers(firstOfPools(sampling, 10, 10), noSample);
+    for (int draw = 0; draw < 1000; ++draw)
+        ASSERT_TRUE(pointsFirst.next(sample));
+    // Success probabilities 1, 0.1, 0.0091, 0.00073: P3P about 84 % of the samples, P3L 2.6 %.
+    EXPECT_GT(pointsFirst.samplesOfKind()[0], 790);
+    EXPECT_LT(pointsFirst.samplesOfKind()[3], 50);
+
+    // Features outside the pools do not count: no support, every kind alike.
+    MixedSampler outside(sampling, 5);
+    FeatureSubset notInPools;
+    notInPools.points = { 1, 2, 4 };
+    notInPools.lines = { 0, 3, 6 };
+    outside.setInliers(notInPools, noSample);
+    for (int draw = 0; draw < 400; ++draw)
+        ASSERT_TRUE(outside.next(sample));
+    for (int count : outside.samplesOfKind())
+        EXPECT_GT(count, 50);
+}
+
+// The features of the sample a model came from fit it by construction: with a pool of three points, the
+// three of a P3P sample are no evidence that the next P3P sample is all inliers.
+TEST(Tripose_MixedSampler, the_model_s_own_sample_is_no_support)
+{
+    const MixedSampling sampling = threeFeatureKinds(3, 60);
+    MixedSampler sampler(sampling, 9);
+    const FeatureSubset own = firstOfPools(sampling, 3, 0);
+    sampler.setInliers(own, own);
+    FeatureSubset sample;
+    ASSERT_TRUE(sampler.next(sample));
+    EXPECT_FALSE(sampler.confident(0.999));
+    for (int draw = 0; draw < 400; ++draw)
+        ASSERT_TRUE(sampler.next(sample));
+    EXPECT_FALSE(sampler.confident(0.999));
+    for (int count : sampler.samplesOfKind())
+        EXPECT_GT(count, 50) << "no support beyond the sample: every kind alike";
+
+    // The same three points as inliers of a model from three lines are support.
+    FeatureSubset lines = firstOfPools(sampling, 0, 3);
+    FeatureSubset inliers = lines;
+    inliers.points = own.points;
+    MixedSampler supported(sampling, 9);
+    supported.setInliers(inliers, lines);
+    // P3P has all the success probability (92.5 % of the samples): once one is drawn, it is enough.
+    for (int draw = 0; draw < 20 && supported.samplesOfKind()[0] == 0; ++draw)
+    {
+        EXPECT_FALSE(supported.confident(0.999));
+        ASSERT_TRUE(supported.next(sample));
+    }
+    EXPECT_TRUE(supported.confident(0.999));
+}
+
+// With one kind the stopping rule is the usual adaptive RANSAC bound (all-inlier probability of a
+// sample drawn without replacement); with several, the samples of every kind count.
+TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
+{
+    MixedSampling points;
+    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
+    for (int i = 0; i < 100; ++i)
+        points.points.push_back(i);
+    MixedSampler sampler(points, 1);
+    sampler.setInliers(firstOfPools(points, 50, 0), FeatureSubset());
+    const double p = 50.0 / 100 * 49.0 / 99 * 48.0 / 98;
+    const long required = (long)std::ceil(std::log(1 - 0.999) / std::log(1 - p));
+    FeatureSubset sample;
+    long drawn = 0;
+    while (!sampler.confident(0.999))
+    {
+        ASSERT_TRUE(sampler.next(sample));
+        ++drawn;
+        ASSERT_LE(drawn, 100000);
+    }
+    EXPECT_EQ(required, drawn);
+
+    // All pool features inliers: one sample of a kind is enough.
+    const MixedSampling mixed = threeFeatureKinds(10, 100);
+    MixedSampler clean(mixed, 1);
+    clean.setInliers(firstOfPools(mixed, 10, 100), FeatureSubset());
+    EXPECT_FALSE(clean.confident(0.999));
+    ASSERT_TRUE(clean.next(sample));
+    EXPECT_TRUE(clean.confident(0.999));
+}
+
+TEST(Tripose_MixedSampler, same_seed_same_samples)
+{
+    const MixedSampling sampling = threeFeatureKinds(10, 60);
+    MixedSampler a(sampling, 42), b(sampling, 42);
+    FeatureSubset inliers = firstOfPools(sampling, 4, 30);
+    a.setInliers(inliers, FeatureSubset());
+    b.setInliers(inliers, FeatureSubset());
+    FeatureSubset sa, sb;
+    for (int draw = 0; draw < 500; ++draw)
+    {
+        ASSERT_TRUE(a.next(sa));
+        ASSERT_TRUE(b.next(sb));
+        ASSERT_EQ(sa.points, sb.points);
+        ASSERT_EQ(sa.lines, sb.lines);
+    }
+}
+
+// Pools too small for any kind: nothing to draw.
+TEST(Tripose_MixedSampler, no_sample_from_pools_too_small)
+{
+    MixedSampling sampling;
+    sampling.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
+    sampling.points = { 0, 1 };
+    MixedSampler sampler(sampling, 0);
+    FeatureSubset sample;
+    EXPECT_FALSE(sampler.next(sample));
+}
+
+} // namespace
+} // namespace opencv_test
