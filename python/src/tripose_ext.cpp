@@ -24,7 +24,6 @@
 #include "linear/rig_pose_solver.hpp"
 #include "pipeline/pose_pipelines.hpp"
 #include "problem/view_set_builder.hpp"
-#include "robust/hybrid_pose_solver.hpp"
 #include "support/error.hpp"
 
 namespace nb = nanobind;
@@ -651,11 +650,8 @@ NB_MODULE(_tripose_ext, m)
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
               return runRobust(problem.builder(kMinFeatures),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
-                                   // The scorer's structure from views 1-2 is also what the minimal samples solve on.
-                                   const tripose::PoseScorer scorer(views);
                                    const tripose::LinearPoseSolver linear(views);
-                                   const tripose::HybridPoseSolver solver(views, scorer, linear);
-                                   return tripose::estimateRobust(views, scorer, solver, options, estimate);
+                                   return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
                                });
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
@@ -715,11 +711,8 @@ NB_MODULE(_tripose_ext, m)
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
               return runRobust(problem.newViewBuilder(),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
-                                   // The scorer's structure from the known views is also what the minimal samples solve on.
-                                   const tripose::PoseScorer scorer(views);
                                    const tripose::MultiViewPoseSolver linear(views);
-                                   const tripose::HybridPoseSolver solver(views, scorer, linear);
-                                   return tripose::estimateRobust(views, scorer, solver, options, estimate);
+                                   return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
                                });
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));

@@ -6,7 +6,6 @@
 
 #include "core/linear/linear_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
-#include "core/robust/hybrid_pose_solver.hpp"
 #include "opencv/argument_reading.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/result_writing.hpp"
@@ -29,12 +28,9 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                                        cameraMatrix, distCoeffs, R12, t12);
         const detail::core::RansacOptions options = detail::toCoreOptions(params);
-        // The scorer's structure from views 1-2 is also what the minimal absolute-pose samples solve on.
-        const detail::core::PoseScorer scorer(views);
         const detail::core::LinearPoseSolver linear(views);
-        const detail::core::HybridPoseSolver solver(views, scorer, linear);
         detail::core::RobustEstimate estimate;
-        const bool found = detail::core::estimateRobust(views, scorer, solver, options, estimate);
+        const bool found = detail::core::estimateRobustOnKnownStructure(views, linear, options, estimate);
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

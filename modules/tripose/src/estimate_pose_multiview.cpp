@@ -6,7 +6,6 @@
 
 #include "core/linear/multiview_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
-#include "core/robust/hybrid_pose_solver.hpp"
 #include "opencv/argument_reading.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/pose_refinement.hpp"
@@ -48,12 +47,9 @@ int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays li
         const detail::core::ViewSet views =
             detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
         const detail::core::RansacOptions options = detail::toCoreOptions(params);
-        // The scorer's structure from the known views is also what the minimal samples solve on.
-        const detail::core::PoseScorer scorer(views);
         const detail::core::MultiViewPoseSolver linear(views);
-        const detail::core::HybridPoseSolver solver(views, scorer, linear);
         detail::core::RobustEstimate estimate;
-        const bool found = detail::core::estimateRobust(views, scorer, solver, options, estimate);
+        const bool found = detail::core::estimateRobustOnKnownStructure(views, linear, options, estimate);
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

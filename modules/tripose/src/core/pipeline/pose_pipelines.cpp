@@ -10,6 +10,7 @@
 
 #include "../refine/multi_start_refinement.hpp"
 #include "../refine/multi_start_refiner.hpp"
+#include "../robust/hybrid_pose_solver.hpp"
 #include "../scoring/candidate_ranking.hpp"
 #include "../scoring/known_structure.hpp"
 
@@ -73,6 +74,14 @@ std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolve
     if (refine)
         refineCandidates(views, hasSeveralBasins(views, scorer), ranked);
     return ranked;
+}
+
+bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& linear, const RansacOptions& options,
+                                    RobustEstimate& estimate)
+{
+    const PoseScorer scorer(views);
+    const HybridPoseSolver solver(views, scorer, linear);
+    return estimateRobust(views, scorer, solver, options, estimate);
 }
 
 bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,

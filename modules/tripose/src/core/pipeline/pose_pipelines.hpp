@@ -39,6 +39,13 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
 bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
                     RobustEstimate& estimate);
 
+/** The robust estimate of one estimated view on the structure of known views (three views, several
+known views): the hybrid sample solver (robust/hybrid_pose_solver.hpp) over @p linear, its minimal
+samples solved on the structure that the scorer triangulates from the known views.
+*/
+bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& linear, const RansacOptions& options,
+                                    RobustEstimate& estimate);
+
 /** Refines @p pose (in place) and the structure over every view of @p views; @p options must be
 valid (checkRefineOptions()). Returns the final RMS reprojection error (px).
 */
