@@ -281,7 +281,21 @@ nb::list candidateList(const std::vector<tripose::ScoredPose>& candidates)
     return out;
 }
 
-nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate)
+//! The pose's uncertainty into @p out: covariance (6, 6) and noise_variance, both None when not valid.
+void writeCovariance(const tripose::PoseCovariance& uncertainty, nb::dict& out)
+{
+    if (!uncertainty.valid)
+    {
+        out["covariance"] = nb::none();
+        out["noise_variance"] = nb::none();
+        return;
+    }
+    const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rowMajor = uncertainty.covariance;
+    out["covariance"] = newArray({ 6, 6 }, rowMajor.data()).cast();
+    out["noise_variance"] = uncertainty.noiseVariance;
+}
+
+nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, const tripose::PoseCovariance& uncertainty)
 {
     nb::dict out;
     out["R"] = found ? rotationArray(estimate.pose.R) : nb::none();
@@ -290,6 +304,7 @@ nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate)
     out["point_inliers"] = maskArray(estimate.pointInliers);
     out["line_inliers"] = maskArray(estimate.lineInliers);
     out["rms"] = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
+    writeCovariance(uncertainty, out);
     return out;
 }
 
@@ -425,13 +440,14 @@ std::function<bool(const tripose::ViewSet&, tripose::RobustEstimate&)> robustWit
 }
 
 nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
-                       const tripose::RefinedStructure& structure)
+                       const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
 {
     nb::dict out;
     out["R"] = rotationArray(pose.R);
     out["t"] = vectorArray(pose.t);
     out["rms"] = rms;
     writeStructure(structure, views.numPoints, views.numLines, out);
+    writeCovariance(uncertainty, out);
     return out;
 }
 
@@ -450,19 +466,24 @@ nb::list runCandidates(Build build, bool refine)
     return candidateList(candidates);
 }
 
-//! The robust estimate of a problem: @p estimate runs the estimator of its arrangement on the ViewSet
-//! that @p build makes (GIL released).
+//! The robust estimate of a problem: @p estimate runs the estimator of its arrangement, with
+//! @p options, on the ViewSet that @p build makes (GIL released); with refinement, the uncertainty
+//! of the refined pose over the inliers.
 template <class Build, class Estimate>
-nb::dict runRobust(Build build, Estimate estimate)
+nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options)
 {
     tripose::RobustEstimate result;
+    tripose::PoseCovariance uncertainty;
     bool found;
     {
         nb::gil_scoped_release release;
         const tripose::ViewSet views = build();
         found = estimate(views, result);
+        if (found && options.refine)
+            uncertainty = tripose::covarianceOfEstimate(views, result.pose, options.refineOptions,
+                                                        &result.pointInliers, &result.lineInliers);
     }
-    return robustResult(found, result);
+    return robustResult(found, result, uncertainty);
 }
 
 //! The refinement of the initial pose (@p R, @p t) over the ViewSet that @p build makes (GIL released).
@@ -471,6 +492,7 @@ nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const trip
                        const tripose::RefineOptions& options)
 {
     tripose::RefinedStructure structure;
+    tripose::PoseCovariance uncertainty;
     tripose::CameraPose pose;
     double rms;
     tripose::ViewSet views;
@@ -479,9 +501,9 @@ nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const trip
         views = build();
         pose.R = tripose::readRotation(R);
         pose.t = tripose::readTranslation(t, false);
-        rms = tripose::refineInitialPose(views, pose, options, &structure);
+        rms = tripose::refineInitialPose(views, pose, options, &structure, &uncertainty);
     }
-    return refinedResult(views, pose, rms, structure);
+    return refinedResult(views, pose, rms, structure, uncertainty);
 }
 
 } // namespace
@@ -522,7 +544,8 @@ NB_MODULE(_tripose_ext, m)
                                    const tripose::LinearPoseSolver linear(views);
                                    const tripose::HybridPoseSolver solver(views, scorer, linear);
                                    return tripose::estimateRobust(views, scorer, solver, options, estimate);
-                               });
+                               },
+                               options);
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
@@ -551,7 +574,7 @@ NB_MODULE(_tripose_ext, m)
              double confidence, int maxIterations, bool refine, uint64_t seed) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options));
+              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options), options);
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
@@ -579,7 +602,7 @@ NB_MODULE(_tripose_ext, m)
              double threshold, double confidence, int maxIterations, bool refine, uint64_t seed) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.newViewBuilder(), robustWith<tripose::MultiViewPoseSolver>(options));
+              return runRobust(problem.newViewBuilder(), robustWith<tripose::MultiViewPoseSolver>(options), options);
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 

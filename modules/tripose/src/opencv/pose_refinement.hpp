@@ -16,10 +16,11 @@ namespace detail {
 
 /** What the refine* entry points share: reads the initial pose from @p R (3x3 or Rodrigues, named
 "R" in errors) and @p t, refines it over every view of @p views, writes the pose back in the form
-it came in and the structure where wanted. Returns the final RMS reprojection error (px).
+it came in and the structure and the pose's uncertainty (covariance_writing.hpp) where wanted.
+Returns the final RMS reprojection error (px).
 */
 double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
-                       OutputArray points3d, OutputArray lines3d);
+                       OutputArray points3d, OutputArray lines3d, OutputArray covariance, OutputArray noiseVariance);
 
 } // namespace detail
 } // namespace tripose
