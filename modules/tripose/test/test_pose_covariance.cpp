@@ -263,7 +263,7 @@ void expectSymmetricPositiveDefinite(const Mat& covariance, const char* what)
 {
     ASSERT_EQ(covariance.size(), Size(6, 6)) << what;
     ASSERT_EQ(covariance.type(), CV_64F) << what;
-    EXPECT_LE(cvtest::norm(covariance, covariance.t(), NORM_INF), 1e-12 * cvtest::norm(covariance, NORM_INF)) << what;
+    EXPECT_LE(cv::norm(covariance, covariance.t(), NORM_INF), 1e-12 * cv::norm(covariance, NORM_INF)) << what;
     Mat eigenvalues;
     eigen(covariance, eigenvalues);
     EXPECT_GT(eigenvalues.at<double>(5), 0.0) << what;
@@ -292,7 +292,7 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
                                                  covariance, noiseVariance),
               0);
     expectSymmetricPositiveDefinite(covariance, "POSE_LINEAR_REFINE");
-    EXPECT_LE(cvtest::norm(covariance, reference, NORM_INF), 1e-6 * cvtest::norm(reference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
     EXPECT_NEAR(noiseVariance.at<double>(0), referenceVariance.at<double>(0), 1e-6);
 
     ASSERT_GT(cv::tripose::estimatePoseLinePoint(x[0], x[1], x[2], l[0], l[1], l[2], p.K, noArray(), p.R12, p.t12, R,
@@ -309,7 +309,7 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
                                                        noiseVariance),
               0);
     expectSymmetricPositiveDefinite(covariance, "estimatePoseLinePointRansac");
-    EXPECT_LE(cvtest::norm(covariance, reference, NORM_INF), 1e-6 * cvtest::norm(reference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
 
     ransac.refine = false;
     ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(x[0], x[1], x[2], l[0], l[1], l[2], p.K, noArray(), p.R12,
@@ -325,17 +325,17 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
     t = p.t.clone();
     cv::tripose::refinePoseMultiView(x, l, p.K, noArray(), Rs, tss, R, t, cv::tripose::RefineParams(), noArray(),
                                      noArray(), covariance, noiseVariance);
-    EXPECT_LE(cvtest::norm(covariance, reference, NORM_INF), 1e-6 * cvtest::norm(reference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
     ASSERT_GT(cv::tripose::estimatePoseMultiView(x, l, p.K, noArray(), Rs, tss, R, t,
                                                  cv::tripose::POSE_LINEAR_REFINE, noArray(), noArray(), noArray(),
                                                  covariance, noiseVariance),
               0);
-    EXPECT_LE(cvtest::norm(covariance, reference, NORM_INF), 1e-6 * cvtest::norm(reference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
     ransac.refine = true;
     ASSERT_GT(cv::tripose::estimatePoseMultiViewRansac(x, l, p.K, noArray(), Rs, tss, R, t, ransac, noArray(),
                                                        noArray(), covariance, noiseVariance),
               0);
-    EXPECT_LE(cvtest::norm(covariance, reference, NORM_INF), 1e-6 * cvtest::norm(reference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
 
     // The stereo rig's functions.
     const Regime rig = { "stereo", true, 0, 0.0, 8, 8 };
@@ -348,12 +348,12 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
                   s.K, noArray(), s.R12, s.t12, R, t, cv::tripose::POSE_LINEAR_REFINE, noArray(), noArray(), noArray(),
                   covariance, noArray()),
               0);
-    EXPECT_LE(cvtest::norm(covariance, rigReference, NORM_INF), 1e-6 * cvtest::norm(rigReference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, rigReference, NORM_INF), 1e-6 * cv::norm(rigReference, NORM_INF));
     ASSERT_GT(cv::tripose::estimatePoseLinePointStereoRansac(
                   s.points[0], s.points[1], s.points[2], s.points[3], s.lines[0], s.lines[1], s.lines[2], s.lines[3],
                   s.K, noArray(), s.R12, s.t12, R, t, ransac, noArray(), noArray(), covariance, noArray()),
               0);
-    EXPECT_LE(cvtest::norm(covariance, rigReference, NORM_INF), 1e-6 * cvtest::norm(rigReference, NORM_INF));
+    EXPECT_LE(cv::norm(covariance, rigReference, NORM_INF), 1e-6 * cv::norm(rigReference, NORM_INF));
 }
 
 TEST(Tripose_PoseCovarianceCheck, undetermined_pose_gives_no_covariance)
