@@ -232,7 +232,7 @@ TEST(Tripose_PoseCovarianceCheck, equals_first_order_error_propagation)
                 const Mat& observed = kind == 0 ? p.points[v] : p.lines[v];
                 for (int i = 0; i < (int)observed.total(); ++i)
                 {
-                    if (cvIsNaN(observed.at<double>(i)))
+                    if (cvIsNaN(observed.ptr<double>()[i]))
                         continue;
                     Vec6d sides[2];
                     for (int side = 0; side < 2; ++side)
@@ -240,7 +240,7 @@ TEST(Tripose_PoseCovarianceCheck, equals_first_order_error_propagation)
                         Problem moved = p;
                         Mat& m = kind == 0 ? moved.points[v] : moved.lines[v];
                         m = m.clone();
-                        m.at<double>(i) += side == 0 ? h : -h;
+                        m.ptr<double>()[i] += side == 0 ? h : -h;
                         Mat Rm = p.R.clone(), tm = p.t.clone();
                         refine(moved, Rm, tm, noArray(), noArray());
                         sides[side] = poseErrorVector(Rm, tm, p);
