@@ -8,8 +8,9 @@
 // point returns it where documented and releases it where documented.
 //
 // The Monte-Carlo test takes its size from the environment: TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS
-// (default 5x60, what CI runs). The full study of doc/accuracy.md is
-//   TRIPOSE_COVARIANCE_STUDY=20x500 opencv_test_tripose --gtest_filter='*PoseCovariance/*'
+// (default 20x100, what CI runs, about a second). It prints its table; the full study of
+// doc/accuracy.md is
+//   TRIPOSE_COVARIANCE_STUDY=20x500 opencv_test_tripose --gtest_filter='*PoseCovariance.*'
 
 #include "test_precomp.hpp"
 #include "test_pose_common.hpp"
@@ -47,6 +48,8 @@ struct Regime
     int motion;
     double baselineFraction;
     int numPoints, numLines;
+    double sigma = 1.0;       //!< Noise (px) of the Monte-Carlo draws; the covariance is scaled by sigma^2.
+    bool meetsTarget = true;  //!< Whether the study asserts the NEES and coverage targets.
 };
 
 Problem makeProblem(const Regime& regime, int seed)
@@ -81,8 +84,8 @@ Problem makeProblem(const Regime& regime, int seed)
     return p;
 }
 
-//! @p p with Gaussian noise of 1 px on every observed coordinate of every view.
-Problem addNoise(const Problem& p, RNG& rng)
+//! @p p with Gaussian noise of @p sigma px on every observed coordinate of every view.
+Problem addNoise(const Problem& p, RNG& rng, double sigma = 1.0)
 {
     Problem noisy = p;
     for (std::vector<Mat>* observations : { &noisy.points, &noisy.lines })
@@ -90,7 +93,7 @@ Problem addNoise(const Problem& p, RNG& rng)
         {
             m = m.clone();
             Mat noise(m.size(), CV_64F);
-            rng.fill(noise, RNG::NORMAL, 0.0, 1.0);
+            rng.fill(noise, RNG::NORMAL, 0.0, sigma);
             m += noise; // NaN rows stay NaN
         }
     return noisy;
@@ -112,33 +115,39 @@ double refine(const Problem& p, Mat& R, Mat& t, OutputArray covariance, OutputAr
 //! The error of (R, t) in the order and sense of the covariance: [d; t - t_true], R = exp([d]x) R_true.
 Vec6d poseErrorVector(const Mat& R, const Mat& t, const Problem& truth)
 {
-    Mat d;
-    Rodrigues(Mat(R * truth.R.t()), d);
+    // The logarithm of the rotation, accurate at any small angle: cv::Rodrigues returns a zero
+    // vector below 1e-5 rad, which would erase the rotation error of the finite differences.
+    const Mat dR = R * truth.R.t();
+    const Vec3d axis(dR.at<double>(2, 1) - dR.at<double>(1, 2), dR.at<double>(0, 2) - dR.at<double>(2, 0),
+                     dR.at<double>(1, 0) - dR.at<double>(0, 1));
+    const double sine = 0.5 * cv::norm(axis), cosine = 0.5 * (trace(dR)[0] - 1.0);
+    const double angle = std::atan2(sine, cosine);
+    const Vec3d d = axis * (sine > 1e-300 ? 0.5 * angle / sine : 0.5);
     const Mat dt = t - truth.t;
-    return Vec6d(d.at<double>(0), d.at<double>(1), d.at<double>(2), dt.at<double>(0), dt.at<double>(1),
-                 dt.at<double>(2));
+    return Vec6d(d[0], d[1], d[2], dt.at<double>(0), dt.at<double>(1), dt.at<double>(2));
 }
 
 struct Consistency
 {
     int draws = 0, withoutCovariance = 0;
-    double meanNees = 0, coverage = 0, meanNoiseVariance = 0;
+    double meanNees = 0, coverage = 0, meanNoiseVariance = 0; //!< The noise variance relative to sigma^2.
 };
 
 /** The normalised estimation error squared e^T Sigma^-1 e of the maximum-likelihood estimate over
-@p draws noise draws of 1 px on each of @p scenes scenes: the estimate is refinement from the truth
-(the maximum-likelihood fit where the cost is near quadratic around it), Sigma the covariance it
-reports. */
+@p draws noise draws of sigma px on each of @p scenes scenes: the estimate is refinement from the
+truth (the maximum-likelihood fit where the cost is near quadratic around it), Sigma the covariance
+it reports times sigma^2. */
 Consistency measureConsistency(const Regime& regime, int scenes, int draws)
 {
     Consistency c;
+    const double variance = regime.sigma * regime.sigma;
     for (int scene = 0; scene < scenes; ++scene)
     {
         const Problem p = makeProblem(regime, scene);
         RNG rng(77 + scene);
         for (int draw = 0; draw < draws; ++draw)
         {
-            const Problem noisy = addNoise(p, rng);
+            const Problem noisy = addNoise(p, rng, regime.sigma);
             Mat R = p.R.clone(), t = p.t.clone(), covariance, noiseVariance;
             refine(noisy, R, t, covariance, noiseVariance);
             if (covariance.empty())
@@ -146,11 +155,11 @@ Consistency measureConsistency(const Regime& regime, int scenes, int draws)
                 ++c.withoutCovariance;
                 continue;
             }
-            const Vec6d e = poseErrorVector(R, t, p);
-            const double nees = Mat(Mat(e).t() * covariance.inv(DECOMP_CHOLESKY) * Mat(e)).at<double>(0);
+            const Mat e(poseErrorVector(R, t, p));
+            const double nees = Mat(e.t() * Mat(variance * covariance).inv(DECOMP_CHOLESKY) * e).at<double>(0);
             c.meanNees += nees;
             c.coverage += nees <= kChiSquare6At95;
-            c.meanNoiseVariance += noiseVariance.at<double>(0);
+            c.meanNoiseVariance += noiseVariance.at<double>(0) / variance;
             ++c.draws;
         }
     }
@@ -165,56 +174,86 @@ Consistency measureConsistency(const Regime& regime, int scenes, int draws)
 
 void studySize(int& scenes, int& draws)
 {
-    scenes = 5;
-    draws = 60;
+    // 2000 draws per regime: the whole table in about a second, three standard errors of 0.23 on
+    // the mean NEES and 1.5 points on the coverage.
+    scenes = 20;
+    draws = 100;
     const char* size = std::getenv("TRIPOSE_COVARIANCE_STUDY");
     if (size && *size)
         ASSERT_EQ(std::sscanf(size, "%dx%d", &scenes, &draws), 2) << "TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS";
+    ASSERT_GT(scenes, 0);
+    ASSERT_GT(draws, 0);
 }
 
-typedef testing::TestWithParam<Regime> Tripose_PoseCovariance;
-
-TEST_P(Tripose_PoseCovariance, consistent_with_monte_carlo)
+TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
 {
-    const Regime regime = GetParam();
+    // The narrow regime (views 1 and 2 1 % of the scene depth apart) is far from linear at 1 px:
+    // the depth of the structure, and with it the pose of view 3, is a reciprocal of a small noisy
+    // disparity, and the estimate has heavy tails that no covariance describes (doc/accuracy.md,
+    // "Pose covariance"). Its 1 px rows are printed, not held to the targets; at 0.03 px, where the
+    // first-order theory applies, it must meet them like the other regimes. A rare 1 px draw there
+    // may also end with a line whose structure block is singular to rounding (its eigenvalues
+    // spanning 1e20): the refinement then reports no covariance, as documented, and the row counts it.
+    const Regime regimes[] = {
+        { "large", false, ts::MOTION_LARGE, 0.0, 10, 10 },
+        { "large", false, ts::MOTION_LARGE, 0.0, 4, 4 },
+        { "small", false, ts::MOTION_SMALL, 0.0, 10, 10 },
+        { "small", false, ts::MOTION_SMALL, 0.0, 4, 4 },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10, 1.0, false },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4, 1.0, false },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10, 0.03 },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4, 0.03 },
+        { "stereo rig", true, 0, 0.0, 10, 10 },
+        { "stereo rig", true, 0, 0.0, 4, 4 },
+    };
     int scenes = 0, draws = 0;
     studySize(scenes, draws);
-    const Consistency c = measureConsistency(regime, scenes, draws);
-    std::cout << "| " << regime.name << " | " << regime.numPoints << "P+" << regime.numLines << "L | " << scenes
-              << " x " << draws << " | " << cv::format("%.2f", c.meanNees) << " | "
-              << cv::format("%.1f %%", 100 * c.coverage) << " | " << cv::format("%.3f", c.meanNoiseVariance)
-              << " |" << std::endl;
-    EXPECT_EQ(c.withoutCovariance, 0);
-    ASSERT_GT(c.draws, 0);
-    // The targets are a mean NEES within 10 % of 6 and a 95 % coverage between 93 and 97 %. A small
-    // sample cannot resolve them: the bands widen to three standard errors of the sample (a draw's
-    // NEES has variance 12 when the covariance is right, its coverage indicator 0.95 x 0.05), which
-    // at CI's 300 draws is 6 +- 0.6 and 95 +- 3.8 %: still far from a covariance off by a factor of
-    // two (NEES 3 or 12) or with its blocks exchanged.
-    const double neesBand = std::max(0.6, 3 * std::sqrt(kNeesVariance / c.draws));
-    const double coverageBand = std::max(0.02, 3 * std::sqrt(kCoverageVariance / c.draws));
-    EXPECT_NEAR(c.meanNees, 6.0, neesBand);
-    EXPECT_NEAR(c.coverage, 0.95, coverageBand);
-    // The noise-variance estimate is unbiased to first order: its mean over the draws is 1 px^2.
-    EXPECT_NEAR(c.meanNoiseVariance, 1.0, 0.1);
+    std::cout << "Pose covariance against Monte-Carlo, " << scenes << " scenes x " << draws
+              << " draws per row (targets: mean NEES 6 +- 0.6, coverage 93-97 %)\n"
+              << "| regime | features | noise (px) | mean NEES | 95 % coverage | mean s^2 / sigma^2 | no covariance "
+                 "| targets |\n"
+              << "|---|---|---|---|---|---|---|---|\n";
+    for (const Regime& regime : regimes)
+    {
+        const Consistency c = measureConsistency(regime, scenes, draws);
+        const std::string what = cv::format("%s %dP+%dL at %g px", regime.name, regime.numPoints, regime.numLines,
+                                            regime.sigma);
+        // The targets are a mean NEES within 10 % of 6 and a 95 % coverage between 93 and 97 %. A
+        // finite sample measures them to within its own error, so each band is the target's
+        // tolerance plus three standard errors of the sample (a draw's NEES has variance 12 when the
+        // covariance is right, whatever the scene, its coverage indicator 0.95 x 0.05): at CI's
+        // 2000 draws 6 +- 0.83 and 95 +- 3.5 %, still far from a covariance off by a factor of two
+        // (NEES 3 or 12), with its blocks exchanged or its rotation in another frame.
+        const double neesBand = 0.6 + 3 * std::sqrt(kNeesVariance / std::max(c.draws, 1));
+        const double coverageBand = 0.02 + 3 * std::sqrt(kCoverageVariance / std::max(c.draws, 1));
+        const bool met = std::abs(c.meanNees - 6.0) <= neesBand && std::abs(c.coverage - 0.95) <= coverageBand;
+        std::cout << "| " << regime.name << " | " << regime.numPoints << "P+" << regime.numLines << "L | "
+                  << regime.sigma << " | " << cv::format("%.2f", c.meanNees) << " | "
+                  << cv::format("%.1f %%", 100 * c.coverage) << " | " << cv::format("%.3f", c.meanNoiseVariance)
+                  << " | " << c.withoutCovariance << " | " << (met ? "met" : regime.meetsTarget ? "MISSED" : "missed (not asserted)") << " |"
+                  << std::endl;
+        ASSERT_GT(c.draws, 0) << what;
+        if (regime.meetsTarget)
+        {
+            EXPECT_EQ(c.withoutCovariance, 0) << what;
+            EXPECT_NEAR(c.meanNees, 6.0, neesBand) << what;
+            EXPECT_NEAR(c.coverage, 0.95, coverageBand) << what;
+        }
+        // The noise-variance estimate is unbiased to first order, and its mean over the draws
+        // (whose standard error is well below 1 %) close to sigma^2 even where the pose is not linear.
+        EXPECT_NEAR(c.meanNoiseVariance, 1.0, 0.1) << what;
+    }
 }
-
-INSTANTIATE_TEST_CASE_P(Regimes, Tripose_PoseCovariance,
-                        testing::Values(Regime{ "large", false, ts::MOTION_LARGE, 0.0, 10, 10 },
-                                        Regime{ "large", false, ts::MOTION_LARGE, 0.0, 4, 4 },
-                                        Regime{ "small", false, ts::MOTION_SMALL, 0.0, 10, 10 },
-                                        Regime{ "small", false, ts::MOTION_SMALL, 0.0, 4, 4 },
-                                        Regime{ "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10 },
-                                        Regime{ "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4 },
-                                        Regime{ "stereo rig", true, 0, 0.0, 10, 10 },
-                                        Regime{ "stereo rig", true, 0, 0.0, 4, 4 }));
 
 TEST(Tripose_PoseCovarianceCheck, equals_first_order_error_propagation)
 {
     // The first-order covariance of the maximum-likelihood estimate for unit noise is A A^T, A the
     // derivative of the estimate with respect to the observations: found here by central
     // differences of the refinement itself, without the normal equations.
+    // The narrow regime too: its Monte-Carlo misses at 1 px (the estimate is not linear in the
+    // noise there), but its first-order covariance is right.
     const Regime regimes[] = { { "large", false, ts::MOTION_LARGE, 0.0, 5, 5 },
+                               { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 5, 5 },
                                { "stereo", true, 0, 0.0, 5, 5 } };
     for (const Regime& regime : regimes)
     {
