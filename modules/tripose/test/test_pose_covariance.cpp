@@ -130,7 +130,8 @@ Vec6d poseErrorVector(const Mat& R, const Mat& t, const Problem& truth)
 struct Consistency
 {
     int draws = 0, withoutCovariance = 0;
-    double meanNees = 0, coverage = 0, meanNoiseVariance = 0; //!< The noise variance relative to sigma^2.
+    double meanNees = 0, medianNees = 0, coverage = 0;
+    double meanNoiseVariance = 0; //!< Relative to sigma^2.
 };
 
 /** The normalised estimation error squared e^T Sigma^-1 e of the maximum-likelihood estimate over
@@ -140,6 +141,7 @@ it reports times sigma^2. */
 Consistency measureConsistency(const Regime& regime, int scenes, int draws)
 {
     Consistency c;
+    std::vector<double> nees;
     const double variance = regime.sigma * regime.sigma;
     for (int scene = 0; scene < scenes; ++scene)
     {
@@ -156,9 +158,9 @@ Consistency measureConsistency(const Regime& regime, int scenes, int draws)
                 continue;
             }
             const Mat e(poseErrorVector(R, t, p));
-            const double nees = Mat(e.t() * Mat(variance * covariance).inv(DECOMP_CHOLESKY) * e).at<double>(0);
-            c.meanNees += nees;
-            c.coverage += nees <= kChiSquare6At95;
+            nees.push_back(Mat(e.t() * Mat(variance * covariance).inv(DECOMP_CHOLESKY) * e).at<double>(0));
+            c.meanNees += nees.back();
+            c.coverage += nees.back() <= kChiSquare6At95;
             c.meanNoiseVariance += noiseVariance.at<double>(0) / variance;
             ++c.draws;
         }
@@ -168,21 +170,28 @@ Consistency measureConsistency(const Regime& regime, int scenes, int draws)
         c.meanNees /= c.draws;
         c.coverage /= c.draws;
         c.meanNoiseVariance /= c.draws;
+        std::nth_element(nees.begin(), nees.begin() + nees.size() / 2, nees.end());
+        c.medianNees = nees[nees.size() / 2];
     }
     return c;
 }
 
-void studySize(int& scenes, int& draws)
+/** The size of the study, and the noise (px) of the rows that the table runs at 1 px: from
+TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS[xSIGMA], e.g. 20x500 or 20x500x0.1. */
+void studySize(int& scenes, int& draws, double& sigma)
 {
     // 2000 draws per regime: the whole table in about a second, three standard errors of 0.23 on
     // the mean NEES and 1.5 points on the coverage.
     scenes = 20;
     draws = 100;
+    sigma = 1.0;
     const char* size = std::getenv("TRIPOSE_COVARIANCE_STUDY");
     if (size && *size)
-        ASSERT_EQ(std::sscanf(size, "%dx%d", &scenes, &draws), 2) << "TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS";
+        ASSERT_GE(std::sscanf(size, "%dx%dx%lf", &scenes, &draws, &sigma), 2)
+            << "TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS[xSIGMA]";
     ASSERT_GT(scenes, 0);
     ASSERT_GT(draws, 0);
+    ASSERT_GT(sigma, 0.0);
 }
 
 TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
@@ -207,14 +216,17 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
         { "stereo rig", true, 0, 0.0, 4, 4 },
     };
     int scenes = 0, draws = 0;
-    studySize(scenes, draws);
+    double sigma = 1.0;
+    studySize(scenes, draws, sigma);
     std::cout << "Pose covariance against Monte-Carlo, " << scenes << " scenes x " << draws
-              << " draws per row (targets: mean NEES 6 +- 0.6, coverage 93-97 %)\n"
-              << "| regime | features | noise (px) | mean NEES | 95 % coverage | mean s^2 / sigma^2 | no covariance "
-                 "| targets |\n"
-              << "|---|---|---|---|---|---|---|---|\n";
-    for (const Regime& regime : regimes)
+              << " draws per row (targets: mean NEES 6 +- 0.6, coverage 93-97 %; chi-square(6) median 5.35)\n"
+              << "| regime | features | noise (px) | mean NEES | median NEES | 95 % coverage | mean s^2 / sigma^2 "
+                 "| no covariance | targets |\n"
+              << "|---|---|---|---|---|---|---|---|---|\n";
+    for (Regime regime : regimes)
     {
+        if (regime.sigma == 1.0)
+            regime.sigma = sigma;
         const Consistency c = measureConsistency(regime, scenes, draws);
         const std::string what = cv::format("%s %dP+%dL at %g px", regime.name, regime.numPoints, regime.numLines,
                                             regime.sigma);
@@ -226,12 +238,14 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
         // (NEES 3 or 12), with its blocks exchanged or its rotation in another frame.
         const double neesBand = 0.6 + 3 * std::sqrt(kNeesVariance / std::max(c.draws, 1));
         const double coverageBand = 0.02 + 3 * std::sqrt(kCoverageVariance / std::max(c.draws, 1));
-        const bool met = std::abs(c.meanNees - 6.0) <= neesBand && std::abs(c.coverage - 0.95) <= coverageBand;
+        const bool met = std::abs(c.meanNees - 6.0) <= 0.6 && std::abs(c.coverage - 0.95) <= 0.02;
+        const bool inBand = std::abs(c.meanNees - 6.0) <= neesBand && std::abs(c.coverage - 0.95) <= coverageBand;
+        const char* verdict = met ? "met" : inBand ? "missed within 3 standard errors" : "missed";
         std::cout << "| " << regime.name << " | " << regime.numPoints << "P+" << regime.numLines << "L | "
                   << regime.sigma << " | " << cv::format("%.2f", c.meanNees) << " | "
-                  << cv::format("%.1f %%", 100 * c.coverage) << " | " << cv::format("%.3f", c.meanNoiseVariance)
-                  << " | " << c.withoutCovariance << " | " << (met ? "met" : regime.meetsTarget ? "MISSED" : "missed (not asserted)") << " |"
-                  << std::endl;
+                  << cv::format("%.2f", c.medianNees) << " | " << cv::format("%.1f %%", 100 * c.coverage) << " | "
+                  << cv::format("%.3f", c.meanNoiseVariance) << " | " << c.withoutCovariance << " | " << verdict
+                  << (regime.meetsTarget ? "" : " (not asserted)") << " |" << std::endl;
         ASSERT_GT(c.draws, 0) << what;
         if (regime.meetsTarget)
         {
