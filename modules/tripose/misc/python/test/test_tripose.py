@@ -296,12 +296,13 @@ def names_argument(message, argument):
 
 
 def solve(scene, cameraMatrix=None, distCoeffs=None):
-    """estimatePoseLinePoint on a scene; returns (count, R, t, Rs, ts, errors)."""
+    """estimatePoseLinePoint on a scene; returns (count, R, t, Rs, ts, errors) (not the trailing
+    covariance and noiseVariance, empty with POSE_LINEAR)."""
     K = scene.cameraMatrices if cameraMatrix is None else cameraMatrix
     return cv.tripose.estimatePoseLinePoint(
         scene.points1, scene.points2, scene.points3,
         scene.lines1, scene.lines2, scene.lines3,
-        K, distCoeffs, scene.R12, scene.t12)
+        K, distCoeffs, scene.R12, scene.t12)[:6]
 
 
 # Noise-free data: far above double-precision round-off through the SVD of the stacked system (the
