@@ -15,7 +15,11 @@
 #include "test_precomp.hpp"
 #include "test_pose_common.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
