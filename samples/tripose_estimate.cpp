@@ -16,7 +16,8 @@
 // not see. Any other key is an error naming it (a misspelt key would read as an absent one), apart
 // from the ground truth tripose_make_scene writes, unless --allow-unknown-keys. The result holds
 // num_solutions and, when a pose was found, R (3x3) and t (3x1); with --method ransac also num_inliers, point_inliers and line_inliers (one 0/1 per
-// feature, in input order). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
+// feature, in input order); when the pose is the refinement's (--refine 1, or ransac with refinement),
+// covariance (6x6, for 1 px noise, doc/conventions.md) and noise_variance (px^2). Exit status: 0 on success (also when num_solutions is 0), 1 on bad arguments or input,
 // 2 when the solver rejects the input (the message names the problem key). No output file is left
 // behind on failure.
 
@@ -45,7 +46,8 @@ const char* kUsage =
     "               at time A, views 3-4 at time B, R12/t12 the rig, K or K1..K4, [dist or dist1..dist4];\n"
     "               a row of .nan in points3/points4/lines3/lines4 marks a feature that view does not see\n"
     "  --output     result file (YAML or JSON by extension): num_solutions, R, t\n"
-    "               (ransac: also num_inliers, point_inliers, line_inliers)\n"
+    "               (ransac: also num_inliers, point_inliers, line_inliers; when the pose is the\n"
+    "               refinement's: covariance, 6x6 for 1 px noise, and noise_variance in px^2)\n"
     "  --method     linear (default): the unified linear solver on all features (no outlier rejection);\n"
     "               ransac: robust estimation with outlier rejection\n"
     "  --threshold  ransac inlier threshold in pixels (default 2)\n"
@@ -136,7 +138,7 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    cv::Mat R, t, pointInliers, lineInliers;
+    cv::Mat R, t, pointInliers, lineInliers, covariance, noiseVariance;
     int n = 0, inliers = 0;
     const bool robust = options.method == "ransac";
     try
@@ -146,18 +148,21 @@ int main(int argc, char** argv)
         if (robust && p.stereo)
             inliers = cv::tripose::estimatePoseLinePointStereoRansac(
                 p.points[0], p.points[1], p.points[2], p.points[3], p.lines[0], p.lines[1], p.lines[2], p.lines[3],
-                p.K, p.dist, p.R12, p.t12, R, t, options.ransac, pointInliers, lineInliers);
+                p.K, p.dist, p.R12, p.t12, R, t, options.ransac, pointInliers, lineInliers, covariance, noiseVariance);
         else if (robust)
             inliers = cv::tripose::estimatePoseLinePointRansac(p.points[0], p.points[1], p.points[2], p.lines[0],
                                                                p.lines[1], p.lines[2], p.K, p.dist, p.R12, p.t12, R, t,
-                                                               options.ransac, pointInliers, lineInliers);
+                                                               options.ransac, pointInliers, lineInliers, covariance,
+                                                               noiseVariance);
         else if (p.stereo)
             n = cv::tripose::estimatePoseLinePointStereo(p.points[0], p.points[1], p.points[2], p.points[3],
                                                          p.lines[0], p.lines[1], p.lines[2], p.lines[3], p.K, p.dist,
-                                                         p.R12, p.t12, R, t, method);
+                                                         p.R12, p.t12, R, t, method, cv::noArray(), cv::noArray(),
+                                                         cv::noArray(), covariance, noiseVariance);
         else
             n = cv::tripose::estimatePoseLinePoint(p.points[0], p.points[1], p.points[2], p.lines[0], p.lines[1],
-                                                   p.lines[2], p.K, p.dist, p.R12, p.t12, R, t, method);
+                                                   p.lines[2], p.K, p.dist, p.R12, p.t12, R, t, method, cv::noArray(),
+                                                   cv::noArray(), cv::noArray(), covariance, noiseVariance);
         if (robust)
             n = inliers > 0 ? 1 : 0;
     }
@@ -174,6 +179,8 @@ int main(int argc, char** argv)
             fs << "num_solutions" << n;
             if (n > 0)
                 fs << "R" << R << "t" << t;
+            if (n > 0 && !covariance.empty())
+                fs << "covariance" << covariance << "noise_variance" << noiseVariance.at<double>(0);
             if (robust)
             {
                 fs << "num_inliers" << inliers << "point_inliers" << tripose_samples::inlierColumn(pointInliers)

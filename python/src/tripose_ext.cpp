@@ -414,7 +414,21 @@ nb::list candidateList(const std::vector<tripose::ScoredPose>& candidates)
     return out;
 }
 
-nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate)
+//! The pose's uncertainty into @p out: covariance (6, 6) and noise_variance, both None when not valid.
+void writeCovariance(const tripose::PoseCovariance& uncertainty, nb::dict& out)
+{
+    if (!uncertainty.valid)
+    {
+        out["covariance"] = nb::none();
+        out["noise_variance"] = nb::none();
+        return;
+    }
+    const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rowMajor = uncertainty.covariance;
+    out["covariance"] = newArray({ 6, 6 }, rowMajor.data());
+    out["noise_variance"] = uncertainty.noiseVariance;
+}
+
+nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, const tripose::PoseCovariance& uncertainty)
 {
     nb::dict out;
     out["R"] = found ? rotationArray(estimate.pose.R) : nb::none();
@@ -423,6 +437,7 @@ nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate)
     out["point_inliers"] = maskArray(estimate.pointInliers);
     out["line_inliers"] = maskArray(estimate.lineInliers);
     out["rms"] = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
+    writeCovariance(uncertainty, out);
     return out;
 }
 
@@ -558,13 +573,14 @@ std::function<bool(const tripose::ViewSet&, tripose::RobustEstimate&)> robustWit
 }
 
 nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
-                       const tripose::RefinedStructure& structure)
+                       const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
 {
     nb::dict out;
     out["R"] = rotationArray(pose.R);
     out["t"] = vectorArray(pose.t);
     out["rms"] = rms;
     writeStructure(structure, views.numPoints, views.numLines, out);
+    writeCovariance(uncertainty, out);
     return out;
 }
 
@@ -583,19 +599,24 @@ nb::list runCandidates(Build build, bool refine)
     return candidateList(candidates);
 }
 
-//! The robust estimate of a problem: @p estimate runs the estimator of its arrangement on the ViewSet
-//! that @p build makes (GIL released).
+//! The robust estimate of a problem: @p estimate runs the estimator of its arrangement, with
+//! @p options, on the ViewSet that @p build makes (GIL released); with refinement, the uncertainty
+//! of the refined pose over the inliers.
 template <class Build, class Estimate>
-nb::dict runRobust(Build build, Estimate estimate)
+nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options)
 {
     tripose::RobustEstimate result;
+    tripose::PoseCovariance uncertainty;
     bool found;
     {
         nb::gil_scoped_release release;
         const tripose::ViewSet views = build();
         found = estimate(views, result);
+        if (found && options.refine)
+            uncertainty = tripose::covarianceOfEstimate(views, result.pose, options.refineOptions,
+                                                        &result.pointInliers, &result.lineInliers);
     }
-    return robustResult(found, result);
+    return robustResult(found, result, uncertainty);
 }
 
 //! The refinement of the initial pose (@p R, @p t) over the ViewSet that @p build makes (GIL released).
@@ -604,6 +625,7 @@ nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const trip
                        const tripose::RefineOptions& options)
 {
     tripose::RefinedStructure structure;
+    tripose::PoseCovariance uncertainty;
     tripose::CameraPose pose;
     double rms;
     tripose::ViewSet views;
@@ -612,9 +634,9 @@ nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const trip
         views = build();
         pose.R = tripose::readRotation(R);
         pose.t = tripose::readTranslation(t, false);
-        rms = tripose::refineInitialPose(views, pose, options, &structure);
+        rms = tripose::refineInitialPose(views, pose, options, &structure, &uncertainty);
     }
-    return refinedResult(views, pose, rms, structure);
+    return refinedResult(views, pose, rms, structure, uncertainty);
 }
 
 } // namespace
@@ -652,7 +674,8 @@ NB_MODULE(_tripose_ext, m)
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::LinearPoseSolver linear(views);
                                    return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
-                               });
+                               },
+                               options);
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
@@ -681,7 +704,7 @@ NB_MODULE(_tripose_ext, m)
              double confidence, int maxIterations, bool refine, uint64_t seed) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options));
+              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options), options);
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 
@@ -713,7 +736,8 @@ NB_MODULE(_tripose_ext, m)
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::MultiViewPoseSolver linear(views);
                                    return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
-                               });
+                               },
+                               options);
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
 

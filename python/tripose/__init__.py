@@ -19,6 +19,11 @@ Conventions (the same as the C++ API, doc/conventions.md):
 * K: one 3x3 camera matrix shared by every view, or a sequence of one per view. dist: None, or
   OpenCV's distortion coefficients (4, 5, 8, 12 or 14 values), shared or one per view; the
   observations are undistorted as cv2.undistortPoints does.
+* Pose covariance (the refiners' and the robust functions' dicts): covariance is the (6, 6)
+  covariance of the pose for 1 px image noise, order [rotation; translation], the rotation error d
+  with R_est = expm([d]x) @ R_true, the translation error t_est - t_true, the structure
+  marginalised; multiply it by the noise variance, estimated from the residuals as noise_variance.
+  Both are None when the pose is not the refinement's (refine=False) or not determined.
 * Bad input raises ValueError (or TypeError for a wrong type) whose message names the argument.
 * Estimation releases the GIL: threads run estimates in parallel.
 """
@@ -93,7 +98,9 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     the inliers; seed: the same seed gives the same result.
 
     Returns a dict: R (3x3) and t (3,) (None when no pose was found), num_inliers, point_inliers and
-    line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels). The pose is view 3's
+    line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels), covariance ((6, 6)
+    for 1 px noise, see help(tripose)) and noise_variance (px^2) of the refined pose over the inliers
+    (None without refinement or when no pose was found). The pose is view 3's
     in the frame of view 1, x_cam = R @ X + t; view 2 is at [R12 | t12] (see help(tripose) for the
     conventions).
     """
@@ -115,7 +122,9 @@ def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: Arra
     loss_scale pixels; tolerance: stop when a step lowers the cost by less than this fraction.
 
     Returns a dict: R (3x3), t (3,), rms (final RMS reprojection error, px), points3d (N, 3),
-    lines3d (M, 6: two 3D end points per line).
+    lines3d (M, 6: two 3D end points per line), covariance ((6, 6), of the pose for 1 px noise: see
+    help(tripose); None when the pose is not determined) and noise_variance (the estimate of the
+    noise variance in px^2 from the residuals; None with the covariance).
     """
     return _ext.refine_pose_line_point(points1, points2, points3, lines1,
                                        lines2, lines3, K, R12, t12,

@@ -7,6 +7,7 @@
 #include "core/linear/linear_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
 #include "opencv/argument_reading.hpp"
+#include "opencv/covariance_writing.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/result_writing.hpp"
 
@@ -17,8 +18,8 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
                           InputArray lines1, InputArray lines2, InputArray lines3,
                           InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                           InputArray R12, InputArray t12, OutputArray R, OutputArray t, int method,
-                          OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
-                          OutputArray reprojectionErrors)
+                          OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs, OutputArray reprojectionErrors,
+                          OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
@@ -26,7 +27,12 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                                        cameraMatrix, distCoeffs, R12, t12);
         const detail::core::LinearPoseSolver solver(views);
-        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+        const std::vector<detail::core::ScoredPose> candidates =
+            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
+        detail::writeEstimateCovariance(
+            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
+            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
+        return detail::writeCandidates(candidates,
                                        R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
                                        "candidateTs");
     });

@@ -7,6 +7,7 @@
 #include "core/linear/linear_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
 #include "opencv/argument_reading.hpp"
+#include "opencv/covariance_writing.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/result_writing.hpp"
 
@@ -21,7 +22,8 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 InputArray lines1, InputArray lines2, InputArray lines3,
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t,
-                                const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
+                                const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers,
+                                OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
@@ -31,6 +33,9 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
         const detail::core::LinearPoseSolver linear(views);
         detail::core::RobustEstimate estimate;
         const bool found = detail::core::estimateRobustOnKnownStructure(views, linear, options, estimate);
+        detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
+                                        options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
+                                        covariance, noiseVariance);
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

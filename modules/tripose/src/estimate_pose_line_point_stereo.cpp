@@ -7,6 +7,7 @@
 #include "core/linear/rig_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
 #include "opencv/argument_reading.hpp"
+#include "opencv/covariance_writing.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/pose_refinement.hpp"
 #include "opencv/result_writing.hpp"
@@ -25,8 +26,8 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
                                 InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t, int method,
-                                OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
-                          OutputArray reprojectionErrors)
+                                OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs, OutputArray reprojectionErrors,
+                                OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
@@ -35,7 +36,12 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
             detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
                                        distCoeffs, R12, t12, kMinStereoFeatures);
         const detail::core::RigPoseSolver solver(views);
-        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+        const std::vector<detail::core::ScoredPose> candidates =
+            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
+        detail::writeEstimateCovariance(
+            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
+            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
+        return detail::writeCandidates(candidates,
                                        R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
                                        "candidateTs");
     });
@@ -45,7 +51,8 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
                                       InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
                                       InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                       InputArray R12, InputArray t12, OutputArray R, OutputArray t,
-                                      const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers)
+                                      const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers,
+                                      OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
@@ -56,6 +63,9 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
         const detail::core::RigPoseSolver solver(views);
         detail::core::RobustEstimate estimate;
         const bool found = detail::core::estimateRobust(views, solver, options, estimate);
+        detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
+                                        options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
+                                        covariance, noiseVariance);
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }
@@ -64,14 +74,15 @@ double refinePoseLinePointStereo(InputArray points1, InputArray points2, InputAr
                                  InputArray lines1, InputArray lines2, InputArray lines3, InputArray lines4,
                                  InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                  InputArray R12, InputArray t12, InputOutputArray R, InputOutputArray t,
-                                 const RefineParams& params, OutputArray points3d, OutputArray lines3d)
+                                 const RefineParams& params, OutputArray points3d, OutputArray lines3d,
+                                 OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
             detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
                                        distCoeffs, R12, t12, kMinStereoFeatures);
-        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d, covariance, noiseVariance);
     });
 }
 

@@ -7,6 +7,7 @@
 #include "core/linear/multiview_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
 #include "opencv/argument_reading.hpp"
+#include "opencv/covariance_writing.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/pose_refinement.hpp"
 #include "opencv/result_writing.hpp"
@@ -23,7 +24,7 @@ const int kMinMultiViewFeatures = 4;
 int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
                           InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts, OutputArray R,
                           OutputArray t, int method, OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
-                          OutputArray reprojectionErrors)
+                          OutputArray reprojectionErrors, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     detail::checkPoseMethod(method);
@@ -31,7 +32,12 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
         const detail::core::ViewSet views =
             detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
         const detail::core::MultiViewPoseSolver solver(views);
-        return detail::writeCandidates(detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE),
+        const std::vector<detail::core::ScoredPose> candidates =
+            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
+        detail::writeEstimateCovariance(
+            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
+            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
+        return detail::writeCandidates(candidates,
                                        R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
                                        "candidateTs");
     });
@@ -40,7 +46,7 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
 int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
                                 InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
                                 OutputArray R, OutputArray t, const RansacParams& params, OutputArray pointInliers,
-                                OutputArray lineInliers)
+                                OutputArray lineInliers, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
@@ -50,6 +56,9 @@ int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays li
         const detail::core::MultiViewPoseSolver linear(views);
         detail::core::RobustEstimate estimate;
         const bool found = detail::core::estimateRobustOnKnownStructure(views, linear, options, estimate);
+        detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
+                                        options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
+                                        covariance, noiseVariance);
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }
@@ -57,13 +66,13 @@ int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays li
 double refinePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
                            InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
                            InputOutputArray R, InputOutputArray t, const RefineParams& params, OutputArray points3d,
-                           OutputArray lines3d)
+                           OutputArray lines3d, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
             detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
-        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d, covariance, noiseVariance);
     });
 }
 

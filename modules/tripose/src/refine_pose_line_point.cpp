@@ -21,13 +21,14 @@ double refinePoseLinePoint(InputArray points1, InputArray points2, InputArray po
                            InputArray lines1, InputArray lines2, InputArray lines3,
                            InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                            InputArray R12, InputArray t12, InputOutputArray R, InputOutputArray t,
-                           const RefineParams& params, OutputArray points3d, OutputArray lines3d)
+                           const RefineParams& params, OutputArray points3d, OutputArray lines3d,
+                           OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                                        cameraMatrix, distCoeffs, R12, t12, 3);
-        return detail::refineGivenPose(views, R, t, params, points3d, lines3d);
+        return detail::refineGivenPose(views, R, t, params, points3d, lines3d, covariance, noiseVariance);
     });
 }
 

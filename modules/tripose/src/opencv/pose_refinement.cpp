@@ -6,6 +6,7 @@
 
 #include "../core/pipeline/pose_pipelines.hpp"
 #include "argument_reading.hpp"
+#include "covariance_writing.hpp"
 #include "options_conversion.hpp"
 #include "pose_refinement.hpp"
 #include "result_writing.hpp"
@@ -15,7 +16,7 @@ namespace tripose {
 namespace detail {
 
 double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
-                       OutputArray points3d, OutputArray lines3d)
+                       OutputArray points3d, OutputArray lines3d, OutputArray covariance, OutputArray noiseVariance)
 {
     core::CameraPose pose;
     // An exact rotation, which the multiplicative update needs.
@@ -23,9 +24,13 @@ double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutp
     pose.t = readTranslation(t, "t", false);
     const core::RefineOptions options = toCoreOptions(params);
     core::RefinedStructure structure;
-    const double rms = core::refineInitialPose(views, pose, options, &structure);
+    const bool wantCovariance = covarianceWanted(covariance, noiseVariance);
+    core::PoseCovariance uncertainty;
+    const double rms = core::refineInitialPose(views, pose, options, &structure, wantCovariance ? &uncertainty : nullptr);
     writePose(&pose, R, t);
     writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+    if (wantCovariance)
+        writeCovariance(uncertainty, covariance, noiseVariance);
     return rms;
 }
 

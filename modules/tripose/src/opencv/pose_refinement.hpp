@@ -16,10 +16,11 @@ namespace detail {
 
 /** What the refine* entry points share: reads the initial pose from @p R (3x3 or Rodrigues, named
 "R" in errors) and @p t, refines it over every view of @p views, writes the pose back as every
-pose output is written (3x3 and 3x1 CV_64F) and the structure where wanted. Returns the final RMS reprojection error (px).
+pose output is written (3x3 and 3x1 CV_64F), and the structure and the pose's uncertainty
+(covariance_writing.hpp) where wanted. Returns the final RMS reprojection error (px).
 */
 double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutputArray t, const RefineParams& params,
-                       OutputArray points3d, OutputArray lines3d);
+                       OutputArray points3d, OutputArray lines3d, OutputArray covariance, OutputArray noiseVariance);
 
 } // namespace detail
 } // namespace tripose

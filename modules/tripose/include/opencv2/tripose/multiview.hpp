@@ -53,6 +53,12 @@ views, then the new view).
 @param candidateTs Optional output: the matching translations.
 @param reprojectionErrors Optional output: per candidate, the RMS reprojection error (px) in the new
 view (POSE_LINEAR) or over every view (POSE_LINEAR_REFINE).
+@param covariance Optional output: with #POSE_LINEAR_REFINE, the 6x6 CV_64F covariance of the best
+candidate for 1 px image noise, as refinePoseLinePoint() reports it at that refined pose over every
+feature. Released with #POSE_LINEAR (a linear estimate is not the maximum-likelihood one that the
+covariance describes) and when there is no candidate or the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$) at
+that candidate, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of candidate poses (0 when the features do not determine the pose).
 @throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), for fewer
 than two known views, known views all at one centre, a feature the new view does not see or that
@@ -65,7 +71,8 @@ CV_EXPORTS_W int estimatePoseMultiView(
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,
     OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
-    OutputArray reprojectionErrors = noArray());
+    OutputArray reprojectionErrors = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Robust registration against several known views from point and line correspondences with
 outliers.
@@ -84,6 +91,13 @@ Arguments as in estimatePoseMultiView().
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
+@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
+returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
+inliers with RansacParams::refineParams. Released without refinement (the sample's or local
+optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
+pose was found and when the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
+from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of inliers (points + lines); 0 when no pose was found (R and t empty, masks zero).
 */
 CV_EXPORTS_W int estimatePoseMultiViewRansac(
@@ -92,7 +106,8 @@ CV_EXPORTS_W int estimatePoseMultiViewRansac(
     InputArrayOfArrays Rs, InputArrayOfArrays ts,
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
-    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray());
+    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Maximum-likelihood refinement of the new view's pose and the structure over every view.
 
@@ -107,6 +122,10 @@ Arguments as in estimatePoseMultiView() and refinePoseLinePoint().
 @param points3d Optional output: Nx3 CV_64F refined points in the world frame.
 @param lines3d Optional output: Mx6 CV_64F, two points of each refined line: those closest to the
 rays of the end points in the first view that sees it.
+@param covariance Optional output: 6x6 CV_64F covariance of the refined pose for 1 px image noise,
+as in refinePoseLinePoint().
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$), as
+in refinePoseLinePoint().
 @return The RMS reprojection error (px) at the refined estimate over every residual of the
 features that enter the cost; +inf when none does (R, t then unchanged).
 */
@@ -116,7 +135,8 @@ CV_EXPORTS_W double refinePoseMultiView(
     InputArrayOfArrays Rs, InputArrayOfArrays ts,
     InputOutputArray R, InputOutputArray t,
     const RefineParams& params = RefineParams(),
-    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Local adjustment: maximum-likelihood refinement of several views' poses and the structure
 together (a bundle adjustment in which some views stay fixed), for the recent frames of a tracker.

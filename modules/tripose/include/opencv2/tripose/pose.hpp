@@ -72,6 +72,12 @@ shared by the views or a vector of three; empty means no distortion.
 @param reprojectionErrors Optional output: per candidate, in pixels (CV_64F, same order as candidateRs): the
 RMS reprojection error in view 3 (POSE_LINEAR) or over the three views after refinement
 (POSE_LINEAR_REFINE).
+@param covariance Optional output: with #POSE_LINEAR_REFINE, the 6x6 CV_64F covariance of the best
+candidate for 1 px image noise, as refinePoseLinePoint() reports it at that refined pose over every
+feature. Released with #POSE_LINEAR (a linear estimate is not the maximum-likelihood one that the
+covariance describes) and when there is no candidate or the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$) at
+that candidate, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of candidate poses (0 when the geometry admits none, e.g. degenerate input).
 
 @throws cv::Exception naming the argument when an input has the wrong shape or type, the counts
@@ -86,7 +92,8 @@ CV_EXPORTS_W int estimatePoseLinePoint(
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,
     OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
-    OutputArray reprojectionErrors = noArray());
+    OutputArray reprojectionErrors = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 //! @}
 

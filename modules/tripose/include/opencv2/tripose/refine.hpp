@@ -75,6 +75,19 @@ given here comes back as a matrix).
 @param points3d Optional output: Nx3 CV_64F refined 3D points in the frame of view 1.
 @param lines3d Optional output: Mx6 CV_64F, two points \f$(X_0, Y_0, Z_0, X_1, Y_1, Z_1)\f$ of each refined
 3D line: the points closest to the back-projected rays of the view-1 end points.
+@param covariance Optional output: 6x6 CV_64F covariance of the refined pose for image noise of
+standard deviation 1 px (multiply it by the noise variance), the structure marginalised. Order
+[rotation; translation]: the rotation error \f$d\f$ with \f$R_{est} = \exp([d]_\times) R_{true}\f$
+(radians), the translation error \f$t_{est} - t_{true}\f$ (the units of t). It is the inverse of the
+pose block of the Gauss-Newton normal equations at the refined estimate with the 3D structure
+eliminated; with a robust loss, of the normal equations weighted by the final IRLS weights. The
+convention, and its conversion to the covariance of the camera centre, is written in the module's
+doc/conventions.md ("Pose covariance"). Released (empty) when the pose is not determined: no
+feature entered the cost, or the reduced pose block is singular or not finite.
+@param noiseVariance Optional output: 1x1 CV_64F, the estimate of the image noise variance
+(px\f$^2\f$) from the residuals: their (IRLS-weighted) sum of squares divided by their number minus
+the number of parameters (6 + 3 per point + 4 per line that entered the cost); +inf when there are
+no more residuals than parameters. Released together with @p covariance.
 @return The RMS reprojection error in pixels at the refined estimate over every residual of the
 three views (two per point and per line in each view) of the features that enter the cost; +inf when
 no feature does (then R, t are returned unchanged).
@@ -90,7 +103,8 @@ CV_EXPORTS_W double refinePoseLinePoint(
     InputArray R12, InputArray t12,
     InputOutputArray R, InputOutputArray t,
     const RefineParams& params = RefineParams(),
-    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 //! @}
 

@@ -75,6 +75,13 @@ Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask, 1 for inlier point triplets (RansacParams::threshold).
 @param lineInliers Optional output: Mx1 CV_8U mask, 1 for inlier line triplets.
+@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
+returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
+inliers with RansacParams::refineParams. Released without refinement (the sample's or local
+optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
+pose was found and when the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
+from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of inliers (points + lines) of the returned pose; 0 when no pose was found
 (then R and t are empty and the masks all zero).
 
@@ -88,7 +95,8 @@ CV_EXPORTS_W int estimatePoseLinePointRansac(
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
-    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray());
+    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 //! @}
 

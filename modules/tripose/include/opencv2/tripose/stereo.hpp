@@ -60,6 +60,12 @@ right, left, right for a rig with two different cameras).
 @param candidateTs Optional output: the matching translations (3x1 CV_64F).
 @param reprojectionErrors Optional output: per candidate, the RMS reprojection error (px) in views 3
 and 4 (POSE_LINEAR) or over the four views after refinement (POSE_LINEAR_REFINE).
+@param covariance Optional output: with #POSE_LINEAR_REFINE, the 6x6 CV_64F covariance of the best
+candidate for 1 px image noise, as refinePoseLinePoint() reports it at that refined pose over every
+feature. Released with #POSE_LINEAR (a linear estimate is not the maximum-likelihood one that the
+covariance describes) and when there is no candidate or the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$) at
+that candidate, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of candidate poses (0 when the features do not determine the motion).
 
 @throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), for a
@@ -73,7 +79,8 @@ CV_EXPORTS_W int estimatePoseLinePointStereo(
     OutputArray R, OutputArray t,
     int method = POSE_LINEAR,
     OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
-    OutputArray reprojectionErrors = noArray());
+    OutputArray reprojectionErrors = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Robust motion of a stereo rig from point and line correspondences with outliers.
 
@@ -88,6 +95,13 @@ Arguments as in estimatePoseLinePointStereo(); at least three features (the samp
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
+@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
+returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
+inliers with RansacParams::refineParams. Released without refinement (the sample's or local
+optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
+pose was found and when the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
+from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of inliers (points + lines); 0 when no pose was found (R and t empty, masks zero).
 */
 CV_EXPORTS_W int estimatePoseLinePointStereoRansac(
@@ -97,7 +111,8 @@ CV_EXPORTS_W int estimatePoseLinePointStereoRansac(
     InputArray R12, InputArray t12,
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
-    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray());
+    OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Maximum-likelihood refinement of a stereo rig's motion and the structure.
 
@@ -112,6 +127,10 @@ Arguments as in estimatePoseLinePointStereo() and refinePoseLinePoint().
 @param points3d Optional output: Nx3 CV_64F refined points in the frame of view 1.
 @param lines3d Optional output: Mx6 CV_64F, two points of each refined line: those closest to the
 rays of the view-1 end points.
+@param covariance Optional output: 6x6 CV_64F covariance of the refined pose for 1 px image noise,
+as in refinePoseLinePoint().
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$), as
+in refinePoseLinePoint().
 @return The RMS reprojection error (px) at the refined estimate over every residual of the
 features that enter the cost; +inf when none does (R, t then unchanged).
 */
@@ -122,7 +141,8 @@ CV_EXPORTS_W double refinePoseLinePointStereo(
     InputArray R12, InputArray t12,
     InputOutputArray R, InputOutputArray t,
     const RefineParams& params = RefineParams(),
-    OutputArray points3d = noArray(), OutputArray lines3d = noArray());
+    OutputArray points3d = noArray(), OutputArray lines3d = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 //! @}
 

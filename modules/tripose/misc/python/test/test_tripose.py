@@ -296,12 +296,13 @@ def names_argument(message, argument):
 
 
 def solve(scene, cameraMatrix=None, distCoeffs=None):
-    """estimatePoseLinePoint on a scene; returns (count, R, t, Rs, ts, errors)."""
+    """estimatePoseLinePoint on a scene; returns (count, R, t, Rs, ts, errors) (not the trailing
+    covariance and noiseVariance, empty with POSE_LINEAR)."""
     K = scene.cameraMatrices if cameraMatrix is None else cameraMatrix
     return cv.tripose.estimatePoseLinePoint(
         scene.points1, scene.points2, scene.points3,
         scene.lines1, scene.lines2, scene.lines3,
-        K, distCoeffs, scene.R12, scene.t12)
+        K, distCoeffs, scene.R12, scene.t12)[:6]
 
 
 # Noise-free data: far above double-precision round-off through the SVD of the stacked system (the
@@ -610,7 +611,7 @@ class tripose_test(NewOpenCVTests):
             count, R, t, inl_points, inl_lines = cv.tripose.estimatePoseLinePointRansac(
                 scene.points1, scene.points2, scene.points3,
                 scene.lines1, scene.lines2, scene.lines3,
-                scene.cameraMatrices, None, scene.R12, scene.t12, params=params)
+                scene.cameraMatrices, None, scene.R12, scene.t12, params=params)[:5]
             what = 'seed %d' % seed
             self.check_pose(R, t, scene, np.radians(0.5), 0.05, what)
             self.assertEqual(count, np.count_nonzero(inl_points) + np.count_nonzero(inl_lines), what)
@@ -637,11 +638,17 @@ class tripose_test(NewOpenCVTests):
             count, R, t = solve(scene)[:3]
             self.assertGreaterEqual(count, 1)
             R0 = R.copy()
-            rms, R1, t1, points3d, lines3d = cv.tripose.refinePoseLinePoint(
+            rms, R1, t1, points3d, lines3d, covariance, noise_variance = cv.tripose.refinePoseLinePoint(
                 scene.points1, scene.points2, scene.points3,
                 scene.lines1, scene.lines2, scene.lines3,
                 scene.cameraMatrices, None, scene.R12, scene.t12, R, t)
             what = 'seed %d' % seed
+            # The pose's covariance for 1 px noise (doc/conventions.md): 6x6, symmetric positive definite;
+            # the noise-variance estimate near sigma^2.
+            self.assertEqual(covariance.shape, (6, 6), what)
+            self.assertLess(np.abs(covariance - covariance.T).max(), 1e-12 * np.abs(covariance).max(), what)
+            self.assertGreater(np.linalg.eigvalsh(covariance).min(), 0, what)
+            self.assertLess(abs(float(np.ravel(noise_variance)[0]) / sigma ** 2 - 1.0), 0.5, what)
             self.assertLess(abs(rms / expected_rms - 1.0), 0.25, '%s: RMS %.3f px, expected %.3f' % (what, rms, expected_rms))
             self.assertEqual(points3d.shape, (n, 3), what)
             self.assertEqual(lines3d.shape, (n, 6), what)
@@ -678,7 +685,7 @@ class tripose_test(NewOpenCVTests):
             for seed in range(3):
                 scene = make_rig_scene(num_points, num_lines, seed, missing=missing)
                 what = '%d points, %d lines, %g missing, seed %d' % (num_points, num_lines, missing, seed)
-                count, R, t, Rs, ts, errors = cv.tripose.estimatePoseLinePointStereo(**rig_args(scene))
+                count, R, t, Rs, ts, errors = cv.tripose.estimatePoseLinePointStereo(**rig_args(scene))[:6]
                 self.assertGreaterEqual(count, 1, what)
                 self.assertEqual(len(Rs), count, what)
                 self.assertEqual(np.asarray(errors).size, count, what)
@@ -699,7 +706,7 @@ class tripose_test(NewOpenCVTests):
         self.assertGreaterEqual(count, 1)
         self.check_pose(R, t, scene, 1e-4, 1e-3, 'float32 with NaN rows')
         count, R, t, Rs, ts, errors = cv.tripose.estimatePoseLinePointStereo(
-            **rig_args(scene, method=cv.tripose.POSE_LINEAR_REFINE))
+            **rig_args(scene, method=cv.tripose.POSE_LINEAR_REFINE))[:6]
         self.assertGreaterEqual(count, 1)
         self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, 'POSE_LINEAR_REFINE')
         self.assertLess(float(np.asarray(errors).ravel()[0]), 1e-6)
@@ -714,7 +721,7 @@ class tripose_test(NewOpenCVTests):
             params = cv.tripose.RansacParams()
             params.seed = seed
             count, R, t, inl_points, inl_lines = cv.tripose.estimatePoseLinePointStereoRansac(
-                **rig_args(scene, params=params))
+                **rig_args(scene, params=params))[:5]
             what = 'seed %d' % seed
             self.check_pose(R, t, scene, np.radians(0.5), 0.05, what)
             self.assertEqual(count, np.count_nonzero(inl_points) + np.count_nonzero(inl_lines), what)
@@ -737,7 +744,7 @@ class tripose_test(NewOpenCVTests):
             params = cv.tripose.RefineParams()
             params.maxIterations = 100
             rms, R, t, points3d, lines3d = cv.tripose.refinePoseLinePointStereo(
-                **rig_args(scene, R=R0, t=t0, params=params))
+                **rig_args(scene, R=R0, t=t0, params=params))[:5]
             what = 'seed %d' % seed
             self.assertLess(rms, 1e-6, what)
             self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, what)
@@ -825,7 +832,7 @@ class tripose_test(NewOpenCVTests):
         params = cv.tripose.RansacParams()
         params.seed = 1
         inliers, R, t, point_mask, line_mask = cv.tripose.estimatePoseMultiViewRansac(
-            scene.points, scene.lines, scene.K, None, scene.Rs, scene.ts, params=params)
+            scene.points, scene.lines, scene.K, None, scene.Rs, scene.ts, params=params)[:5]
         self.check_pose(R, t, scene, EXACT_ROTATION_RAD, EXACT_TRANSLATION, 'robust')
         np.testing.assert_array_equal(point_mask.ravel(), scene.pointInliers)
         self.assertTrue(np.all(line_mask == 1))

@@ -110,9 +110,26 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
 }
 
 double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
-                         RefinedStructure* structure)
+                         RefinedStructure* structure, PoseCovariance* covariance)
 {
-    return refinePoseAndStructure(views, pose, options, nullptr, nullptr, structure).finalRms;
+    return refinePoseAndStructure(views, pose, options, nullptr, nullptr, structure, covariance).finalRms;
+}
+
+PoseCovariance covarianceOfEstimate(const ViewSet& views, const CameraPose& pose, const RefineOptions& options,
+                                    const std::vector<unsigned char>* pointMask,
+                                    const std::vector<unsigned char>* lineMask)
+{
+    std::vector<int> points, lines;
+    for (int i = 0; i < views.numPoints; ++i)
+        if (!pointMask || (*pointMask)[i])
+            points.push_back(i);
+    for (int i = 0; i < views.numLines; ++i)
+        if (!lineMask || (*lineMask)[i])
+            lines.push_back(i);
+    CameraPose refined = pose;
+    PoseCovariance covariance;
+    refinePoseAndStructure(views, refined, options, &points, &lines, nullptr, &covariance);
+    return covariance;
 }
 
 double refineSeveralPoses(const ViewSet& views, const std::vector<int>& poseOfView, std::vector<CameraPose>& poses,

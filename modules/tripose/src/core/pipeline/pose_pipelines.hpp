@@ -47,10 +47,20 @@ bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& line
                                     RobustEstimate& estimate);
 
 /** Refines @p pose (in place) and the structure over every view of @p views; @p options must be
-valid (checkRefineOptions()). Returns the final RMS reprojection error (px).
+valid (checkRefineOptions()). @p covariance, when given, receives the uncertainty of the refined
+pose. Returns the final RMS reprojection error (px).
 */
 double refineInitialPose(const ViewSet& views, CameraPose& pose, const RefineOptions& options,
-                         RefinedStructure* structure = nullptr);
+                         RefinedStructure* structure = nullptr, PoseCovariance* covariance = nullptr);
+
+/** The uncertainty of @p pose, a maximum-likelihood estimate that estimateCandidates() or
+estimateRobust() returned, over the features of the masks (null: every feature): the refinement
+with @p options run once more from @p pose (where it only re-converges the structure) reports it.
+@p pose itself is not changed.
+*/
+PoseCovariance covarianceOfEstimate(const ViewSet& views, const CameraPose& pose, const RefineOptions& options,
+                                    const std::vector<unsigned char>* pointMask = nullptr,
+                                    const std::vector<unsigned char>* lineMask = nullptr);
 
 /** Refines several poses (@p poseOfView, @p poses as in refinePosesAndStructure()) and the
 structure; @p options must be valid. Returns the final RMS reprojection error (px).

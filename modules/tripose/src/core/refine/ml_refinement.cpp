@@ -10,6 +10,7 @@
 
 #include "../support/error.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "../geometry/conditioning.hpp"
@@ -28,6 +29,9 @@ namespace {
 // An RMS of 1e-10 px is an exact fit: nothing is left to gain.
 constexpr double kNegligibleSquare = 1e-20;
 constexpr double kMaxLambda = 1e16;
+// Smallest / largest eigenvalue of the pose information, scaled to a unit diagonal, below which a
+// direction of the pose is not determined: its variance would be rounding noise.
+constexpr double kDeterminedPose = 1e-12;
 
 //! Robust cost and plain sum of squares of a set of residuals.
 struct CostSum
@@ -84,8 +88,11 @@ public:
             views_[v].set(set_.views[v], CameraPose());
     }
 
-    RefinementSummary run(std::vector<CameraPose>& poses, RefinedStructure* structure)
+    //! Refines @p poses in place; @p covariance (only for one pose) receives the uncertainty of the result.
+    RefinementSummary run(std::vector<CameraPose>& poses, RefinedStructure* structure, PoseCovariance* covariance)
     {
+        if (covariance)
+            *covariance = PoseCovariance();
         RefinementSummary summary;
         Estimate current;
         current.poses = poses;
@@ -154,6 +161,8 @@ public:
         summary.finalRms = cost.rms();
         poses = current.poses;
         exportStructure(current, structure);
+        if (covariance)
+            estimateCovariance(current, cost, *covariance);
         return summary;
     }
 
@@ -303,6 +312,7 @@ private:
         Matrix24d Jline;
         Matrix26d Jpose;
         double weight = 1;
+        weightedSquares_ = 0;
         for (size_t k = 0; k < points_.size(); ++k)
         {
             if (!points_[k].used)
@@ -318,6 +328,7 @@ private:
                                       &Jpose))
                     continue;
                 loss_.evaluate(r.squaredNorm(), &weight);
+                weightedSquares_ += weight * r.squaredNorm();
                 system_.template add<3>(block, Jpoint, v.moves ? &Jpose : nullptr, r, weight, poseOfView_[vi]);
             }
         }
@@ -338,9 +349,49 @@ private:
                                      &chart, &Jline, &Jpose))
                     continue;
                 loss_.evaluate(r.squaredNorm(), &weight);
+                weightedSquares_ += weight * r.squaredNorm();
                 system_.template add<4>(block, Jline, v.moves ? &Jpose : nullptr, r, weight, poseOfView_[vi]);
             }
         }
+    }
+
+    /** The uncertainty of the pose at @p e, whose cost is @p cost: the Gauss-Newton normal
+    equations at @p e with the structure marginalised (ml_refinement.hpp, PoseCovariance). */
+    void estimateCovariance(const Estimate& e, const CostSum& cost, PoseCovariance& out)
+    {
+        TRIPOSE_DEBUG_ASSERT(numPoses_ == 1);
+        linearize(e);
+        typename SchurSystem<P>::PoseMatrix information;
+        if (!system_.reducedPoseMatrix(information))
+            return;
+        const Matrix6d symmetric = 0.5 * (information.template topLeftCorner<6, 6>() +
+                                          information.template topLeftCorner<6, 6>().transpose());
+        // Rotation (rad) and translation (scene units) differ in scale: judge the rank on the
+        // matrix scaled to a unit diagonal, where rounding leaves a direction that no residual sees
+        // at an eigenvalue near 1e-16 instead of exactly zero.
+        const Vector6d diagonal = symmetric.diagonal();
+        if (!(diagonal.minCoeff() > 0))
+            return;
+        const Vector6d scale = diagonal.cwiseSqrt().cwiseInverse();
+        const Matrix6d scaled = scale.asDiagonal() * symmetric * scale.asDiagonal();
+        const Eigen::SelfAdjointEigenSolver<Matrix6d> eigen(scaled);
+        if (eigen.info() != Eigen::Success || !(eigen.eigenvalues()(0) > kDeterminedPose * eigen.eigenvalues()(5)))
+            return;
+        const Matrix6d inverse = scale.asDiagonal() *
+                                 (eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                                  eigen.eigenvectors().transpose()) *
+                                 scale.asDiagonal();
+        if (!inverse.allFinite())
+            return;
+        out.covariance = 0.5 * (inverse + inverse.transpose());
+        int parameters = 6;
+        for (const SelectedFeature& f : points_)
+            parameters += f.used ? 3 : 0;
+        for (const SelectedFeature& f : lines_)
+            parameters += f.used ? 4 : 0;
+        const int redundancy = cost.residuals - parameters;
+        out.noiseVariance = redundancy > 0 ? weightedSquares_ / redundancy : std::numeric_limits<double>::infinity();
+        out.valid = true;
     }
 
     bool applyStep(const Estimate& from, Estimate& to) const
@@ -417,20 +468,21 @@ private:
     std::vector<ViewAtPose> views_;
     std::vector<SelectedFeature> points_, lines_;
     SchurSystem<P> system_;
+    double weightedSquares_ = 0; //!< Sum of the IRLS-weighted squared residuals at the last linearisation.
 };
 
 } // namespace
 
 RefinementSummary refinePoseAndStructure(const ViewSet& set, CameraPose& pose, const RefineOptions& params,
                                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
-                                         RefinedStructure* structure)
+                                         RefinedStructure* structure, PoseCovariance* covariance)
 {
     std::vector<int> poseOfView(set.views.size());
     for (size_t v = 0; v < set.views.size(); ++v)
         poseOfView[v] = set.views[v].estimated ? 0 : -1;
     Refiner<6> refiner(set, poseOfView, 1, params, pointIndices, lineIndices);
     std::vector<CameraPose> poses(1, pose);
-    const RefinementSummary summary = refiner.run(poses, structure);
+    const RefinementSummary summary = refiner.run(poses, structure, covariance);
     pose = poses[0];
     return summary;
 }
@@ -443,7 +495,7 @@ RefinementSummary refinePosesAndStructure(const ViewSet& set, const std::vector<
     for (size_t v = 0; v < set.views.size(); ++v)
         TRIPOSE_ASSERT(set.views[v].estimated == (poseOfView[v] >= 0) && poseOfView[v] < (int)poses.size());
     Refiner<Eigen::Dynamic> refiner(set, poseOfView, (int)poses.size(), params, nullptr, nullptr);
-    return refiner.run(poses, structure);
+    return refiner.run(poses, structure, nullptr);
 }
 
 } // namespace tripose

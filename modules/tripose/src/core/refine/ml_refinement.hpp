@@ -5,6 +5,7 @@
 #ifndef OPENCV_TRIPOSE_ML_REFINEMENT_HPP
 #define OPENCV_TRIPOSE_ML_REFINEMENT_HPP
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,6 +20,27 @@ struct RefinementSummary
     double initialRms = 0; //!< RMS reprojection error (px) over every view at the start (+inf: nothing usable).
     double finalRms = 0;   //!< The same at the returned estimate.
     int iterations = 0;    //!< Levenberg-Marquardt steps tried (accepted or rejected).
+};
+
+/** The uncertainty of a refined pose (the convention: doc/conventions.md, "Pose covariance").
+The covariance is the inverse of the 6x6 pose block of the Gauss-Newton normal equations J^T w J at
+the returned estimate with the structure marginalised (eliminated, undamped): the first-order
+covariance of the maximum-likelihood pose for observation noise of 1 px per coordinate (a point's
+two coordinates; a segment end point's distance to the line), in the order [rotation; translation],
+the rotation error d as in R_est = exp([d]x) R_true, the translation error t_est - t_true. Scale
+it by the noise variance. With a robust loss the weights w are the IRLS weights at the estimate
+(1 for the squared loss).
+*/
+struct PoseCovariance
+{
+    Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();
+    /** The estimate of the noise variance (px^2) from the residuals: sum of w r^2 over the residuals
+    of the features in the cost, divided by their number minus the parameters (6 + 3 per point + 4 per
+    line); +inf when there are not more residuals than parameters. */
+    double noiseVariance = std::numeric_limits<double>::infinity();
+    /** False, and the values above meaningless, when the refinement had no usable feature or the
+    pose is not determined: the reduced pose block is singular, or a value is not finite. */
+    bool valid = false;
 };
 
 //! Refined 3D structure, in the order of the selected features.
@@ -43,12 +65,14 @@ behind a view and lines through a view's centre do not enter the cost. Levenberg
 normal equations with each feature's structure eliminated (refine/schur_system.hpp), analytic
 Jacobians (refine/observation_model.hpp), time linear in the number of features. @p params must be
 valid (see checkRefineParams()). Null index lists select every point / line. The pose is never
-replaced by non-finite values.
+replaced by non-finite values. @p covariance, when given, receives the uncertainty of the returned
+pose (linearised once more at it, which costs one iteration).
 */
 RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, const RefineOptions& params,
                                          const std::vector<int>* pointIndices = nullptr,
                                          const std::vector<int>* lineIndices = nullptr,
-                                         RefinedStructure* structure = nullptr);
+                                         RefinedStructure* structure = nullptr,
+                                         PoseCovariance* covariance = nullptr);
 
 /** Maximum-likelihood refinement of several poses and the structure (a bundle adjustment with some
 views fixed), as refinePoseAndStructure() over every feature of @p set: view v moves with pose

@@ -144,6 +144,23 @@ public:
     //! The step of all poses (6 per pose: omega, dt).
     const PoseVector& poseStep() const { return poseStep_; }
 
+    /** The undamped pose block of J^T w J with every active structure block eliminated (the
+    information of the poses with the structure marginalised), in @p reduced. False when an active
+    structure block is not positive definite (its structure would not be determined, so the
+    marginal is undefined) or a value is not finite.
+    */
+    bool reducedPoseMatrix(PoseMatrix& reduced) const
+    {
+        reduced = U_;
+        for (const StructureBlock<3, P>& block : points_)
+            if (!marginalize<3>(block, reduced))
+                return false;
+        for (const StructureBlock<4, P>& block : lines_)
+            if (!marginalize<4>(block, reduced))
+                return false;
+        return reduced.allFinite();
+    }
+
 private:
     template <typename T>
     using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
@@ -181,6 +198,18 @@ private:
         const Eigen::Matrix<double, P, D> Y = block.W * block.Vinv;
         S.noalias() -= Y * block.W.transpose();
         b.noalias() += Y * block.g;
+    }
+
+    template <int D>
+    static bool marginalize(const StructureBlock<D, P>& block, PoseMatrix& reduced)
+    {
+        if (!block.active)
+            return true;
+        const Eigen::LLT<Eigen::Matrix<double, D, D>> llt(block.V);
+        if (llt.info() != Eigen::Success)
+            return false;
+        reduced.noalias() -= block.W * llt.solve(block.W.transpose());
+        return true;
     }
 
     //! The block's step given the pose step; returns its share of the predicted decrease.
