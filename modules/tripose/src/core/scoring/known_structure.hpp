@@ -39,8 +39,9 @@ constexpr double kNoisyPlanarThickness = 0.35;
 
 /** True for the regimes with several basins: a weak triangulation angle, planar structure, or
 mostly lines (under a quarter of the features are points: a line's residuals leave the motion
-along it free, and a planar target seen through lines alone has a mirrored motion that explains
-most of them nearly as well, doc/stereo.md).
+along it free, and for a planar target seen through lines alone the pose turned by pi about the
+plane's normal fits every line exactly, told apart only by the side of the segments,
+geometry/segment_cheirality.hpp).
 */
 inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {
