@@ -18,6 +18,7 @@
 #include "../geometry/triangulation.hpp"
 #include "ml_refinement.hpp"
 #include "../geometry/rotation.hpp"
+#include "../geometry/segment_cheirality.hpp"
 #include "observation_model.hpp"
 #include "robust_loss.hpp"
 #include "schur_system.hpp"
@@ -420,6 +421,21 @@ private:
         return finite;
     }
 
+    /** Whether every view that sees line @p i saw a part of @p L in front of it
+    (geometry/segment_cheirality.hpp). Judged on the result, not imposed during the iteration: a
+    line triangulated at a poor start may be mirrored through a centre and come back. */
+    bool segmentsInFront(const Estimate& e, int i, const PluckerLine& L) const
+    {
+        for (size_t v = 0; v < set_.views.size(); ++v)
+        {
+            const View& view = set_.views[v];
+            if (view.seesLine(i) && segmentBehindCamera(view.poseFor(mountOf(e, v)), L, view.calibratedLineEnd(i, 0),
+                                                        view.calibratedLineEnd(i, 1)))
+                return false;
+        }
+        return true;
+    }
+
     void exportStructure(const Estimate& e, RefinedStructure* out) const
     {
         if (!out)
@@ -430,6 +446,7 @@ private:
             out->pointUsed[k] = points_[k].used;
         out->lineEnds.assign(2 * lines_.size(), Eigen::Vector3d::Zero());
         out->lineUsed.resize(lines_.size());
+        out->lineInFront.assign(lines_.size(), 0);
         for (size_t k = 0; k < lines_.size(); ++k)
         {
             out->lineUsed[k] = lines_[k].used;
@@ -438,6 +455,7 @@ private:
             const PluckerLine L = e.lines[k].plucker();
             if (!(L.d.norm() > 0) || !L.m.allFinite())
                 continue;
+            out->lineInFront[k] = segmentsInFront(e, lines_[k].index, L);
             // The end points as the first view that sees the line observed them.
             const int i = lines_[k].index;
             for (size_t v = 0; v < set_.views.size(); ++v)

@@ -51,6 +51,9 @@ struct RefinedStructure
                                            //!< rays of the first view that sees it.
     std::vector<unsigned char> pointUsed;  //!< 1 where the point entered the cost (else: its initialisation).
     std::vector<unsigned char> lineUsed;   //!< 1 where the line entered the cost.
+    //! 1 where the refined line lies in front of every view that sees it, at the part each saw
+    //! (geometry/segment_cheirality.hpp); a line's residuals do not tell, so the caller must.
+    std::vector<unsigned char> lineInFront;
 };
 
 /** Maximum-likelihood refinement over every view of @p set: minimises the (robustified) reprojection

@@ -27,8 +27,9 @@ int countUsed(const RefinedStructure& s)
     int used = 0;
     for (unsigned char u : s.pointUsed)
         used += u;
-    for (unsigned char u : s.lineUsed)
-        used += u;
+    // A line that settled behind a view, where its residuals cannot see it, explains nothing.
+    for (size_t k = 0; k < s.lineUsed.size(); ++k)
+        used += s.lineUsed[k] && s.lineInFront[k];
     return used;
 }
 

@@ -16,12 +16,16 @@ struct LocalMinimum
 {
     CameraPose pose;
     double rms = std::numeric_limits<double>::infinity(); //!< RMS reprojection error (px) over the used features.
-    int used = 0;                                         //!< Features that entered the cost.
+    //! Features that entered the cost, less the lines that settled behind a view that sees them
+    //! (RefinedStructure::lineInFront).
+    int used = 0;
 
     bool finite() const { return std::isfinite(rms) && pose.allFinite(); }
     /** Lower cost first; a minimum that leaves features out of the cost (behind a view, or not
     determined at the structure it started from) loses against one that uses more, whatever its RMS,
-    since its RMS is over fewer residuals. */
+    since its RMS is over fewer residuals. So does one that explains lines only by seeing them
+    behind a camera: for planar structure seen through lines alone, the pose turned by pi about the
+    plane's normal has the true pose's residuals exactly (geometry/segment_cheirality.hpp). */
     bool betterThan(const LocalMinimum& other) const
     {
         if (finite() != other.finite())

@@ -61,8 +61,9 @@ inline bool structureHasSeveralBasins(const ViewSet& set, const PoseScorer& scor
 
 /** True for the regimes with several basins: those of the structure (structureHasSeveralBasins()),
 or mostly lines (under a quarter of the features are points: a line's residuals leave the motion
-along it free, and a planar target seen through lines alone has a mirrored motion that explains
-most of them nearly as well, doc/stereo.md).
+along it free, and for a planar target seen through lines alone the pose turned by pi about the
+plane's normal fits every line exactly, told apart only by the side of the segments,
+geometry/segment_cheirality.hpp).
 */
 inline bool hasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {

@@ -12,6 +12,7 @@
 
 #include "../geometry/conditioning.hpp"
 #include "../geometry/residuals.hpp"
+#include "../geometry/segment_cheirality.hpp"
 #include "../geometry/triangulation.hpp"
 #include "pose_scorer.hpp"
 
@@ -53,7 +54,13 @@ PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * set.kno
                 ++e.unmeasured;
                 continue;
             }
-            LineTerm term = { i, lineEnds_[2 * i], lineEnds_[2 * i + 1], view.lineEnds[2 * i], view.lineEnds[2 * i + 1] };
+            LineTerm term = { i,
+                              lineEnds_[2 * i],
+                              lineEnds_[2 * i + 1],
+                              view.lineEnds[2 * i],
+                              view.lineEnds[2 * i + 1],
+                              view.calibratedLineEnd(i, 0),
+                              view.calibratedLineEnd(i, 1) };
             e.lines.push_back(term);
         }
         estimated_.push_back(e);
@@ -165,9 +172,11 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
             s.considered += 2;
             double r2 = threshold2;
             const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
-            const int behind = (a.z() > 0 ? 0 : 1) + (b.z() > 0 ? 0 : 1);
-            s.behind += behind;
-            if (behind == 0 && lineResidual(camera, a.cross(b), term.end0, term.end1, r))
+            const Eigen::Vector3d moment = a.cross(b);
+            // The residuals alone would accept the line reflected through the camera centre.
+            const bool behind = segmentBehindCamera(moment, b - a, term.calibratedEnd0, term.calibratedEnd1);
+            s.behind += behind ? 2 : 0;
+            if (!behind && lineResidual(camera, moment, term.end0, term.end1, r))
             {
                 const double e2 = r.squaredNorm();
                 s.sumSquares += e2;
@@ -237,7 +246,8 @@ void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& poi
             const View& view = set_.views[v];
             if (!view.seesLine(i))
                 continue;
-            ok = lineResidual(view.camera, lineMomentInCamera(poses[v], L), view.lineEnds[2 * i],
+            ok = !segmentBehindCamera(poses[v], L, view.calibratedLineEnd(i, 0), view.calibratedLineEnd(i, 1)) &&
+                 lineResidual(view.camera, lineMomentInCamera(poses[v], L), view.lineEnds[2 * i],
                               view.lineEnds[2 * i + 1], r);
             sum += r.squaredNorm();
             count += 2;

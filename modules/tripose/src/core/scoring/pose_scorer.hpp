@@ -19,14 +19,15 @@ namespace tripose {
 struct PoseScore
 {
     //! MSAC cost: over the observations in the estimated views, the sum of min(r^2, threshold^2);
-    //! an observation whose feature has no structure, or lies behind the camera, costs threshold^2.
+    //! an observation whose feature has no structure, or lies behind the camera (a point, or the
+    //! observed segment of a line: geometry/segment_cheirality.hpp), costs threshold^2.
     //! +inf when the score was abandoned at its bound.
     double cost = 0;
     int inliers = 0;        //!< Observations with r^2 < threshold^2.
     double sumSquares = 0;  //!< Sum of the squared pixel residuals of the observations that could be measured.
     int residuals = 0;      //!< Their number: one per point distance, one per line end-point distance.
-    int behind = 0;         //!< Structure points (point features, line ends) behind an estimated view.
-    int considered = 0;     //!< Structure points that could be checked.
+    int behind = 0;         //!< Point features, and line end points (two per segment seen behind), behind an estimated view.
+    int considered = 0;     //!< Those that could be checked: one per point, two per line.
 
     //! RMS reprojection error (px) over the measured residuals; +inf when there are none.
     double rms() const;
@@ -62,7 +63,7 @@ public:
     /** Per feature: the RMS reprojection error (px) over every view that sees it and every coordinate
     (a point: 2 per view; a line: its 2 end-point distances per view), the feature triangulated from
     all of them with the estimated views at @p pose; +inf where it cannot be triangulated or lies
-    behind a view.
+    behind a view (a line: the part of it a view saw, geometry/segment_cheirality.hpp).
     */
     void refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,
                         std::vector<double>& lineResiduals) const;
@@ -89,7 +90,8 @@ private:
     {
         int feature;
         Eigen::Vector3d A, B;
-        Eigen::Vector2d end0, end1;
+        Eigen::Vector2d end0, end1;                     //!< Pixels.
+        Eigen::Vector2d calibratedEnd0, calibratedEnd1; //!< For the segment's cheirality.
     };
     //! What one estimated view measures: terms of the features with structure, the count of those without.
     struct EstimatedView
