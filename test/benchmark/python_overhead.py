@@ -60,10 +60,12 @@ def write_problem(path, points, lines, K, R12, t12):
 
 def cpp_median(tool, problem, method, runs):
     """Median seconds per call of the C++ API on @p problem, and the (R, t) it returned."""
-    out = subprocess.run([str(tool), "--input", str(problem), "--method", method, "--runs", str(runs)],
-                         check=True, capture_output=True, text=True).stdout.split("\n")
+    run = subprocess.run([str(tool), "--input", str(problem), "--method", method, "--runs", str(runs)],
+                         capture_output=True, text=True)
+    out = run.stdout.split("\n")
     if "no pose" in out:
         sys.exit(f"the C++ API found no pose on {problem.name} ({method}): its time would be a failure's")
+    run.check_returncode()
     values = {line.split()[0]: [float(x) for x in line.split()[1:]] for line in out if line.strip()}
     return values["median_us"][0] * 1e-6, np.array(values["R"]).reshape(3, 3), np.array(values["t"])
 
