@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,10 +27,38 @@ inline double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
+//! A pose further than this from the truth counts as a failure (far beyond the noise of any scene here).
+const double kFailedRotationDeg = 10.0;
+
+//! Per method name, over every runInterleaved() call: (scenes run, scenes with a pose within
+//! kFailedRotationDeg of the truth).
+inline std::map<std::string, std::pair<int, int>>& solvedScenes()
+{
+    static std::map<std::string, std::pair<int, int>> counts;
+    return counts;
+}
+
+/** 0 when every method run by runInterleaved() solved at least one of its scenes; otherwise names the
+others on stderr and returns 1: the times reported for them are the times of failures.
+*/
+inline int failureStatus()
+{
+    int status = 0;
+    for (const auto& m : solvedScenes())
+        if (m.second.second == 0)
+        {
+            std::fprintf(stderr, "%s returned no pose within %.0f deg of the truth on any of its %d scenes: "
+                                 "its times are not times of solving\n",
+                         m.first.c_str(), kFailedRotationDeg, m.second.first);
+            status = 1;
+        }
+    return status;
+}
+
 /** Runs every method of @p methods on scene @p s (index @p k) @p repeats times, interleaved so that
 frequency changes and other load hit all of them alike. Per method: @p times receives the median
 time in units of 1 / @p unitsPerSecond, @p errors the pose error of the last call against the
-scene's truth (+inf when it found no pose or threw).
+scene's truth (+inf when it found no pose or threw). Counts the scene in solvedScenes().
 */
 template <typename Scene>
 void runInterleaved(const Scene& s, int k,
@@ -60,6 +90,9 @@ void runInterleaved(const Scene& s, int k,
         times[m] = median(perScene[m]);
         if (ok[m])
             errors[m] = cv::tripose::support::poseError(Rs[m], ts[m], s.R, s.t);
+        std::pair<int, int>& count = solvedScenes()[methods[m].first];
+        ++count.first;
+        count.second += errors[m].rotationDeg < kFailedRotationDeg;
     }
 }
 

@@ -60,10 +60,26 @@ def write_problem(path, points, lines, K, R12, t12):
 
 def cpp_median(tool, problem, method, runs):
     """Median seconds per call of the C++ API on @p problem, and the (R, t) it returned."""
-    out = subprocess.run([str(tool), "--input", str(problem), "--method", method, "--runs", str(runs)],
-                         check=True, capture_output=True, text=True).stdout.split("\n")
+    run = subprocess.run([str(tool), "--input", str(problem), "--method", method, "--runs", str(runs)],
+                         capture_output=True, text=True)
+    out = run.stdout.split("\n")
+    if "no pose" in out:
+        sys.exit(f"the C++ API found no pose on {problem.name} ({method}): its time would be a failure's")
+    run.check_returncode()
     values = {line.split()[0]: [float(x) for x in line.split()[1:]] for line in out if line.strip()}
     return values["median_us"][0] * 1e-6, np.array(values["R"]).reshape(3, 3), np.array(values["t"])
+
+
+def rotation_error_deg(R, R_true):
+    return float(np.degrees(np.arccos(np.clip((np.trace(R @ R_true.T) - 1) / 2, -1, 1))))
+
+
+# Both problems are solved to about 0.1 degree (0.5 px noise); anything beyond this is a broken solver,
+# whose time means nothing.
+MAX_ROTATION_ERROR_DEG = 2.0
+# The package and the C++ API run the same code on the same doubles (the problem file stores them
+# exactly): their poses agree to the last bit, up to this round-off allowance.
+MAX_POSE_DIFFERENCE = 1e-12
 
 
 def compare_with_cpp(tool, problem, method, python_call, runs, rounds):
@@ -77,6 +93,9 @@ def compare_with_cpp(tool, problem, method, python_call, runs, rounds):
         R_py, t_py = (result[0] if isinstance(result, list) else (result["R"], result["t"]))
         difference = max(difference, float(np.abs(R - R_py).max()), float(np.abs(t - t_py).max()))
         py.append(interleaved({"py": python_call}, runs)["py"])
+    if not difference <= MAX_POSE_DIFFERENCE:
+        sys.exit(f"{problem.name} ({method}): the package and the C++ API return poses {difference:.1e} apart, "
+                 "so they did not solve the same problem the same way")
     return float(np.median(cpp)), float(np.median(py)), difference
 
 
@@ -124,9 +143,18 @@ def main():
         "100P+40L RANSAC + refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, seed=0),
         "100P+40L RANSAC, no refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, refine=False),
     }
-    # Same results both ways, or the comparison means nothing.
+    # Same results both ways, and a correct pose, or the comparison means nothing.
     a, c = ext.estimate_pose_line_point(*small, None, False), tripose.estimate_pose_line_point(*small)
-    assert all(np.array_equal(x[0], y[0]) for x, y in zip(a, c))
+    if not a or len(a) != len(c):
+        sys.exit(f"4P+4L: {len(a)} candidates from the extension, {len(c)} from the wrapper")
+    for x, y in zip(a, c):
+        if not (np.array_equal(x[0], y[0]) and np.array_equal(x[1], y[1])):
+            sys.exit("4P+4L: the extension and the wrapper return different poses")
+    ransac = tripose.estimate_pose_line_point_ransac(*big, seed=0)
+    for name, R, R_true in (("4P+4L linear", c[0][0], s.R), ("100P+40L RANSAC", ransac["R"], b.R)):
+        if R is None or not rotation_error_deg(R, R_true) < MAX_ROTATION_ERROR_DEG:
+            error = "no pose" if R is None else f"{rotation_error_deg(R, R_true):.2f} deg off the truth"
+            sys.exit(f"{name}: {error}; not timing a solver that fails")
 
     # Groups of similar duration, so that a long run does not precede (and evict the caches of) a short one.
     for call in list(variants.values()) + list(refine_variants.values()) + list(ransac_variants.values()):

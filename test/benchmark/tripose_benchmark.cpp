@@ -142,5 +142,5 @@ int main(int argc, char** argv)
         std::printf("\n");
     }
     std::printf("ratio = method time / linear time (> 1: the linear solver is faster)\n");
-    return 0;
+    return tripose_benchmark::failureStatus();
 }

@@ -147,5 +147,5 @@ int main(int argc, char** argv)
                     tripose_benchmark::median(rot[m]), tripose_benchmark::median(trans[m]), good[m], o.scenes);
     }
     std::printf("ratio = method time / tripose time (> 1: tripose is faster); medians of the per-scene medians\n");
-    return 0;
+    return tripose_benchmark::failureStatus();
 }

@@ -176,5 +176,5 @@ int main(int argc, char** argv)
     runRow("100P+40L 50%", 100, 40, 0.5, noise, ransacScenes, repeats,
            { { "stereo RANSAC+refine", ransac }, { "tri+PnPRansac+RefineLM", pnpRansac } });
     std::printf("ratio = method time / the row's first method's time; medians of the per-scene medians\n");
-    return 0;
+    return tripose_benchmark::failureStatus();
 }

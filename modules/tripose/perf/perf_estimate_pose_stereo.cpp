@@ -27,12 +27,16 @@ PERF_TEST_P(Tripose_EstimatePoseStereo, estimate, testing::Values(StereoCounts(4
 {
     const cv::tripose::support::SyntheticStereoScene s = stereoScene(get<0>(GetParam()), get<1>(GetParam()), 0.0);
     Mat R, t;
+    int candidates = 0;
     declare.iterations(2000);
     TEST_CYCLE()
     {
-        cv::tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3,
+        candidates = cv::tripose::estimatePoseLinePointStereo(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3,
                                              s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
     }
+    // A time is only meaningful for a call that found a pose.
+    ASSERT_GT(candidates, 0);
+    ASSERT_EQ(R.size(), Size(3, 3));
     SANITY_CHECK_NOTHING();
 }
 
@@ -49,13 +53,17 @@ PERF_TEST_P(Tripose_EstimatePoseStereoRansac, estimate, testing::Values(StereoRa
         stereoScene(get<0>(GetParam()), get<1>(GetParam()), get<2>(GetParam()), get<3>(GetParam()));
     cv::tripose::RansacParams ransac;
     Mat R, t, pointMask, lineMask;
+    int inliers = 0;
     declare.iterations(100);
     TEST_CYCLE()
     {
-        cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
+        inliers = cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2,
                                                    s.lines3, s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, R,
                                                    t, ransac, pointMask, lineMask);
     }
+    // A time is only meaningful for a call that found a pose.
+    ASSERT_GT(inliers, 0);
+    ASSERT_EQ(R.size(), Size(3, 3));
     SANITY_CHECK_NOTHING();
 }
 

@@ -54,6 +54,8 @@ PERF_TEST_P(Tripose_MinimalSolver, p3p, testing::Values(100))
     const std::vector<Instance> instances = randomInstances(makeP3P, GetParam());
     std::vector<CameraPose> poses;
     TEST_CYCLE() g_sink = solveAll(instances, solveP3PObservations, poses);
+    // Every instance is exact and generic: each has at least its true pose among the solutions.
+    EXPECT_GE((size_t)g_sink, instances.size());
     SANITY_CHECK_NOTHING();
 }
 
@@ -62,6 +64,8 @@ PERF_TEST_P(Tripose_MinimalSolver, p2p1l, testing::Values(100))
     const std::vector<Instance> instances = randomInstances(makeP2P1L, GetParam());
     std::vector<CameraPose> poses;
     TEST_CYCLE() g_sink = solveAll(instances, solveP2P1LObservations, poses);
+    // Every instance is exact and generic: each has at least its true pose among the solutions.
+    EXPECT_GE((size_t)g_sink, instances.size());
     SANITY_CHECK_NOTHING();
 }
 
@@ -70,6 +74,8 @@ PERF_TEST_P(Tripose_MinimalSolver, p1p2l, testing::Values(100))
     const std::vector<Instance> instances = randomInstances(makeP1P2L, GetParam());
     std::vector<CameraPose> poses;
     TEST_CYCLE() g_sink = solveAll(instances, solveP1P2LObservations, poses);
+    // Every instance is exact and generic: each has at least its true pose among the solutions.
+    EXPECT_GE((size_t)g_sink, instances.size());
     SANITY_CHECK_NOTHING();
 }
 
@@ -78,6 +84,8 @@ PERF_TEST_P(Tripose_MinimalSolver, p3l, testing::Values(100))
     const std::vector<Instance> instances = randomInstances(makeP3L, GetParam());
     std::vector<CameraPose> poses;
     TEST_CYCLE() g_sink = solveAll(instances, solveP3LObservations, poses);
+    // Every instance is exact and generic: each has at least its true pose among the solutions.
+    EXPECT_GE((size_t)g_sink, instances.size());
     SANITY_CHECK_NOTHING();
 }
 
