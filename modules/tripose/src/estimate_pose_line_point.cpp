@@ -7,7 +7,6 @@
 #include "core/linear/linear_pose_solver.hpp"
 #include "core/pipeline/pose_pipelines.hpp"
 #include "opencv/argument_reading.hpp"
-#include "opencv/covariance_writing.hpp"
 #include "opencv/options_conversion.hpp"
 #include "opencv/result_writing.hpp"
 
@@ -27,14 +26,10 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                                        cameraMatrix, distCoeffs, R12, t12);
         const detail::core::LinearPoseSolver solver(views);
-        const std::vector<detail::core::ScoredPose> candidates =
-            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
-        detail::writeEstimateCovariance(
-            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
-            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
-        return detail::writeCandidates(candidates,
-                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
-                                       "candidateTs");
+        const bool refine = method == POSE_LINEAR_REFINE;
+        return detail::writeCandidateEstimate(views, detail::core::estimateCandidates(views, solver, refine), refine, R,
+                                              t, candidateRs, candidateTs, reprojectionErrors, covariance,
+                                              noiseVariance);
     });
 }
 

@@ -36,14 +36,10 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
             detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
                                        distCoeffs, R12, t12, kMinStereoFeatures);
         const detail::core::RigPoseSolver solver(views);
-        const std::vector<detail::core::ScoredPose> candidates =
-            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
-        detail::writeEstimateCovariance(
-            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
-            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
-        return detail::writeCandidates(candidates,
-                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
-                                       "candidateTs");
+        const bool refine = method == POSE_LINEAR_REFINE;
+        return detail::writeCandidateEstimate(views, detail::core::estimateCandidates(views, solver, refine), refine, R,
+                                              t, candidateRs, candidateTs, reprojectionErrors, covariance,
+                                              noiseVariance);
     });
 }
 

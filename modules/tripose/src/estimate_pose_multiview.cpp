@@ -32,14 +32,10 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
         const detail::core::ViewSet views =
             detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
         const detail::core::MultiViewPoseSolver solver(views);
-        const std::vector<detail::core::ScoredPose> candidates =
-            detail::core::estimateCandidates(views, solver, method == POSE_LINEAR_REFINE);
-        detail::writeEstimateCovariance(
-            views, method == POSE_LINEAR_REFINE && !candidates.empty() ? &candidates.front().pose : nullptr,
-            detail::core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
-        return detail::writeCandidates(candidates,
-                                       R, t, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
-                                       "candidateTs");
+        const bool refine = method == POSE_LINEAR_REFINE;
+        return detail::writeCandidateEstimate(views, detail::core::estimateCandidates(views, solver, refine), refine, R,
+                                              t, candidateRs, candidateTs, reprojectionErrors, covariance,
+                                              noiseVariance);
     });
 }
 

@@ -4,6 +4,7 @@
 
 #include "../precomp.hpp"
 
+#include "covariance_writing.hpp"
 #include "result_writing.hpp"
 
 namespace cv {
@@ -93,6 +94,16 @@ int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray
         values.copyTo(errors);
     }
     return n;
+}
+
+int writeCandidateEstimate(const core::ViewSet& views, const std::vector<core::ScoredPose>& candidates, bool refined,
+                           OutputArray R, OutputArray t, OutputArrayOfArrays candidateRs,
+                           OutputArrayOfArrays candidateTs, OutputArray errors, OutputArray covariance,
+                           OutputArray noiseVariance)
+{
+    writeEstimateCovariance(views, refined && !candidates.empty() ? &candidates.front().pose : nullptr,
+                            core::RefineOptions(), nullptr, nullptr, covariance, noiseVariance);
+    return writeCandidates(candidates, R, t, candidateRs, candidateTs, errors, "candidateRs", "candidateTs");
 }
 
 int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,

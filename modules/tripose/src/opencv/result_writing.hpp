@@ -35,6 +35,15 @@ int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray
                     OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray errors, const char* RsName,
                     const char* tsName);
 
+/** What the candidate functions write: the candidates as writeCandidates() does (outputs named
+candidateRs, candidateTs), and with @p refined (POSE_LINEAR_REFINE) the uncertainty of the best
+one (covariance_writing.hpp; released otherwise). Returns their number.
+*/
+int writeCandidateEstimate(const core::ViewSet& views, const std::vector<core::ScoredPose>& candidates, bool refined,
+                           OutputArray R, OutputArray t, OutputArrayOfArrays candidateRs,
+                           OutputArrayOfArrays candidateTs, OutputArray errors, OutputArray covariance,
+                           OutputArray noiseVariance);
+
 //! A robust estimate (or none: @p found false) and its inlier masks (Nx1 CV_8U). Returns the inlier count.
 int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,
                         OutputArray pointInliers, OutputArray lineInliers);

@@ -53,12 +53,8 @@ views, then the new view).
 @param candidateTs Optional output: the matching translations.
 @param reprojectionErrors Optional output: per candidate, the RMS reprojection error (px) in the new
 view (POSE_LINEAR) or over every view (POSE_LINEAR_REFINE).
-@param covariance Optional output: with #POSE_LINEAR_REFINE, the 6x6 CV_64F covariance of the best
-candidate for 1 px image noise, as refinePoseLinePoint() reports it at that refined pose over every
-feature. Released with #POSE_LINEAR (a linear estimate is not the maximum-likelihood one that the
-covariance describes) and when there is no candidate or the pose is not determined.
-@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$) at
-that candidate, as in refinePoseLinePoint(); released together with @p covariance.
+@param covariance Optional output: the best candidate's 6x6 covariance, as estimatePoseLinePoint() gives it.
+@param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePoint() gives it.
 @return The number of candidate poses (0 when the features do not determine the pose).
 @throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), for fewer
 than two known views, known views all at one centre, a feature the new view does not see or that
@@ -91,13 +87,8 @@ Arguments as in estimatePoseMultiView().
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
-@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
-returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
-inliers with RansacParams::refineParams. Released without refinement (the sample's or local
-optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
-pose was found and when the pose is not determined.
-@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
-from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
+@param covariance Optional output: the returned pose's 6x6 covariance, as estimatePoseLinePointRansac() gives it.
+@param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePointRansac() gives it.
 @return The number of inliers (points + lines); 0 when no pose was found (R and t empty, masks zero).
 */
 CV_EXPORTS_W int estimatePoseMultiViewRansac(
