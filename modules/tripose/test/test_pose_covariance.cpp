@@ -52,8 +52,8 @@ struct Regime
     int motion;
     double baselineFraction;
     int numPoints, numLines;
-    double sigma = 1.0;       //!< Noise (px) of the Monte-Carlo draws; the covariance is scaled by sigma^2.
-    bool meetsTarget = true;  //!< Whether the study asserts the NEES and coverage targets.
+    double sigma;             //!< Noise (px) of the Monte-Carlo draws; the covariance is scaled by sigma^2.
+    bool meetsTarget;         //!< Whether the study asserts the NEES and coverage targets.
 };
 
 Problem makeProblem(const Regime& regime, int seed)
@@ -208,16 +208,16 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
     // may also end with a line whose structure block is singular to rounding (its eigenvalues
     // spanning 1e20): the refinement then reports no covariance, as documented, and the row counts it.
     const Regime regimes[] = {
-        { "large", false, ts::MOTION_LARGE, 0.0, 10, 10 },
-        { "large", false, ts::MOTION_LARGE, 0.0, 4, 4 },
-        { "small", false, ts::MOTION_SMALL, 0.0, 10, 10 },
-        { "small", false, ts::MOTION_SMALL, 0.0, 4, 4 },
+        { "large", false, ts::MOTION_LARGE, 0.0, 10, 10, 1.0, true },
+        { "large", false, ts::MOTION_LARGE, 0.0, 4, 4, 1.0, true },
+        { "small", false, ts::MOTION_SMALL, 0.0, 10, 10, 1.0, true },
+        { "small", false, ts::MOTION_SMALL, 0.0, 4, 4, 1.0, true },
         { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10, 1.0, false },
         { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4, 1.0, false },
-        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10, 0.03 },
-        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4, 0.03 },
-        { "stereo rig", true, 0, 0.0, 10, 10 },
-        { "stereo rig", true, 0, 0.0, 4, 4 },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 10, 10, 0.03, true },
+        { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 4, 4, 0.03, true },
+        { "stereo rig", true, 0, 0.0, 10, 10, 1.0, true },
+        { "stereo rig", true, 0, 0.0, 4, 4, 1.0, true },
     };
     int scenes = 0, draws = 0;
     double sigma = 1.0;
