@@ -603,7 +603,7 @@ nb::list runCandidates(Build build, bool refine)
 //! @p options, on the ViewSet that @p build makes (GIL released); with refinement, the uncertainty
 //! of the refined pose over the inliers.
 template <class Build, class Estimate>
-nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options)
+nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options, bool wantCovariance)
 {
     tripose::RobustEstimate result;
     tripose::PoseCovariance uncertainty;
@@ -612,7 +612,8 @@ nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions&
         nb::gil_scoped_release release;
         const tripose::ViewSet views = build();
         found = estimate(views, result);
-        if (found && options.refine)
+        // Asked for only: it refines once more over the inliers, about half a RANSAC's time.
+        if (wantCovariance && found && options.refine)
             uncertainty = tripose::covarianceOfEstimate(views, result.pose, options.refineOptions,
                                                         &result.pointInliers, &result.lineInliers);
     }
@@ -667,7 +668,7 @@ NB_MODULE(_tripose_ext, m)
     m.def("estimate_pose_line_point_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
              nb::handle R12, nb::handle t12, nb::handle dist, double threshold, double confidence, int maxIterations,
-             bool refine, uint64_t seed) {
+             bool refine, uint64_t seed, bool wantCovariance) {
               const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
               return runRobust(problem.builder(kMinFeatures),
@@ -675,9 +676,9 @@ NB_MODULE(_tripose_ext, m)
                                    const tripose::LinearPoseSolver linear(views);
                                    return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
                                },
-                               options);
+                               options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
 
     m.def("refine_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
@@ -701,12 +702,12 @@ NB_MODULE(_tripose_ext, m)
     m.def("estimate_pose_line_point_stereo_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist, double threshold,
-             double confidence, int maxIterations, bool refine, uint64_t seed) {
+             double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options), options);
+              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options), options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
 
     m.def("refine_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
@@ -729,7 +730,7 @@ NB_MODULE(_tripose_ext, m)
 
     m.def("estimate_pose_multiview_ransac",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
-             double threshold, double confidence, int maxIterations, bool refine, uint64_t seed) {
+             double threshold, double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
               return runRobust(problem.newViewBuilder(),
@@ -737,9 +738,9 @@ NB_MODULE(_tripose_ext, m)
                                    const tripose::MultiViewPoseSolver linear(views);
                                    return tripose::estimateRobustOnKnownStructure(views, linear, options, estimate);
                                },
-                               options);
+                               options, wantCovariance);
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
 
     m.def("refine_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle R,

@@ -72,19 +72,24 @@ def test_errors_are_consistent_with_the_covariance():
     assert 0.90 < np.mean(nees <= CHI2_6_95) < 0.99
 
 
-def test_ransac_returns_the_refinement_covariance_and_none_without_refinement():
+def test_ransac_returns_the_refinement_covariance_when_asked_and_none_without_refinement():
     scene = three_view_scene(14, 8, 8)
     rng = np.random.default_rng(4)
     points, lines = noisy(scene, rng)
     reference = refine(scene, points, lines, scene.R, scene.t)
-    result = tripose.estimate_pose_line_point_ransac(*points, *lines, scene.K, scene.R12, scene.t12, threshold=4.0)
+    result = tripose.estimate_pose_line_point_ransac(*points, *lines, scene.K, scene.R12, scene.t12, threshold=4.0,
+                                                     covariance=True)
     assert result["num_inliers"] == 16
     np.testing.assert_allclose(result["covariance"], reference["covariance"], rtol=1e-5,
                                atol=1e-6 * np.abs(reference["covariance"]).max())
     assert result["noise_variance"] == pytest.approx(reference["noise_variance"], rel=1e-5)
     unrefined = tripose.estimate_pose_line_point_ransac(*points, *lines, scene.K, scene.R12, scene.t12,
-                                                        threshold=4.0, refine=False)
+                                                        threshold=4.0, refine=False, covariance=True)
     assert unrefined["covariance"] is None and unrefined["noise_variance"] is None
+    # Not asked for (it costs one more refinement): not computed.
+    unasked = tripose.estimate_pose_line_point_ransac(*points, *lines, scene.K, scene.R12, scene.t12, threshold=4.0)
+    assert unasked["covariance"] is None and unasked["noise_variance"] is None
+    np.testing.assert_array_equal(unasked["R"], result["R"])
 
 
 def test_undetermined_pose_gives_none():

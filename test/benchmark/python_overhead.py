@@ -139,7 +139,7 @@ def main():
     }
     ransac_variants = {
         "100P+40L RANSAC + refine, extension": lambda: ext.estimate_pose_line_point_ransac(
-            *big, None, 2.0, 0.999, 10000, True, 0),
+            *big, None, 2.0, 0.999, 10000, True, 0, False),
         "100P+40L RANSAC + refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, seed=0),
         "100P+40L RANSAC, no refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, refine=False),
     }
