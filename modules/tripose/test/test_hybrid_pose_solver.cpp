@@ -39,6 +39,18 @@ ViewSet readScene(const cv::tripose::support::SyntheticScene& s)
                                                s.cameraMatrices, noArray(), s.R12, s.t12);
 }
 
+//! A scene read as the estimator reads it, with the hybrid sample solver over its linear solver.
+struct HybridSetup
+{
+    const ViewSet views;
+    const PoseScorer scorer;
+    const LinearPoseSolver linear;
+    const HybridPoseSolver solver;
+    explicit HybridSetup(const cv::tripose::support::SyntheticScene& s)
+        : views(readScene(s)), scorer(views), linear(views), solver(views, scorer, linear)
+    {}
+};
+
 double bestRotationErrorDeg(const std::vector<CameraPose>& poses, const cv::tripose::support::SyntheticScene& s)
 {
     double best = std::numeric_limits<double>::infinity();
@@ -63,10 +75,8 @@ TEST(Tripose_HybridPoseSolver, mixed_samples_on_wide_baselines_contain_the_true_
     for (int seed = 0; seed < 20; ++seed)
     {
         const cv::tripose::support::SyntheticScene s = scene(30, 10, cv::tripose::support::MOTION_LARGE, 5.0, seed);
-        const ViewSet views = readScene(s);
-        const PoseScorer scorer(views);
-        const LinearPoseSolver linear(views);
-        const HybridPoseSolver solver(views, scorer, linear);
+        const HybridSetup setup(s);
+        const HybridPoseSolver& solver = setup.solver;
         ASSERT_EQ(HybridPoseSolver::Sampling::Mixed, solver.sampling()) << "seed " << seed;
         EXPECT_EQ(3, solver.sampleSize());
         const MixedSampling* sampling = solver.mixedSampling();
@@ -96,10 +106,9 @@ TEST(Tripose_HybridPoseSolver, point_samples_on_small_sets_with_enough_points)
     for (int seed = 0; seed < 10; ++seed)
     {
         const cv::tripose::support::SyntheticScene s = scene(12, 4, cv::tripose::support::MOTION_LARGE, 5.0, seed);
-        const ViewSet views = readScene(s);
-        const PoseScorer scorer(views);
-        const LinearPoseSolver linear(views);
-        const HybridPoseSolver solver(views, scorer, linear);
+        const HybridSetup setup(s);
+        const ViewSet& views = setup.views;
+        const HybridPoseSolver& solver = setup.solver;
         ASSERT_TRUE(solver.usesPointSamples()) << "seed " << seed;
         EXPECT_TRUE(solver.mixedSampling() == nullptr);
         EXPECT_EQ(3, solver.sampleSize());
@@ -125,10 +134,9 @@ TEST(Tripose_HybridPoseSolver, linear_samples_on_narrow_baselines_and_few_points
     for (int seed = 0; seed < 20; ++seed)
     {
         const cv::tripose::support::SyntheticScene s = scene(30, 10, cv::tripose::support::MOTION_SMALL, 0.2, seed);
-        const ViewSet views = readScene(s);
-        const PoseScorer scorer(views);
-        const LinearPoseSolver linear(views);
-        const HybridPoseSolver solver(views, scorer, linear);
+        const HybridSetup setup(s);
+        const ViewSet& views = setup.views;
+        const HybridPoseSolver& solver = setup.solver;
         // Views 1 and 2 at most 0.4 m apart, about 20 m from the points: angles under 1.5 degrees.
         EXPECT_EQ(HybridPoseSolver::Sampling::Linear, solver.sampling()) << "seed " << seed;
         narrow += solver.sampling() == HybridPoseSolver::Sampling::Linear;
@@ -153,10 +161,10 @@ TEST(Tripose_HybridPoseSolver, line_samples_where_lines_dominate)
         for (int points : { 0, 3 })
         {
             const cv::tripose::support::SyntheticScene s = scene(points, 60, cv::tripose::support::MOTION_LARGE, 5.0, seed);
-            const ViewSet views = readScene(s);
-            const PoseScorer scorer(views);
-            const LinearPoseSolver linear(views);
-            const HybridPoseSolver solver(views, scorer, linear);
+            const HybridSetup setup(s);
+            const ViewSet& views = setup.views;
+            const PoseScorer& scorer = setup.scorer;
+            const HybridPoseSolver& solver = setup.solver;
             ASSERT_EQ(HybridPoseSolver::Sampling::Mixed, solver.sampling()) << points << "P seed " << seed;
             const MixedSampling& sampling = *solver.mixedSampling();
             ASSERT_EQ(points == 0 ? 1u : 4u, sampling.kinds.size());
