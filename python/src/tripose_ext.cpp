@@ -562,16 +562,6 @@ struct MultiViewProblem
     }
 };
 
-//! The robust estimator of an arrangement whose scorer is built from its views (stereo, multi-view).
-template <class Solver>
-std::function<bool(const tripose::ViewSet&, tripose::RobustEstimate&)> robustWith(const tripose::RansacOptions& options)
-{
-    return [options](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
-        const Solver solver(views);
-        return tripose::estimateRobust(views, solver, options, estimate);
-    };
-}
-
 nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
                        const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
 {
@@ -705,7 +695,11 @@ NB_MODULE(_tripose_ext, m)
              double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
-              return runRobust(problem.builder(kMinStereoRansacFeatures), robustWith<tripose::RigPoseSolver>(options), options, wantCovariance);
+              return runRobust(problem.builder(kMinStereoRansacFeatures),
+                               [options](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
+                                   return tripose::estimateRobustRig(views, options, estimate);
+                               },
+                               options, wantCovariance);
           },
           nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
 

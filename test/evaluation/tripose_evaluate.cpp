@@ -44,7 +44,8 @@
 // --repeats calls, one thread), ok. With --dump-inputs each line also carries the inputs and the
 // structure triangulated from views 1-2 (points and lines, with the time that took), which is
 // what the PoseLib peers of the Python driver consume (for stereo: view 3, the left image at B, against
-// the structure triangulated from the rig at A; the time-B right image is dumped too).
+// the structure triangulated from the rig at A; the time-B right image is dumped too; "rig_inputs"
+// holds the same for every feature of the rig, NaN rows where a time-B view does not see one).
 
 #include <algorithm>
 #include <cmath>
@@ -603,6 +604,9 @@ int main(int argc, char** argv)
             line += "}";
             if (o.dumpInputs)
                 line += ",\"inputs\":" + inputsJson(left);
+            // The rig's peers that use both time-B views (generalized absolute pose) need every feature.
+            if (o.dumpInputs && p.stereo())
+                line += ",\"rig_inputs\":" + inputsJson(p);
             std::cout << line << "}\n" << std::flush;
         }
     }

@@ -56,9 +56,8 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
             detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
                                        distCoeffs, R12, t12, kMinStereoRansacFeatures);
         const detail::core::RansacOptions options = detail::toCoreOptions(params);
-        const detail::core::RigPoseSolver solver(views);
         detail::core::RobustEstimate estimate;
-        const bool found = detail::core::estimateRobust(views, solver, options, estimate);
+        const bool found = detail::core::estimateRobustRig(views, options, estimate);
         detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
                                         options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
                                         covariance, noiseVariance);

@@ -81,16 +81,16 @@ TEST(Tripose_HybridPoseSolver, mixed_samples_on_wide_baselines_contain_the_true_
         EXPECT_EQ(3, solver.sampleSize());
         const MixedSampling* sampling = solver.mixedSampling();
         ASSERT_TRUE(sampling != nullptr);
-        ASSERT_EQ(30u, sampling->points.size()) << "seed " << seed;
-        ASSERT_GE(sampling->lines.size(), 3u) << "seed " << seed;
+        ASSERT_EQ(30u, sampling->pools[0].points.size()) << "seed " << seed;
+        ASSERT_GE(sampling->pools[0].lines.size(), 3u) << "seed " << seed;
         ASSERT_EQ(4u, sampling->kinds.size());
         for (const MixedSampling::Kind& kind : sampling->kinds)
         {
             FeatureSubset sample;
             for (int k = 0; k < kind.points; ++k)
-                sample.points.push_back(sampling->points[(seed + 7 * k) % sampling->points.size()]);
+                sample.points.push_back(sampling->pools[0].points[(seed + 7 * k) % sampling->pools[0].points.size()]);
             for (int k = 0; k < kind.lines; ++k)
-                sample.lines.push_back(sampling->lines[(seed + k) % sampling->lines.size()]);
+                sample.lines.push_back(sampling->pools[0].lines[(seed + k) % sampling->pools[0].lines.size()]);
             std::vector<CameraPose> poses;
             ASSERT_GT(solver.estimateMinimal(sample, false, poses), 0)
                 << kind.points << "P" << kind.lines << "L, seed " << seed;
@@ -172,7 +172,7 @@ TEST(Tripose_HybridPoseSolver, line_samples_where_lines_dominate)
             EXPECT_EQ(3, sampling.kinds.back().lines);
             for (int i = 0; i < views.numLines; ++i)
             {
-                const bool pooled = std::find(sampling.lines.begin(), sampling.lines.end(), i) != sampling.lines.end();
+                const bool pooled = std::find(sampling.pools[0].lines.begin(), sampling.pools[0].lines.end(), i) != sampling.pools[0].lines.end();
                 const bool usable = scorer.hasKnownLine(i) &&
                                     ::tripose::linePlaneAngleDeg(views, i) >= ::tripose::kWeakLinePlaneAngleDeg;
                 EXPECT_EQ(usable, pooled) << "line " << i << " seed " << seed;

@@ -21,19 +21,21 @@ MixedSampling threeFeatureKinds(int points, int lines)
 {
     MixedSampling sampling;
     for (int p = 3; p >= 0; --p)
-        sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p, 1.0 });
+        sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p, 1.0, 0 });
+    sampling.pools.resize(1);
     for (int i = 0; i < points; ++i)
-        sampling.points.push_back(3 * i);
+        sampling.pools[0].points.push_back(3 * i);
     for (int i = 0; i < lines; ++i)
-        sampling.lines.push_back(3 * i + 1);
+        sampling.pools[0].lines.push_back(3 * i + 1);
     return sampling;
 }
 
 FeatureSubset firstOfPools(const MixedSampling& sampling, int points, int lines)
 {
     FeatureSubset subset;
-    subset.points.assign(sampling.points.begin(), sampling.points.begin() + points);
-    subset.lines.assign(sampling.lines.begin(), sampling.lines.begin() + lines);
+    const MixedSampling::Pool& pool = sampling.pools[0];
+    subset.points.assign(pool.points.begin(), pool.points.begin() + points);
+    subset.lines.assign(pool.lines.begin(), pool.lines.begin() + lines);
     return subset;
 }
 
@@ -53,7 +55,7 @@ TEST(Tripose_MixedSampler, samples_are_distinct_pool_features_of_one_kind)
         EXPECT_TRUE(kindFound);
         for (const std::vector<int>* drawn : { &sample.points, &sample.lines })
         {
-            const std::vector<int>& pool = drawn == &sample.points ? sampling.points : sampling.lines;
+            const std::vector<int>& pool = drawn == &sample.points ? sampling.pools[0].points : sampling.pools[0].lines;
             for (size_t a = 0; a < drawn->size(); ++a)
             {
                 EXPECT_NE(std::find(pool.begin(), pool.end(), (*drawn)[a]), pool.end());
@@ -140,9 +142,10 @@ TEST(Tripose_MixedSampler, the_model_s_own_sample_is_no_support)
 TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
 {
     MixedSampling points;
-    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
+    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0, 0 });
+    points.pools.resize(1);
     for (int i = 0; i < 100; ++i)
-        points.points.push_back(i);
+        points.pools[0].points.push_back(i);
     MixedSampler sampler(points, 1);
     sampler.setInliers(firstOfPools(points, 50, 0), FeatureSubset());
     const double p = 50.0 / 100 * 49.0 / 99 * 48.0 / 98;
@@ -187,11 +190,79 @@ TEST(Tripose_MixedSampler, same_seed_same_samples)
 TEST(Tripose_MixedSampler, no_sample_from_pools_too_small)
 {
     MixedSampling sampling;
-    sampling.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0 });
-    sampling.points = { 0, 1 };
+    sampling.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0, 0 });
+    sampling.pools.resize(1);
+    sampling.pools[0].points = { 0, 1 };
     MixedSampler sampler(sampling, 0);
     FeatureSubset sample;
     EXPECT_FALSE(sampler.next(sample));
+}
+
+// Two pools (the cameras of a stereo rig at time B): a sample's features all come from the pool of
+// its kind, and each kind's all-inlier probability is counted in its own pool.
+TEST(Tripose_MixedSampler, a_sample_comes_from_the_pool_of_its_kind)
+{
+    MixedSampling sampling;
+    sampling.pools.resize(2);
+    for (int i = 0; i < 40; ++i)
+    {
+        sampling.pools[0].points.push_back(i);       // points 0-39 and lines 0-19 in the first
+        sampling.pools[1].points.push_back(i + 20);  // points 20-59 and lines 10-29 in the second
+    }
+    for (int i = 0; i < 20; ++i)
+    {
+        sampling.pools[0].lines.push_back(i);
+        sampling.pools[1].lines.push_back(i + 10);
+    }
+    for (int pool = 0; pool < 2; ++pool)
+        for (int p = 3; p >= 0; --p)
+            sampling.kinds.push_back(MixedSampling::Kind{ p, 3 - p, 1.0, pool });
+    MixedSampler sampler(sampling, 5);
+    FeatureSubset sample;
+    int fromFirstOnly = 0, fromSecondOnly = 0;
+    for (int draw = 0; draw < 2000; ++draw)
+    {
+        ASSERT_TRUE(sampler.next(sample));
+        ASSERT_EQ(3, sample.size());
+        bool inFirst = true, inSecond = true;
+        for (int i : sample.points)
+        {
+            inFirst = inFirst && i < 40;
+            inSecond = inSecond && i >= 20;
+        }
+        for (int i : sample.lines)
+        {
+            inFirst = inFirst && i < 20;
+            inSecond = inSecond && i >= 10;
+        }
+        ASSERT_TRUE(inFirst || inSecond);
+        fromFirstOnly += inFirst && !inSecond;
+        fromSecondOnly += inSecond && !inFirst;
+    }
+    EXPECT_GT(fromFirstOnly, 100);
+    EXPECT_GT(fromSecondOnly, 100);
+
+    // Every feature of the second pool inlier, none of the first beyond the shared ones: the second
+    // pool's samples are certain, the first's are not, so the sampler is confident once it has
+    // drawn a sample of the second pool and not before.
+    FeatureSubset inliers;
+    for (int i = 20; i < 60; ++i)
+        inliers.points.push_back(i);
+    for (int i = 10; i < 30; ++i)
+        inliers.lines.push_back(i);
+    MixedSampler supported(sampling, 9);
+    supported.setInliers(inliers, FeatureSubset());
+    EXPECT_FALSE(supported.confident(0.999));
+    bool drewSecond = false;
+    for (int draw = 0; draw < 200 && !drewSecond; ++draw)
+    {
+        ASSERT_TRUE(supported.next(sample));
+        const std::vector<int>& counts = supported.samplesOfKind();
+        for (int k = 4; k < 8; ++k)
+            drewSecond = drewSecond || counts[k] > 0;
+        EXPECT_EQ(drewSecond, supported.confident(0.999));
+    }
+    EXPECT_TRUE(drewSecond);
 }
 
 } // namespace

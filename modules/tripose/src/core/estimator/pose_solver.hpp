@@ -13,20 +13,27 @@
 namespace tripose {
 
 /** Samples of several kinds, for a solver that solves minimal sets of points and lines mixed (as
-LIMAP's hybrid RANSAC does): a kind is so many points and so many lines, each drawn from its own
-pool of features that the solver can use in a minimal sample.
+LIMAP's hybrid RANSAC does): a kind is so many points and so many lines, each drawn from one pool of
+features that the solver can use together in a minimal sample. A problem with one estimated camera
+has one pool; a stereo rig at time B has one per camera (the features each of its cameras sees),
+and a sample is drawn from one of them.
 */
 struct MixedSampling
 {
+    struct Pool
+    {
+        std::vector<int> points, lines; //!< Point and line indices a sample of this pool may draw.
+    };
     struct Kind
     {
         int points;
         int lines;
         //! Time of a sample of this kind (its solve and the scoring of its poses), relative to the others.
         double cost;
+        int pool; //!< Index into pools.
     };
     std::vector<Kind> kinds;
-    std::vector<int> points, lines; //!< The pools: point and line indices a sample may draw.
+    std::vector<Pool> pools;
 };
 
 /** The seam between a pose problem and the robust estimator (as calib3d's USAC separates them): the

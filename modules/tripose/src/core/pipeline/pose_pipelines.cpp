@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../linear/rig_pose_solver.hpp"
 #include "../refine/multi_start_refinement.hpp"
 #include "../refine/multi_start_refiner.hpp"
 #include "../robust/hybrid_pose_solver.hpp"
@@ -84,10 +85,11 @@ bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& line
     return estimateRobust(views, scorer, solver, options, estimate);
 }
 
-bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
-                    RobustEstimate& estimate)
+bool estimateRobustRig(const ViewSet& views, const RansacOptions& options, RobustEstimate& estimate)
 {
-    const PoseScorer scorer(views);
+    const PoseScorer scorer(views, PoseScorer::KnownDepth::Slides);
+    const RigPoseSolver linear(views);
+    const HybridPoseSolver solver(views, scorer, linear);
     return estimateRobust(views, scorer, solver, options, estimate);
 }
 
@@ -97,10 +99,14 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     // Mixed minimal samples include three-line samples of the whole set, scored on all of it: they
     // find the basin of a line-dominated set as three-point samples do for points (doc/speed.md,
     // "Mixed samples of points and lines"), and the starts would cost a hundred times the rest.
-    // The structure's own regimes (narrow pair, planar) still call for them.
+    // The structure's own regimes (narrow pair, planar) still call for them, except where the
+    // scorer lets the known structure slide in depth (the stereo rig): its minimal samples then
+    // find the basin too, and the starts changed no result over 100 rig scenes at 10P+10L while
+    // they took 99 % of the time (doc/speed.md, "Stereo rig"); settling from all features, which
+    // costs one refinement, stays.
     const bool severalBasins =
         solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
-    const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins);
+    const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth());
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
         return true;
     estimate = RobustEstimate();

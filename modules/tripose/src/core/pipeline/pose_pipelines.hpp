@@ -35,16 +35,20 @@ that @p options asks for. @p options must be valid (checkRansacOptions()). Retur
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                     const RansacOptions& options, RobustEstimate& estimate);
 
-//! estimateRobust() with the scorer built from @p views.
-bool estimateRobust(const ViewSet& views, const PoseSolver& solver, const RansacOptions& options,
-                    RobustEstimate& estimate);
-
 /** The robust estimate of one estimated view on the structure of known views (three views, several
 known views): the hybrid sample solver (robust/hybrid_pose_solver.hpp) over @p linear, its minimal
 samples solved on the structure that the scorer triangulates from the known views.
 */
 bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& linear, const RansacOptions& options,
                                     RobustEstimate& estimate);
+
+/** The robust estimate of a stereo rig's pose at time B (linear/rig_system.hpp's layout): the hybrid
+sample solver over the rig's linear solver, its minimal samples drawn from the features of one
+time-B camera at a time and solved on the structure of the rig at time A, every hypothesis scored
+with that structure free to slide along the rays of view 1 (PoseScorer::KnownDepth::Slides): the
+rig's short baseline places it poorly in depth.
+*/
+bool estimateRobustRig(const ViewSet& views, const RansacOptions& options, RobustEstimate& estimate);
 
 /** Refines @p pose (in place) and the structure over every view of @p views; @p options must be
 valid (checkRefineOptions()). @p covariance, when given, receives the uncertainty of the refined

@@ -26,9 +26,13 @@ public:
 
     /** @p severalBasins: whether the problem has several basins (scoring/known_structure.hpp);
     without, one refinement from the estimator's pose reaches the optimum and the starts would only
-    cost time. */
-    MultiStartRefiner(const ViewSet& set, const RefineOptions& params, const PoseSolver* solver, bool severalBasins)
-        : set_(set), params_(params), solver_(solver), severalBasins_(severalBasins)
+    cost time. @p searchStarts: whether to refine from the starts there; a problem whose samples
+    already find the basin (the stereo rig's, scored with the known depth sliding) settles from
+    all features (searchesSeveralBasins()) without them. */
+    MultiStartRefiner(const ViewSet& set, const RefineOptions& params, const PoseSolver* solver, bool severalBasins,
+                      bool searchStarts = true)
+        : set_(set), params_(params), solver_(solver), severalBasins_(severalBasins),
+          searchStarts_(severalBasins && searchStarts)
     {}
 
     bool searchesSeveralBasins() const override { return severalBasins_; }
@@ -38,7 +42,7 @@ public:
         // Fewer than three features leave the pose and structure under-determined.
         if (inliers.size() < 3)
             return false;
-        if (!severalBasins_ || inliers.size() > kMaxMultiStartFeatures)
+        if (!searchStarts_ || inliers.size() > kMaxMultiStartFeatures)
         {
             refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
             return true;
@@ -76,7 +80,7 @@ private:
     const ViewSet& set_;
     const RefineOptions& params_;
     const PoseSolver* solver_;
-    bool severalBasins_;
+    bool severalBasins_, searchStarts_;
     mutable LastRefinement last_;
 };
 

@@ -5,34 +5,47 @@
 #ifndef OPENCV_TRIPOSE_ROBUST_HYBRID_POSE_SOLVER_HPP
 #define OPENCV_TRIPOSE_ROBUST_HYBRID_POSE_SOLVER_HPP
 
+#include <vector>
+
 #include "../scoring/pose_scorer.hpp"
 #include "../estimator/pose_solver.hpp"
 
 namespace tripose {
 
-/** The three-view problem's sample solver for the robust estimator: minimal absolute-pose samples of
-view 3 on the structure that the PoseScorer triangulated from views 1-2 where that structure is
-good, the unified linear method's four-feature samples otherwise.
+/** The sample solver for the robust estimator of the problems that absolute-pose the estimated
+camera(s) on the structure of known views (the three-view problem, registration against several
+known views, the stereo rig at time B): minimal samples on the structure that the PoseScorer
+triangulated from the known views where that structure serves, the problem's linear solver's
+samples otherwise.
 
-With the points and lines of views 1-2 triangulated, three features of view 3 are a minimal
-absolute-pose problem: three points (solveP3P), two points and a line (solveP2P1L), a point and two
-lines (solveP1P2L) or three lines (solveP3L), each a sample of three instead of four features and a
-solver far cheaper than the linear one's degree-11 polynomial. From kMinMixedFeatures features with
-structure on, samples of all four kinds are drawn (mixedSampling(), MixedSampler), each kind in
-proportion to its probability of being all inliers: where the lines are plentiful or the reliable
-matches, the samples are mostly lines. Lines whose known planes meet at a grazing angle
+With the points and lines of the known views triangulated, three features of an estimated camera
+are a minimal absolute-pose problem: three points (solveP3P), two points and a line (solveP2P1L), a
+point and two lines (solveP1P2L) or three lines (solveP3L), each a sample of three instead of four
+features and a solver far cheaper than the linear one's degree-11 polynomial. From kMinMixedFeatures
+features with structure on, samples of all four kinds are drawn (mixedSampling(), MixedSampler),
+each kind in proportion to its probability of being all inliers: where the lines are plentiful or
+the reliable matches, the samples are mostly lines. Lines whose known planes meet at a grazing angle
 (kWeakLinePlaneAngleDeg) are left out of the samples. Every feature votes in every score, and the
 local optimisation and estimateNonMinimal() use the linear solver on every inlier, so the final
 pose is the linear method's on the consensus set.
 
-Smaller sets keep the single-kind samples whose every distinct sample the estimator enumerates
-(SampleGenerator): three points (P3P) when there are at least kMinPoints with structure and they
-are a quarter of the features, else four features for the linear solver.
+A stereo rig at time B has two estimated cameras, each seeing part of the features: each has its
+own pools, a sample is drawn from one of them and solved in a camera that sees it all, and the pose
+of that camera is taken back to the estimated one through its mount.
 
-The four-feature linear sample stays the solver when views 1-2 triangulate poorly: a narrow
-baseline (median triangulation angle below kWeakTriangulationAngleDeg, scoring/known_structure.hpp),
-where the depths of the triangulated structure carry an error that the linear method, which never
-triangulates, avoids.
+Smaller sets keep samples of three points (P3P) when there are at least kMinPoints with structure
+and they are a quarter of the features: every distinct triple, enumerated (SampleGenerator), for one
+estimated camera; per camera, drawn by the mixed sampler with the three-point kinds alone, for a
+rig. Otherwise the samples are the linear solver's. Three lines of the structure within
+kParallelLinesDeg of one direction are no sample: the pose is then fixed only by their
+differences in direction, of the order of the structure's error.
+
+The linear sample stays the solver when the known views triangulate poorly (a narrow baseline:
+median triangulation angle below kWeakTriangulationAngleDeg, scoring/known_structure.hpp) and the
+scorer holds their structure fixed: the depths of that structure carry an error that the linear
+method, which never triangulates, avoids. A scorer that lets the depths slide
+(PoseScorer::KnownDepth::Slides, the stereo rig's) judges the minimal samples' poses without that
+error.
 */
 class HybridPoseSolver : public PoseSolver
 {
@@ -62,6 +75,8 @@ public:
     {
         return sampling_ == Sampling::PointTriples ? set_.numPoints : numFeatures;
     }
+    //! The estimated cameras (view indices) whose observations the minimal samples use.
+    const std::vector<int>& cameras() const { return cameras_; }
     const MixedSampling* mixedSampling() const override
     {
         return sampling_ == Sampling::Mixed ? &mixed_ : nullptr;
@@ -76,6 +91,7 @@ private:
     const ViewSet& set_;
     const PoseScorer& scorer_;
     const PoseSolver& linear_;
+    std::vector<int> cameras_;
     Sampling sampling_ = Sampling::Linear;
     MixedSampling mixed_;
 };

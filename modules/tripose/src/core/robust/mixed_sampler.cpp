@@ -39,14 +39,20 @@ std::vector<unsigned char> membership(const std::vector<int>& pool)
 } // namespace
 
 MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
-    : sampling_(sampling), rng_(seed), inPointPool_(membership(sampling.points)),
-      inLinePool_(membership(sampling.lines)), drawn_(sampling.kinds.size(), 0), weights_(sampling.kinds.size(), 0.0)
-{}
+    : sampling_(sampling), rng_(seed), pools_(sampling.pools.size()), drawn_(sampling.kinds.size(), 0),
+      weights_(sampling.kinds.size(), 0.0)
+{
+    for (size_t k = 0; k < pools_.size(); ++k)
+    {
+        pools_[k].hasPoint = membership(sampling.pools[k].points);
+        pools_[k].hasLine = membership(sampling.pools[k].lines);
+    }
+}
 
 void MixedSampler::setInliers(const FeatureSubset& inliers, const FeatureSubset& sample)
 {
     const auto count = [](const std::vector<int>& inliers, const std::vector<int>& sample,
-                          const std::vector<unsigned char>& pool, PoolSupport& support) {
+                          const std::vector<unsigned char>& pool, Support& support) {
         int all = 0, own = 0;
         for (int i : inliers)
             if (i < (int)pool.size() && pool[i])
@@ -58,28 +64,36 @@ void MixedSampler::setInliers(const FeatureSubset& inliers, const FeatureSubset&
         support.beyondSample = all - own;
         support.sampleInliers = own;
     };
-    count(inliers.points, sample.points, inPointPool_, points_);
-    count(inliers.lines, sample.lines, inLinePool_, lines_);
+    for (PoolState& pool : pools_)
+    {
+        count(inliers.points, sample.points, pool.hasPoint, pool.points);
+        count(inliers.lines, sample.lines, pool.hasLine, pool.lines);
+    }
 }
 
 double MixedSampler::successProbability(int k) const
 {
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    return allGood(points_.inliers, (int)sampling_.points.size(), kind.points) *
-           allGood(lines_.inliers, (int)sampling_.lines.size(), kind.lines);
+    const MixedSampling::Pool& pool = sampling_.pools[kind.pool];
+    const PoolState& state = pools_[kind.pool];
+    return allGood(state.points.inliers, (int)pool.points.size(), kind.points) *
+           allGood(state.lines.inliers, (int)pool.lines.size(), kind.lines);
 }
 
 double MixedSampler::choiceWeight(int k) const
 {
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    return allGood(points_.beyondSample, (int)sampling_.points.size() - points_.sampleInliers, kind.points) *
-           allGood(lines_.beyondSample, (int)sampling_.lines.size() - lines_.sampleInliers, kind.lines);
+    const MixedSampling::Pool& pool = sampling_.pools[kind.pool];
+    const PoolState& state = pools_[kind.pool];
+    return allGood(state.points.beyondSample, (int)pool.points.size() - state.points.sampleInliers, kind.points) *
+           allGood(state.lines.beyondSample, (int)pool.lines.size() - state.lines.sampleInliers, kind.lines);
 }
 
 bool MixedSampler::canDraw(int k) const
 {
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    return kind.points <= (int)sampling_.points.size() && kind.lines <= (int)sampling_.lines.size();
+    const MixedSampling::Pool& pool = sampling_.pools[kind.pool];
+    return kind.points <= (int)pool.points.size() && kind.lines <= (int)pool.lines.size();
 }
 
 int MixedSampler::chooseKind()
@@ -135,8 +149,9 @@ bool MixedSampler::next(FeatureSubset& sample)
     const int k = chooseKind();
     if (k < 0)
         return false;
-    drawDistinct(sampling_.points, sampling_.kinds[k].points, sample.points);
-    drawDistinct(sampling_.lines, sampling_.kinds[k].lines, sample.lines);
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    drawDistinct(sampling_.pools[kind.pool].points, kind.points, sample.points);
+    drawDistinct(sampling_.pools[kind.pool].lines, kind.lines, sample.lines);
     ++drawn_[k];
     return true;
 }

@@ -43,8 +43,8 @@ public:
     //! Chooses a kind and draws its sample into @p sample; false when no kind can be drawn.
     bool next(FeatureSubset& sample);
 
-    /** Sets the inliers of the best model (any features; those outside the pools are ignored) and
-    the sample it was estimated from. */
+    /** Sets the inliers of the best model (any features; in each pool those outside it are ignored)
+    and the sample it was estimated from. */
     void setInliers(const FeatureSubset& inliers, const FeatureSubset& sample);
 
     //! True when an all-inlier sample is among those drawn with at least @p confidence.
@@ -62,19 +62,25 @@ private:
     int chooseKind();
     void drawDistinct(const std::vector<int>& pool, int count, std::vector<int>& out);
 
-    const MixedSampling& sampling_;
-    Random rng_;
-    std::vector<unsigned char> inPointPool_, inLinePool_; //!< Pool membership by feature index.
-    std::vector<int> drawn_;
-    std::vector<double> weights_;
-    //! The best model's inliers in one pool (setInliers()).
-    struct PoolSupport
+    //! The best model's inliers among the points or the lines of one pool (setInliers()).
+    struct Support
     {
         int inliers = 0;       //!< All of them, or 0 when they are only its sample's features.
         int beyondSample = 0;  //!< Those that are not features of its sample.
         int sampleInliers = 0; //!< Features of its sample among them.
     };
-    PoolSupport points_, lines_;
+    //! One pool's membership by feature index, and the best model's support there.
+    struct PoolState
+    {
+        std::vector<unsigned char> hasPoint, hasLine;
+        Support points, lines;
+    };
+
+    const MixedSampling& sampling_;
+    Random rng_;
+    std::vector<PoolState> pools_;
+    std::vector<int> drawn_;
+    std::vector<double> weights_;
 };
 
 } // namespace tripose

@@ -29,6 +29,9 @@ constexpr int kMaxSettleFromAll = 60;
 // against this multiple of the user's threshold. The final inliers use residuals with the feature
 // re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
+// Mixed samples stop after this many if none gave a pose: every kind the pools allow is then
+// degenerate there (parallel lines alone), and drawing more would run to the iteration limit.
+constexpr int kMaxSamplesWithoutPose = 200;
 
 class RobustEstimator
 {
@@ -53,7 +56,9 @@ public:
         // Then the solver's estimate over all features, ranked by the scorer, goes on to the
         // re-triangulated inlier test below.
         bool haveModel = std::isfinite(best_.cost) && best_.inliers > 0;
-        if (!haveModel && enumerated)
+        // Likewise when no mixed sample gave a pose at all (pools whose samples are all degenerate,
+        // e.g. parallel lines alone).
+        if (!haveModel && (enumerated || (mixed && !sampledPose_)))
             haveModel = adoptAllFeatureEstimate();
         if (!haveModel)
             return false;
@@ -111,6 +116,8 @@ private:
         int iteration = 0;
         for (; iteration < params_.maxIterations && samples.next(sample); ++iteration)
         {
+            if (!sampledPose_ && iteration >= kMaxSamplesWithoutPose)
+                break;
             if (tryMinimalSample(sample, false))
                 samples.setInliers(bestInliers_, sample);
             if (samples.confident(params_.confidence))
@@ -128,6 +135,7 @@ private:
     {
         candidates_.clear();
         solver_.estimateMinimal(sample, exhaustive, candidates_);
+        sampledPose_ = sampledPose_ || !candidates_.empty();
         if (!keepBest(candidates_))
             return false;
         if (params_.localOptimization)
@@ -244,11 +252,10 @@ private:
         return count;
     }
 
-    //! Inlier features of the best model among those samples are drawn from.
+    //! Inlier features of the best model among those samples are drawn from (features, not
+    //! observations: a feature seen by both cameras of a rig counts once).
     int inliersInPool() const
     {
-        if (pool_ == numFeatures_)
-            return best_.inliers;
         int count = 0;
         for (int i : bestInliers_.points)
             count += i < pool_;
@@ -279,6 +286,7 @@ private:
     const RansacOptions& params_;
     const double samplingThreshold_;
     int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
+    bool sampledPose_ = false; //!< Some minimal sample gave a pose.
     std::vector<double> pointResiduals_, lineResiduals_;
     std::vector<CameraPose> candidates_;
     PoseScore best_ = worstScore();

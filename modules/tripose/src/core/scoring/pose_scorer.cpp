@@ -18,14 +18,48 @@
 
 namespace tripose {
 
+namespace {
+
+// A slide divides an inverse depth by at most this much (10 times the depth): the feature stays
+// in front of the first known view, well short of infinity.
+constexpr double kMinInverseDepthShare = 0.1;
+// The end points of a line slide together only where their two depths are pinned down: the
+// 2x2 system of the slide is solved when det / trace^2 exceeds this.
+constexpr double kSlideConditioning = 1e-10;
+// Gauss-Newton steps of a slide: a feature that a short known baseline leaves loose in depth may
+// move by a large part of it, where one linearisation of the projection falls short.
+constexpr int kSlideIterations = 3;
+
+/** Moment, in a camera, of the line through the points at inverse depths rho on two rays from one
+origin (e: the origin in the camera; fA, fB: the rays' directions rotated into it), times
+rhoA rhoB: (rhoA e + fA) x (rhoB e + fB) = rhoA (e x fB) + rhoB (fA x e) + fA x fB, linear in rho. */
+Eigen::Vector3d slidMoment(const Eigen::Vector3d& e, const Eigen::Vector3d& fA, const Eigen::Vector3d& fB,
+                           const Eigen::Vector2d& rho)
+{
+    return rho(0) * e.cross(fB) + rho(1) * fA.cross(e) + fA.cross(fB);
+}
+
+} // namespace
+
 double PoseScore::rms() const
 {
     return residuals > 0 ? std::sqrt(sumSquares / residuals) : std::numeric_limits<double>::infinity();
 }
 
-PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * set.knownBaseline())
+PoseScorer::PoseScorer(const ViewSet& set, KnownDepth depth)
+    : set_(set), slides_(depth == KnownDepth::Slides), minDepth_(1e-9 * set.knownBaseline())
 {
     triangulateKnown();
+    // A feature's slide is the same for every estimated view: computed once.
+    std::vector<KnownSlide<1>> pointSlides(slides_ ? set.numPoints : 0);
+    std::vector<KnownSlide<2>> lineSlides(slides_ ? set.numLines : 0);
+    const std::vector<CameraPose> knownPoses = viewPoses(set, CameraPose());
+    for (int i = 0; i < (int)pointSlides.size(); ++i)
+        if (pointValid_[i])
+            knownPointSlide(knownPoses, i, pointSlides[i]);
+    for (int i = 0; i < (int)lineSlides.size(); ++i)
+        if (lineValid_[i])
+            knownLineSlide(knownPoses, i, lineSlides[i]);
     for (int v = 0; v < (int)set.views.size(); ++v)
     {
         const View& view = set.views[v];
@@ -44,6 +78,8 @@ PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * set.kno
             }
             PointTerm term = { i, points_[i], view.points[i] };
             e.points.push_back(term);
+            if (slides_)
+                e.pointSlides.push_back(pointSlides[i]);
         }
         for (int i = 0; i < set.numLines; ++i)
         {
@@ -62,6 +98,8 @@ PoseScorer::PoseScorer(const ViewSet& set) : set_(set), minDepth_(1e-9 * set.kno
                               view.calibratedLineEnd(i, 0),
                               view.calibratedLineEnd(i, 1) };
             e.lines.push_back(term);
+            if (slides_)
+                e.lineSlides.push_back(lineSlides[i]);
         }
         estimated_.push_back(e);
     }
@@ -141,13 +179,18 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
         const Intrinsics& camera = view.camera;
         s.cost += e.unmeasured * threshold2;
         Eigen::Vector2d r;
-        for (const PointTerm& term : e.points)
+        for (size_t k = 0; k < e.points.size(); ++k)
         {
+            const PointTerm& term = e.points[k];
             ++s.considered;
-            double r2 = threshold2;
-            if (pointResidual(camera, p.toCamera(term.X), term.observed, r))
+            double r2 = threshold2, e2 = 0;
+            bool measured;
+            if (slides_)
+                measured = slidPointResidual2(camera, p, term, e.pointSlides[k], e2);
+            else if ((measured = pointResidual(camera, p.toCamera(term.X), term.observed, r)))
+                e2 = r.squaredNorm();
+            if (measured)
             {
-                const double e2 = r.squaredNorm();
                 s.sumSquares += e2;
                 ++s.residuals;
                 if (e2 < threshold2)
@@ -167,18 +210,27 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
                 return s;
             }
         }
-        for (const LineTerm& term : e.lines)
+        for (size_t k = 0; k < e.lines.size(); ++k)
         {
+            const LineTerm& term = e.lines[k];
             s.considered += 2;
-            double r2 = threshold2;
-            const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
-            const Eigen::Vector3d moment = a.cross(b);
-            // The residuals alone would accept the line reflected through the camera centre.
-            const bool behind = segmentBehindCamera(moment, b - a, term.calibratedEnd0, term.calibratedEnd1);
-            s.behind += behind ? 2 : 0;
-            if (!behind && lineResidual(camera, moment, term.end0, term.end1, r))
+            double r2 = threshold2, e2 = 0;
+            bool measured, behind = false;
+            if (slides_)
+                measured = slidLineResidual2(camera, p, term, e.lineSlides[k], e2, behind);
+            else
             {
-                const double e2 = r.squaredNorm();
+                const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
+                const Eigen::Vector3d moment = a.cross(b);
+                // The residuals alone would accept the line reflected through the camera centre.
+                behind = segmentBehindCamera(moment, b - a, term.calibratedEnd0, term.calibratedEnd1);
+                measured = !behind && lineResidual(camera, moment, term.end0, term.end1, r);
+                if (measured)
+                    e2 = r.squaredNorm();
+            }
+            s.behind += behind ? 2 : 0;
+            if (measured)
+            {
                 s.sumSquares += e2;
                 s.residuals += 2;
                 if (0.5 * e2 < threshold2)
@@ -200,6 +252,156 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
     if (inliers && estimated_.size() > 1)
         inliers->removeDuplicates();
     return s;
+}
+
+void PoseScorer::knownPointSlide(const std::vector<CameraPose>& poses, int i, KnownSlide<1>& slide) const
+{
+    slide.H.setZero();
+    slide.g.setZero();
+    bool first = true;
+    for (size_t v = 0; v < set_.views.size(); ++v)
+    {
+        const View& view = set_.views[v];
+        if (view.estimated || !view.seesPoint(i))
+            continue;
+        if (first)
+        {
+            slide.origin = poses[v].centre();
+            const Eigen::Vector3d ray = points_[i] - slide.origin;
+            slide.inverseDepth(0) = 1.0 / ray.norm();
+            slide.rays.col(0) = ray * slide.inverseDepth(0);
+            first = false;
+        }
+        // The point in this camera, times the inverse depth: rho e + f (slidEnds()).
+        const Eigen::Vector3d e = poses[v].toCamera(slide.origin), f = poses[v].R * slide.rays.col(0);
+        Eigen::Vector2d r;
+        Matrix23d J;
+        if (!pointResidual(view.camera, slide.inverseDepth(0) * e + f, view.points[i], r, &J))
+            continue;
+        const Eigen::Vector2d d = J * e;
+        slide.H(0, 0) += d.squaredNorm();
+        slide.g(0) += d.dot(r);
+    }
+}
+
+void PoseScorer::knownLineSlide(const std::vector<CameraPose>& poses, int i, KnownSlide<2>& slide) const
+{
+    slide.H.setZero();
+    slide.g.setZero();
+    bool first = true;
+    for (size_t v = 0; v < set_.views.size(); ++v)
+    {
+        const View& view = set_.views[v];
+        if (view.estimated || !view.seesLine(i))
+            continue;
+        if (first)
+        {
+            // The end points lie on the first known view's rays through its observed end points.
+            slide.origin = poses[v].centre();
+            for (int end = 0; end < 2; ++end)
+            {
+                const Eigen::Vector3d ray = lineEnds_[2 * i + end] - slide.origin;
+                slide.inverseDepth(end) = 1.0 / ray.norm();
+                slide.rays.col(end) = ray * slide.inverseDepth(end);
+            }
+            first = false;
+        }
+        const Eigen::Vector3d e = poses[v].toCamera(slide.origin);
+        const Eigen::Vector3d fA = poses[v].R * slide.rays.col(0), fB = poses[v].R * slide.rays.col(1);
+        Eigen::Vector2d r;
+        Matrix23d Jm;
+        if (!lineResidual(view.camera, slidMoment(e, fA, fB, slide.inverseDepth), view.lineEnds[2 * i],
+                          view.lineEnds[2 * i + 1], r, &Jm))
+            continue;
+        Eigen::Matrix2d J;
+        J.col(0) = Jm * e.cross(fB);
+        J.col(1) = Jm * fA.cross(e);
+        slide.H += J.transpose() * J;
+        slide.g += J.transpose() * r;
+    }
+}
+
+bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& pose, const PointTerm& term,
+                                    const KnownSlide<1>& slide, double& r2) const
+{
+    // In a camera at pose, the point at inverse depth rho on the ray (origin c, direction u) is
+    // (R c + t) + R u / rho: rho e + f up to the scale its projection ignores.
+    const Eigen::Vector3d e = pose.toCamera(slide.origin), f = pose.R * slide.rays.col(0);
+    const double rho0 = slide.inverseDepth(0);
+    Eigen::Vector2d r;
+    Matrix23d Jh;
+    if (!pointResidual(camera, rho0 * e + f, term.observed, r, &Jh, 0.0))
+        return false;
+    r2 = r.squaredNorm();
+    double rho = rho0;
+    for (int iteration = 0; iteration < kSlideIterations; ++iteration)
+    {
+        if (iteration > 0 && !pointResidual(camera, rho * e + f, term.observed, r, &Jh, 0.0))
+            return true;
+        // Gauss-Newton on |r(rho)|^2 plus the known views' growth H (rho - rho0)^2 + 2 g (rho - rho0).
+        const Eigen::Vector2d J = Jh * e;
+        const double a = J.squaredNorm() + slide.H(0, 0), b = J.dot(r) + slide.H(0, 0) * (rho - rho0) + slide.g(0);
+        if (!(a > 0))
+            break;
+        // The point stays in front of the first known view (rho > 0; rho = 0 is the point at infinity).
+        rho = std::max(rho - b / a, kMinInverseDepthShare * rho0);
+    }
+    Eigen::Vector2d rs;
+    if (pointResidual(camera, rho * e + f, term.observed, rs, nullptr, 0.0))
+    {
+        const double step = rho - rho0;
+        r2 = std::min(r2, std::max(0.0, rs.squaredNorm() + slide.H(0, 0) * step * step + 2 * slide.g(0) * step));
+    }
+    return true;
+}
+
+bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& pose, const LineTerm& term,
+                                   const KnownSlide<2>& slide, double& r2, bool& behind) const
+{
+    const Eigen::Vector3d e = pose.toCamera(slide.origin);
+    const Eigen::Vector3d fA = pose.R * slide.rays.col(0), fB = pose.R * slide.rays.col(1);
+    // The line through the end points at inverse depths rho: its moment is linear in rho
+    // (slidMoment()), its direction times rhoA rhoB is rhoA fB - rhoB fA.
+    const auto behindAt = [&](const Eigen::Vector2d& rho) {
+        return segmentBehindCamera(slidMoment(e, fA, fB, rho), rho(0) * fB - rho(1) * fA, term.calibratedEnd0,
+                                   term.calibratedEnd1);
+    };
+    const Eigen::Vector2d rho0 = slide.inverseDepth;
+    Eigen::Vector2d r;
+    Matrix23d Jm;
+    // A segment seen behind the camera from the triangulated structure stays so: a slide could
+    // carry it through infinity to the other side.
+    behind = behindAt(rho0);
+    if (behind || !lineResidual(camera, slidMoment(e, fA, fB, rho0), term.end0, term.end1, r, &Jm))
+        return false;
+    r2 = r.squaredNorm();
+    Eigen::Vector2d rho = rho0;
+    for (int iteration = 0; iteration < kSlideIterations; ++iteration)
+    {
+        if (iteration > 0 && !lineResidual(camera, slidMoment(e, fA, fB, rho), term.end0, term.end1, r, &Jm))
+            break;
+        Eigen::Matrix2d J;
+        J.col(0) = Jm * e.cross(fB);
+        J.col(1) = Jm * fA.cross(e);
+        const Eigen::Matrix2d M = J.transpose() * J + slide.H;
+        const Eigen::Vector2d v = J.transpose() * r + slide.H * (rho - rho0) + slide.g;
+        const double det = M.determinant(), trace = M.trace();
+        if (!(det > kSlideConditioning * trace * trace))
+            break;
+        Eigen::Matrix2d inverse;
+        inverse << M(1, 1), -M(0, 1), -M(1, 0), M(0, 0);
+        const Eigen::Vector2d next = rho - (inverse * v) / det;
+        for (int end = 0; end < 2; ++end)
+            rho(end) = std::max(next(end), kMinInverseDepthShare * rho0(end));
+    }
+    Eigen::Vector2d rs;
+    if (!behindAt(rho) && lineResidual(camera, slidMoment(e, fA, fB, rho), term.end0, term.end1, rs))
+    {
+        const Eigen::Vector2d step = rho - rho0;
+        const double slid2 = rs.squaredNorm() + step.dot(slide.H * step) + 2 * slide.g.dot(step);
+        r2 = std::min(r2, std::max(0.0, slid2));
+    }
+    return true;
 }
 
 void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,

@@ -43,6 +43,14 @@ of the estimated views that see each feature. The squared residual r^2 of an obs
 point, its squared pixel distance, and for a line the mean of the squared distances of its two
 observed end points to the projected line.
 
+With KnownDepth::Slides, the known structure is not held fixed: each observation of an estimated
+view is scored with its feature moved along the rays of the first known view that sees it (a point
+by one depth, a line by the depths of its two end points) to where that observation and the known
+views' agree best, to first order: the residual minimised over those depths, the known views'
+residuals included. A short known baseline (the rig at time A of a stereo rig) places structure
+well across its rays and poorly along them, and an estimated camera that moved along the baseline's
+normal sees that depth error as pixels: scored against fixed structure a good pose loses inliers.
+
 refitResiduals() judges a pose instead by re-triangulating every feature from all views, the
 estimated ones at that pose: it does not carry the triangulation error of the known views into the
 estimated ones, at the price of a triangulation per feature and pose.
@@ -50,7 +58,16 @@ estimated ones, at the price of a triangulation per feature and pose.
 class PoseScorer
 {
 public:
-    explicit PoseScorer(const ViewSet& set);
+    enum class KnownDepth
+    {
+        Fixed,  //!< The structure of the known views as triangulated.
+        Slides, //!< Its depth along the first known view's rays refit per observation (see above).
+    };
+
+    explicit PoseScorer(const ViewSet& set, KnownDepth depth = KnownDepth::Fixed);
+
+    //! True when scores let the known structure's depth slide (KnownDepth::Slides).
+    bool slidesKnownDepth() const { return slides_; }
 
     /** Score of @p pose of the estimated camera with inlier threshold @p threshold (px; +inf: plain
     least squares, nothing truncated). Scoring stops, with cost +inf, as soon as the cost exceeds
@@ -80,6 +97,20 @@ public:
     bool hasKnownLine(int i) const { return lineValid_[i] != 0; }
 
 private:
+    /** A feature of the known structure free to slide along the rays of the first known view that
+    sees it: a point by its inverse depth, a line by those of its two end points (inverse depth
+    keeps the projections into the other views close to linear, and covers every depth in front of
+    that view). The known views' residuals grow, to first order about the triangulated position,
+    by s^T H s + 2 g^T s for a change s of the inverse depths. */
+    template <int N>
+    struct KnownSlide
+    {
+        Eigen::Vector3d origin;                    //!< Centre of the first known view.
+        Eigen::Matrix<double, 3, N> rays;          //!< Unit directions from it (world frame).
+        Eigen::Matrix<double, N, 1> inverseDepth;  //!< Of the triangulated position along each ray.
+        Eigen::Matrix<double, N, N> H;
+        Eigen::Matrix<double, N, 1> g;
+    };
     struct PointTerm
     {
         int feature;
@@ -99,12 +130,26 @@ private:
         int view;
         std::vector<PointTerm> points;
         std::vector<LineTerm> lines;
+        //! With KnownDepth::Slides, the slide of each term's feature (kept apart so that fixed
+        //! structure scores over the terms alone).
+        std::vector<KnownSlide<1>> pointSlides;
+        std::vector<KnownSlide<2>> lineSlides;
         int unmeasured = 0;
     };
 
     void triangulateKnown();
+    void knownPointSlide(const std::vector<CameraPose>& poses, int i, KnownSlide<1>& slide) const;
+    void knownLineSlide(const std::vector<CameraPose>& poses, int i, KnownSlide<2>& slide) const;
+    /** Squared residual (px^2, both coordinates or both end-point distances) of @p term in a view at
+    @p pose with its structure slid (KnownDepth::Slides); false when it cannot be measured, with
+    @p behind set when that is because the feature is behind the camera. */
+    bool slidPointResidual2(const Intrinsics& camera, const CameraPose& pose, const PointTerm& term,
+                            const KnownSlide<1>& slide, double& r2) const;
+    bool slidLineResidual2(const Intrinsics& camera, const CameraPose& pose, const LineTerm& term,
+                           const KnownSlide<2>& slide, double& r2, bool& behind) const;
 
     const ViewSet& set_;
+    bool slides_;
     double minDepth_;
     std::vector<Eigen::Vector3d> points_, lineEnds_;
     std::vector<unsigned char> pointValid_, lineValid_;
