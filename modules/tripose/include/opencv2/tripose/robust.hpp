@@ -82,6 +82,18 @@ optimisation's pose is not the maximum-likelihood estimate that the covariance d
 pose was found and when the pose is not determined.
 @param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
 from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
+@param candidateRs Optional output: with RansacParams::refine, the returned rotation first, then
+those of the other minima of the cost that the final refinement reached and that the data cannot
+tell apart from it (3x3 CV_64F each, lowest cost first): their sum of squared residuals over the
+inliers exceeds the returned pose's by less than 12.59 (the 95 % quantile of chi-square with 6
+degrees of freedom) times the noise variance estimated at it, so they lie inside the pose's 95 %
+likelihood-ratio confidence region (doc/conventions.md, "Several minima"). More than one: the pose
+is ambiguous, as with a narrow baseline of views 1-2, and a tracker should wait for more parallax
+rather than trust the first. Only the returned pose where the refinement searched one basin (see
+above: a wide baseline, or more than 60 inliers); empty without refinement or when no pose was found.
+@param candidateTs Optional output: the matching translations (3x1 CV_64F).
+@param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
+(px, CV_64F) over the inliers in the three views after refinement.
 @return The number of inliers (points + lines) of the returned pose; 0 when no pose was found
 (then R and t are empty and the masks all zero).
 
@@ -96,7 +108,9 @@ CV_EXPORTS_W int estimatePoseLinePointRansac(
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
     OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
-    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
+    OutputArray reprojectionErrors = noArray());
 
 //! @}
 
