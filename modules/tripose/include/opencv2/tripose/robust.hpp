@@ -66,10 +66,13 @@ RANSAC over minimal samples, with:
   three rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
   structure; also under a quarter of the features points, on sets that do not draw the samples of
   points and lines mixed), with at most 60 inliers the refinement also starts from the linear
-  solution on the inliers and from 26 starts that keep the rotation and move view 3's centre around
-  view 1, each re-triangulated until it settles, and keeps the lowest cost; with at most 60
-  features the same is done from all features too, and the lower truncated cost of the two wins.
-  There a single refinement leaves the pose in another local minimum in many scenes.
+  solution on the inliers, from up to six poses of distinct rotations from four-inlier subsets (as
+  in estimatePoseLinePoint() with #POSE_LINEAR_REFINE) and from 26 starts that keep the rotation and
+  move view 3's centre around view 1 (repeated around the best minimum when its rotation moved),
+  each re-triangulated until it settles, and keeps the lowest cost; with at most 60 features the
+  same is done from all features too, and the lower truncated cost of the two wins. There a single
+  refinement leaves the pose in another local minimum in many scenes. The other minima it reaches
+  that the noise cannot tell from the returned one are reported in @p candidateRs.
 
 Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.

@@ -10,7 +10,6 @@
 
 #include "../support/error.hpp"
 
-#include "../geometry/rotation.hpp"
 #include "multi_start_refinement.hpp"
 
 namespace tripose {
@@ -26,8 +25,6 @@ constexpr double kSameRms = 1e-9;
 // differs from the first start's by more than this (Frobenius norm of the difference, about 0.4
 // degrees): closer, the starts would be the same ones again.
 constexpr double kRecentreRotation = 1e-2;
-// The turn of the rotated starts around the best minimum (10 degrees).
-constexpr double kTurnRadians = 10.0 * M_PI / 180.0;
 
 int countUsed(const RefinedStructure& s)
 {
@@ -148,17 +145,6 @@ LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& sta
         return best;
     std::vector<CameraPose> second;
     centreDirectionStarts(set, best.pose, second);
-    // And the best minimum turned about each axis both ways, its centre kept: the lowest minimum can
-    // lie a few degrees to ten from it in rotation, beyond what its own basin reaches.
-    const Eigen::Vector3d centre = best.pose.centre();
-    for (int axis = 0; axis < 3; ++axis)
-        for (double sign : { -1.0, 1.0 })
-        {
-            CameraPose turned;
-            turned.R = rotationFromVector(sign * kTurnRadians * Eigen::Vector3d::Unit(axis)) * best.pose.R;
-            turned.t = -(turned.R * centre);
-            second.push_back(turned);
-        }
     const LocalMinimum recentred = refineFromStarts(set, second, params, pointIndices, lineIndices, minima);
     return recentred.betterThan(best) ? recentred : best;
 }
