@@ -438,6 +438,13 @@ nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, const
     out["line_inliers"] = maskArray(estimate.lineInliers);
     out["rms"] = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
     writeCovariance(uncertainty, out);
+    // The minima of the final refinement that the data cannot tell apart (the returned pose first).
+    out["candidates"] = candidateList(estimate.minima);
+    nb::list rms;
+    for (const tripose::ScoredPose& m : estimate.minima)
+        rms.append(m.rms);
+    out["candidate_rms"] = rms;
+    out["ambiguous"] = estimate.minima.size() > 1;
     return out;
 }
 

@@ -104,6 +104,16 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     (None unless covariance=True, and without refinement or when no pose was found). The pose is view 3's
     in the frame of view 1, x_cam = R @ X + t; view 2 is at [R12 | t12] (see help(tripose) for the
     conventions).
+
+    Several minima: candidates is a list of (R, t), the returned pose first, then the other minima of
+    the cost that the final refinement reached and that the data cannot tell apart from it (their sum
+    of squared residuals over the inliers exceeds the returned pose's by less than 12.59, the 95 %
+    quantile of chi-square with 6 degrees of freedom, times the noise variance estimated there),
+    lowest cost first; candidate_rms their RMS reprojection errors (px) over the inliers in the three
+    views; ambiguous is True when there is more than one: with a narrow baseline of views 1-2 the pose
+    is then a coin toss between them, and a tracker should wait for more parallax. Only the
+    returned pose where the refinement searched one basin (a wide baseline, or more than 60
+    inliers); empty without refinement or when no pose was found.
     """
     return _ext.estimate_pose_line_point_ransac(points1, points2, points3, lines1,
                                                 lines2, lines3, K, R12,

@@ -23,7 +23,8 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t,
                                 const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers,
-                                OutputArray covariance, OutputArray noiseVariance)
+                                OutputArray covariance, OutputArray noiseVariance, OutputArrayOfArrays candidateRs,
+                                OutputArrayOfArrays candidateTs, OutputArray reprojectionErrors)
 {
     CV_INSTRUMENT_REGION();
     return TRIPOSE_CALL_CORE([&] {
@@ -36,6 +37,8 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
         detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
                                         options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
                                         covariance, noiseVariance);
+        detail::writeRankedPoses(estimate.minima, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                 "candidateTs");
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

@@ -76,24 +76,30 @@ void writePoseVectors(const std::vector<core::CameraPose>& poses, OutputArrayOfA
     }
 }
 
-int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray R, OutputArray t,
-                    OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray errors, const char* RsName,
-                    const char* tsName)
+void writeRankedPoses(const std::vector<core::ScoredPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                      OutputArray errors, const char* RsName, const char* tsName)
 {
-    const int n = (int)candidates.size();
-    writePose(n > 0 ? &candidates[0].pose : nullptr, R, t);
-    std::vector<core::CameraPose> poses(n);
+    const int n = (int)poses.size();
+    std::vector<core::CameraPose> plain(n);
     for (int i = 0; i < n; ++i)
-        poses[i] = candidates[i].pose;
-    writePoseVectors(poses, Rs, ts, RsName, tsName);
+        plain[i] = poses[i].pose;
+    writePoseVectors(plain, Rs, ts, RsName, tsName);
     if (errors.needed())
     {
         Mat values(n, 1, CV_64F);
         for (int i = 0; i < n; ++i)
-            values.at<double>(i) = candidates[i].rms;
+            values.at<double>(i) = poses[i].rms;
         values.copyTo(errors);
     }
-    return n;
+}
+
+int writeCandidates(const std::vector<core::ScoredPose>& candidates, OutputArray R, OutputArray t,
+                    OutputArrayOfArrays Rs, OutputArrayOfArrays ts, OutputArray errors, const char* RsName,
+                    const char* tsName)
+{
+    writePose(candidates.empty() ? nullptr : &candidates[0].pose, R, t);
+    writeRankedPoses(candidates, Rs, ts, errors, RsName, tsName);
+    return (int)candidates.size();
 }
 
 int writeCandidateEstimate(const core::ViewSet& views, const std::vector<core::ScoredPose>& candidates, bool refined,

@@ -28,6 +28,12 @@ void writePose(const core::CameraPose* pose, OutputArray R, OutputArray t);
 void writePoseVectors(const std::vector<core::CameraPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
                       const char* RsName, const char* tsName);
 
+/** Ranked poses into vectors of 3x3 rotations and 3x1 translations and their RMS errors (Nx1
+CV_64F) in @p errors, where wanted (writePoseVectors()).
+*/
+void writeRankedPoses(const std::vector<core::ScoredPose>& poses, OutputArrayOfArrays Rs, OutputArrayOfArrays ts,
+                      OutputArray errors, const char* RsName, const char* tsName);
+
 /** Ranked candidates as the candidate functions return them: the best in R, t (released when
 there is none), all in the vectors, their RMS errors in @p errors. Returns their number.
 */

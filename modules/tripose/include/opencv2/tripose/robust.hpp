@@ -66,10 +66,13 @@ RANSAC over minimal samples, with:
   three rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
   structure; also under a quarter of the features points, on sets that do not draw the samples of
   points and lines mixed), with at most 60 inliers the refinement also starts from the linear
-  solution on the inliers and from 26 starts that keep the rotation and move view 3's centre around
-  view 1, each re-triangulated until it settles, and keeps the lowest cost; with at most 60
-  features the same is done from all features too, and the lower truncated cost of the two wins.
-  There a single refinement leaves the pose in another local minimum in many scenes.
+  solution on the inliers, from up to six poses of distinct rotations from four-inlier subsets (as
+  in estimatePoseLinePoint() with #POSE_LINEAR_REFINE) and from 26 starts that keep the rotation and
+  move view 3's centre around view 1 (repeated around the best minimum when its rotation moved),
+  each re-triangulated until it settles, and keeps the lowest cost; with at most 60 features the
+  same is done from all features too, and the lower truncated cost of the two wins. There a single
+  refinement leaves the pose in another local minimum in many scenes. The other minima it reaches
+  that the noise cannot tell from the returned one are reported in @p candidateRs.
 
 Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.
@@ -82,6 +85,18 @@ optimisation's pose is not the maximum-likelihood estimate that the covariance d
 pose was found and when the pose is not determined.
 @param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
 from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
+@param candidateRs Optional output: with RansacParams::refine, the returned rotation first, then
+those of the other minima of the cost that the final refinement reached and that the data cannot
+tell apart from it (3x3 CV_64F each, lowest cost first): their sum of squared residuals over the
+inliers exceeds the returned pose's by less than 12.59 (the 95 % quantile of chi-square with 6
+degrees of freedom) times the noise variance estimated at it, so they lie inside the pose's 95 %
+likelihood-ratio confidence region (doc/conventions.md, "Several minima"). More than one: the pose
+is ambiguous, as with a narrow baseline of views 1-2, and a tracker should wait for more parallax
+rather than trust the first. Only the returned pose where the refinement searched one basin (see
+above: a wide baseline, or more than 60 inliers); empty without refinement or when no pose was found.
+@param candidateTs Optional output: the matching translations (3x1 CV_64F).
+@param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
+(px, CV_64F) over the inliers in the three views after refinement.
 @return The number of inliers (points + lines) of the returned pose; 0 when no pose was found
 (then R and t are empty and the masks all zero).
 
@@ -96,7 +111,9 @@ CV_EXPORTS_W int estimatePoseLinePointRansac(
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
     OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
-    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
+    OutputArray reprojectionErrors = noArray());
 
 //! @}
 

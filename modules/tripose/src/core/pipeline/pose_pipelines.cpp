@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "../linear/rig_pose_solver.hpp"
+#include "../refine/distinct_minima.hpp"
+#include "../refine/hypothesis_starts.hpp"
 #include "../refine/multi_start_refinement.hpp"
 #include "../refine/multi_start_refiner.hpp"
 #include "../robust/hybrid_pose_solver.hpp"
@@ -23,12 +25,6 @@ namespace {
 // one local minimum reached twice.
 constexpr double kSameMinimum = 1e-7;
 
-bool sameMinimum(const CameraPose& a, const CameraPose& b)
-{
-    const double scale = std::max(1e-300, std::max(a.t.norm(), b.t.norm()));
-    return (a.R - b.R).norm() <= kSameMinimum && (a.t - b.t).norm() <= kSameMinimum * scale;
-}
-
 /** Refines every candidate over every view and, when the problem has several basins
 (@p severalBasins: a narrow known pair or planar structure, scoring/known_structure.hpp), from the
 26 starts around the best-ranked one that keep its rotation and move the centre of the estimated
@@ -36,26 +32,24 @@ camera (refine/multi_start_refinement.hpp); each is re-triangulated until it set
 the best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
 known pair or planar structure the linear candidates alone lead refinement to another minimum in
 most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
-void refineCandidates(const ViewSet& views, bool severalBasins, std::vector<ScoredPose>& candidates)
+void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool severalBasins,
+                      std::vector<ScoredPose>& candidates)
 {
     const RefineOptions params;
     std::vector<CameraPose> starts;
     for (const ScoredPose& candidate : candidates)
         starts.push_back(candidate.pose);
-    if (severalBasins && !candidates.empty())
-        centreDirectionStarts(views, candidates.front().pose, starts);
     std::vector<LocalMinimum> minima;
-    refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
-    std::stable_sort(minima.begin(), minima.end(),
-                     [](const LocalMinimum& a, const LocalMinimum& b) { return a.betterThan(b); });
-    std::vector<ScoredPose> refined;
-    for (const LocalMinimum& m : minima)
+    if (severalBasins && !candidates.empty())
     {
-        bool repeated = false;
-        for (const ScoredPose& r : refined)
-            repeated = repeated || sameMinimum(r.pose, m.pose);
-        if (repeated || m.used < minima.front().used)
-            continue;
+        appendHypothesisStarts(views, solver, FeatureSubset::all(views.numPoints, views.numLines), starts);
+        searchBasins(views, starts, params, nullptr, nullptr, &minima);
+    }
+    else
+        refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
+    std::vector<ScoredPose> refined;
+    for (const LocalMinimum& m : distinctMinima(minima, kSameMinimum))
+    {
         ScoredPose p;
         p.pose = m.pose;
         p.rms = m.rms;
@@ -73,7 +67,7 @@ std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolve
     const PoseScorer scorer(views);
     std::vector<ScoredPose> ranked = rankCandidates(scorer, poses);
     if (refine)
-        refineCandidates(views, hasSeveralBasins(views, scorer), ranked);
+        refineCandidates(views, solver, hasSeveralBasins(views, scorer), ranked);
     return ranked;
 }
 
@@ -107,8 +101,18 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     const bool severalBasins =
         solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
     const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth());
+    estimate.minima.clear();
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
+    {
+        for (const LocalMinimum& m : refiner.minimaWithinNoise(estimate.pose))
+        {
+            ScoredPose p;
+            p.pose = m.pose;
+            p.rms = m.rms;
+            estimate.minima.push_back(p);
+        }
         return true;
+    }
     estimate = RobustEstimate();
     estimate.pointInliers.assign(views.numPoints, 0);
     estimate.lineInliers.assign(views.numLines, 0);

@@ -160,6 +160,7 @@ public:
             }
         }
         summary.finalRms = cost.rms();
+        summary.residuals = cost.residuals;
         poses = current.poses;
         exportStructure(current, structure);
         if (covariance)

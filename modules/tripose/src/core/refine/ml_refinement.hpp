@@ -19,6 +19,7 @@ struct RefinementSummary
 {
     double initialRms = 0; //!< RMS reprojection error (px) over every view at the start (+inf: nothing usable).
     double finalRms = 0;   //!< The same at the returned estimate.
+    int residuals = 0;     //!< Residuals in finalRms (two per point and per segment in each view that sees it).
     int iterations = 0;    //!< Levenberg-Marquardt steps tried (accepted or rejected).
 };
 

@@ -21,6 +21,10 @@ namespace {
 constexpr int kMaxRetriangulations = 5;
 // RMS changes below this (px) are rounding, not a different minimum.
 constexpr double kSameRms = 1e-9;
+// searchBasins() repeats the centre-direction starts around the best minimum when its rotation
+// differs from the first start's by more than this (Frobenius norm of the difference, about 0.4
+// degrees): closer, the starts would be the same ones again.
+constexpr double kRecentreRotation = 1e-2;
 
 int countUsed(const RefinedStructure& s)
 {
@@ -31,6 +35,18 @@ int countUsed(const RefinedStructure& s)
     for (size_t k = 0; k < s.lineUsed.size(); ++k)
         used += s.lineUsed[k] && s.lineInFront[k];
     return used;
+}
+
+//! Pose and structure parameters of the refinement: one pose, a point's three coordinates, a line's
+//! four (orthonormal representation).
+int countParameters(const RefinedStructure& s)
+{
+    int parameters = 6;
+    for (unsigned char u : s.pointUsed)
+        parameters += 3 * u;
+    for (unsigned char u : s.lineUsed)
+        parameters += 4 * u;
+    return parameters;
 }
 
 } // namespace
@@ -49,6 +65,8 @@ LocalMinimum refineRetriangulating(const ViewSet& set, const CameraPose& start, 
         current.pose = pose;
         current.rms = summary.finalRms;
         current.used = countUsed(structure);
+        current.residuals = summary.residuals;
+        current.parameters = countParameters(structure);
         if (!current.finite())
             break;
         const bool settled = round > 0 && current.used == best.used && std::abs(current.rms - best.rms) <= kSameRms;
@@ -112,6 +130,23 @@ LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>&
             best = m;
     }
     return best;
+}
+
+LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
+                          std::vector<LocalMinimum>* minima)
+{
+    if (starts.empty())
+        return LocalMinimum();
+    std::vector<CameraPose> first = starts;
+    centreDirectionStarts(set, starts.front(), first);
+    LocalMinimum best = refineFromStarts(set, first, params, pointIndices, lineIndices, minima);
+    if (!best.finite() || (best.pose.R - starts.front().R).norm() <= kRecentreRotation)
+        return best;
+    std::vector<CameraPose> second;
+    centreDirectionStarts(set, best.pose, second);
+    const LocalMinimum recentred = refineFromStarts(set, second, params, pointIndices, lineIndices, minima);
+    return recentred.betterThan(best) ? recentred : best;
 }
 
 } // namespace tripose

@@ -5,6 +5,8 @@
 #ifndef OPENCV_TRIPOSE_REFINE_MULTI_START_REFINEMENT_HPP
 #define OPENCV_TRIPOSE_REFINE_MULTI_START_REFINEMENT_HPP
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "ml_refinement.hpp"
@@ -19,6 +21,16 @@ struct LocalMinimum
     //! Features that entered the cost, less the lines that settled behind a view that sees them
     //! (RefinedStructure::lineInFront).
     int used = 0;
+    int residuals = 0;  //!< Residuals in rms.
+    int parameters = 0; //!< Pose and structure parameters that entered the cost: 6 + 3 per point + 4 per line.
+
+    //! The cost the refinement minimises: the sum of squared residuals (px^2).
+    double squares() const { return rms * rms * residuals; }
+    //! The estimate of the noise variance (px^2) at this minimum; +inf without more residuals than parameters.
+    double noiseVariance() const
+    {
+        return residuals > parameters ? squares() / (residuals - parameters) : std::numeric_limits<double>::infinity();
+    }
 
     bool finite() const { return std::isfinite(rms) && pose.allFinite(); }
     /** Lower cost first; a minimum that leaves features out of the cost (behind a view, or not
@@ -57,6 +69,19 @@ LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>&
                               const std::vector<int>* pointIndices = nullptr,
                               const std::vector<int>* lineIndices = nullptr,
                               std::vector<LocalMinimum>* minima = nullptr);
+
+/** The search where the cost has several basins: refineFromStarts() from @p starts and from the
+centreDirectionStarts() around the first of them; then, when the best minimum's rotation lies
+apart from that first start's, from the centre-direction starts around the best minimum as well.
+The first start's rotation is a hypothesis' (a linear estimate: 5-9 degrees off at 1 px with a
+narrow known pair), and the starts that keep it miss basins that the same starts around the refined
+rotation reach (doc/accuracy.md, "Narrow known baselines: the lowest minimum"). Appends every
+minimum reached to @p minima when given; returns the best.
+*/
+LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+                          const std::vector<int>* pointIndices = nullptr,
+                          const std::vector<int>* lineIndices = nullptr,
+                          std::vector<LocalMinimum>* minima = nullptr);
 
 } // namespace tripose
 

@@ -5,7 +5,11 @@
 #ifndef OPENCV_TRIPOSE_REFINE_MULTI_START_REFINER_HPP
 #define OPENCV_TRIPOSE_REFINE_MULTI_START_REFINER_HPP
 
+#include <vector>
+
 #include "../estimator/pose_solver.hpp"
+#include "distinct_minima.hpp"
+#include "hypothesis_starts.hpp"
 #include "multi_start_refinement.hpp"
 
 namespace tripose {
@@ -44,7 +48,13 @@ public:
             return false;
         if (!searchStarts_ || inliers.size() > kMaxMultiStartFeatures)
         {
-            refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
+            LocalMinimum single;
+            const RefinementSummary summary =
+                refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
+            single.pose = pose;
+            single.rms = summary.finalRms;
+            single.residuals = summary.residuals;
+            remember(inliers, pose, std::vector<LocalMinimum>(1, single));
             return true;
         }
         // The estimator asks again from the pose this returned, on the same features, when its
@@ -56,18 +66,96 @@ public:
         std::vector<CameraPose> starts(1, pose);
         if (solver_ && inliers.size() >= solver_->nonMinimalSize())
             solver_->estimateNonMinimal(inliers, starts);
-        centreDirectionStarts(set_, pose, starts);
-        const LocalMinimum best = refineFromStarts(set_, starts, params_, &inliers.points, &inliers.lines);
+        if (solver_)
+            appendHypothesisStarts(set_, *solver_, inliers, starts);
+        std::vector<LocalMinimum> minima;
+        const LocalMinimum best = searchBasins(set_, starts, params_, &inliers.points, &inliers.lines, &minima);
         if (!best.finite())
             return false;
         pose = best.pose;
+        remember(inliers, pose, distinctMinima(minima, kSameMinimum));
         last_.valid = true;
         last_.inliers = inliers;
         last_.result = pose;
         return true;
     }
 
+    /** The minima that the refinement which returned @p pose reached: that one first, then the
+    other distinct minima within the noise of it (withinNoise()), lowest cost first, each with its
+    RMS over that refinement's features. The others are refined further first (kPolishFactor times
+    the iterations, re-triangulating), at most kMaxReportedMinima of them, and kept if they stay
+    within the noise and apart from the returned pose refined as far: in a narrow scene's flat
+    valleys the default 30 iterations stop two refinements of one minimum further apart than
+    kSameMinimum, and their costs more than 1e-3 apart (test_narrow_minima.cpp).
+    Empty when @p pose did not come from this refiner; the returned pose alone where the
+    refinement searched a single basin. */
+    std::vector<LocalMinimum> minimaWithinNoise(const CameraPose& pose) const
+    {
+        std::vector<LocalMinimum> out;
+        for (const Result& r : results_)
+        {
+            if (!(r.minima.front().pose.R == pose.R && r.minima.front().pose.t == pose.t))
+                continue;
+            out.push_back(r.minima.front());
+            if (r.minima.size() < 2)
+                break;
+            RefineOptions longer = params_;
+            longer.maxIterations = kPolishFactor * params_.maxIterations;
+            const LocalMinimum first =
+                refineRetriangulating(set_, pose, longer, &r.inliers.points, &r.inliers.lines);
+            if (!first.finite())
+                break;
+            std::vector<LocalMinimum> others;
+            for (size_t k = 1; k < r.minima.size() && (int)others.size() < kMaxReportedMinima; ++k)
+            {
+                if (!withinNoise(r.minima.front(), r.minima[k]))
+                    continue;
+                const LocalMinimum polished =
+                    refineRetriangulating(set_, r.minima[k].pose, longer, &r.inliers.points, &r.inliers.lines);
+                if (!polished.finite() || !withinNoise(first, polished) ||
+                    sameMinimum(polished.pose, first.pose, kSameMinimum))
+                    continue;
+                bool repeated = false;
+                for (const LocalMinimum& o : others)
+                    repeated = repeated || sameMinimum(polished.pose, o.pose, kSameMinimum);
+                if (!repeated)
+                    others.push_back(polished);
+            }
+            std::stable_sort(others.begin(), others.end(),
+                             [](const LocalMinimum& a, const LocalMinimum& b) { return a.betterThan(b); });
+            out.insert(out.end(), others.begin(), others.end());
+            break;
+        }
+        return out;
+    }
+
 private:
+    // Minima closer than this (rotation, Frobenius norm of the difference; translation relative to
+    // its norm) are one reached twice: refined to convergence (300 iterations), one minimum reached
+    // from several starts ends at most 4e-5 apart in the narrow scenes of test_narrow_minima.cpp.
+    static constexpr double kSameMinimum = 1e-3;
+    //! The further refinement of the minima reported besides the returned pose.
+    static constexpr int kPolishFactor = 10;
+    static constexpr int kMaxReportedMinima = 3;
+
+    //! Every refinement's result with the distinct minima it reached (best first): the estimator
+    //! refines a few times (settling the inliers, from its hypothesis' inliers and from all).
+    struct Result
+    {
+        FeatureSubset inliers;
+        std::vector<LocalMinimum> minima;
+    };
+
+    void remember(const FeatureSubset& inliers, const CameraPose& pose, std::vector<LocalMinimum> minima) const
+    {
+        if (minima.empty() || !(minima.front().pose.R == pose.R && minima.front().pose.t == pose.t))
+            return;
+        Result r;
+        r.inliers = inliers;
+        r.minima.swap(minima);
+        results_.push_back(r);
+    }
+
     //! The previous multi-start refinement: its features and result. State of one estimation:
     //! a refiner is built per call and not shared between threads.
     struct LastRefinement
@@ -82,6 +170,7 @@ private:
     const PoseSolver* solver_;
     bool severalBasins_, searchStarts_;
     mutable LastRefinement last_;
+    mutable std::vector<Result> results_;
 };
 
 } // namespace tripose

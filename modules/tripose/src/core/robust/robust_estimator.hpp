@@ -10,6 +10,7 @@
 #include "../support/options.hpp"
 #include "../scoring/pose_scorer.hpp"
 #include "../estimator/pose_solver.hpp"
+#include "../estimator/scored_pose.hpp"
 
 namespace tripose {
 
@@ -24,6 +25,13 @@ struct RobustEstimate
     std::vector<int> samplesOfKind;
     //! RMS (px) over the inliers of the residuals that decide them (PoseScorer::refitResiduals()).
     double inlierRms = 0;
+    /** With refinement: the minimum of the cost that the returned pose is, then the other distinct
+    minima that the final refinement reached within the noise of it (refine/distinct_minima.hpp:
+    their cost exceeds the returned pose's by less than the 95 % quantile of chi-square with 6
+    degrees of freedom times the noise variance), lowest cost first, each with its RMS (px) over the
+    inliers. More than one: the data cannot tell these poses apart. Where the refinement searched a
+    single basin, the returned pose alone. Empty without refinement. */
+    std::vector<ScoredPose> minima;
 };
 
 /** LO-MSAC over the samples of @p solver, hypotheses scored by @p scorer against 2 x threshold,
