@@ -15,6 +15,8 @@
 // when no pose is found: num_solutions 0), 1 on bad arguments or input (the message names the file,
 // key or argument; no output is written), 2 when the solver rejects the input.
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -207,13 +209,17 @@ cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat&
     return canvas;
 }
 
-/** The three images side by side (at the height of the first), each point track drawn as a path
-through its three positions and each segment triplet as its three segments; green for the
-estimate's inliers, red for the rest (all red when no pose was found). */
+/** The three images side by side (at the height of the first, at most 1800 px wide in all), each point
+track as a circle in every view with a line from its position in the view before, each segment
+triplet as its three segments; green for the estimate's inliers, red for the rest (all red when no
+pose was found). */
 cv::Mat drawMatches(const std::vector<cv::Mat>& images, const Problem& matched, const cv::Mat& pointInliers,
                     const cv::Mat& lineInliers)
 {
-    const int height = images[0].rows;
+    double width = 0;
+    for (const cv::Mat& image : images)
+        width += image.cols * double(images[0].rows) / image.rows;
+    const int height = (int)std::lround(images[0].rows * std::min(1.0, 1800.0 / width));
     std::vector<cv::Mat> panels;
     std::vector<double> scale;
     std::vector<double> offset;
@@ -243,8 +249,9 @@ cv::Mat drawMatches(const std::vector<cv::Mat>& images, const Problem& matched, 
             cv::circle(canvas, at(v, p[0], p[1]), 3, colour, 1, cv::LINE_AA);
             if (v > 0)
             {
+                // The track's motion since the view before, drawn inside this view.
                 const double* q = matched.points[v - 1].ptr<double>(i);
-                cv::line(canvas, at(v - 1, q[0], q[1]), at(v, p[0], p[1]), colour, 1, cv::LINE_AA);
+                cv::line(canvas, at(v, q[0], q[1]), at(v, p[0], p[1]), colour, 1, cv::LINE_AA);
             }
         }
     }

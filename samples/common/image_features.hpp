@@ -66,9 +66,9 @@ Adds the time of each stage to @p times.
 ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const cv::Mat& distCoeffs,
                               const FeatureOptions& options, StageTimes& times);
 
-/** extractFeatures on every image, the images in parallel (cv::parallel_for_, one task per image: on
-few cores this keeps each core busy through the whole detection, which OpenCV parallelises only in
-parts). @p distCoeffs is empty (no distortion) or has one entry per image. Adds the stage times of
+/** extractFeatures on every image, in parallel (cv::parallel_for_, one task per image and kind of
+feature: on few cores this keeps each core busy through the whole detection, which OpenCV
+parallelises only in parts). @p distCoeffs is empty (no distortion) or has one entry per image. Adds the stage times of
 all images and the wall-clock time to @p times.
 */
 std::vector<ImageFeatures> extractFeaturesOfImages(const std::vector<cv::Mat>& images,
