@@ -20,7 +20,9 @@ covariance. Per triplet it prints:
   sequence's cameras and at the estimate (median, and the share above 1 px), for the tracks the
   estimate kept as inliers;
 - the same residuals of the sequence's own corner tracks at the sequence's cameras: how well those
-  cameras explain the corners they were computed from.
+  cameras explain the corners they were computed from;
+- the inlier segment triplets' residuals at the sequence's cameras (end points' distances to the
+  projection of the 3D line fitted to the three views' planes).
 """
 
 import argparse
@@ -107,6 +109,27 @@ def track_residuals(Ps, xs):
     return np.sqrt(sq / len(Ps))
 
 
+def segment_residuals(Ps, segments):
+    """Per segment triplet, the RMS over its views of its end points' distances to the projection of
+    the 3D line that best fits the three views' planes (px)."""
+    def line_through(s):
+        l = np.cross([s[0], s[1], 1.0], [s[2], s[3], 1.0])
+        return l / np.hypot(l[0], l[1])
+
+    out = []
+    for i in range(len(segments[0])):
+        planes = np.array([P.T @ line_through(seg[i]) for P, seg in zip(Ps, segments)])
+        planes /= np.linalg.norm(planes[:, :3], axis=1, keepdims=True)
+        A, B = np.linalg.svd(planes)[2][-2:]  # two points spanning the line
+        d = []
+        for P, seg in zip(Ps, segments):
+            line = np.cross(P @ A, P @ B)
+            line /= np.hypot(line[0], line[1])
+            d += [line @ [seg[i][0], seg[i][1], 1.0], line @ [seg[i][2], seg[i][3], 1.0]]
+        out.append(np.sqrt(np.mean(np.square(d))))
+    return np.array(out)
+
+
 def projections(calib, R3, t3):
     K = [calib[f"K{v}"] for v in (1, 2, 3)]
     return [K[0] @ np.hstack([np.eye(3), np.zeros((3, 1))]),
@@ -138,8 +161,8 @@ def main():
 
     print("| views | tracks | inliers | rot err (deg) | Mahalanobis (6 dof) | sigma (px) | "
           "inlier residual at truth: median (px) | > 1 px | at estimate: median (px) | > 1 px | "
-          "own corners at truth: median (px) | > 1 px |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+          "own corners at truth: median (px) | > 1 px | inlier segments | at truth: median (px) | > 1 px |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         for k in range(count - 2):
@@ -152,7 +175,8 @@ def main():
             run([samples / "tripose_estimate", "--input", result_path, "--output", again_path, "--method", "ransac",
                  "--threshold", a.threshold, "--allow-unknown-keys", *a.estimate_options])
             calib = read(calib_path, ["K1", "K2", "K3", "R12", "t12", "R_gt", "t_gt"])
-            res = read(result_path, ["points1", "points2", "points3", "point_inliers"])
+            res = read(result_path, ["points1", "points2", "points3", "point_inliers", "lines1", "lines2", "lines3",
+                                     "line_inliers"])
             est = read(again_path, ["R", "t", "covariance", "noise_variance"])
             R, t = est["R"], est["t"].ravel()
             R_gt, t_gt = calib["R_gt"], calib["t_gt"].ravel()
@@ -167,11 +191,18 @@ def main():
             at_truth = track_residuals(projections(calib, R_gt, t_gt), xs_in)
             at_estimate = track_residuals(projections(calib, R, t), xs_in)
             own = track_residuals(projections(calib, R_gt, t_gt), own_tracks(a.data, views))
+            segments = [res[f"lines{v}"] for v in (1, 2, 3)]
+            seg = np.zeros(0)
+            if segments[0] is not None and len(segments[0]):
+                keep = res["line_inliers"].ravel().astype(bool)
+                seg = segment_residuals(projections(calib, R_gt, t_gt), [x[keep] for x in segments])
             print(f"| {views[0]}-{views[1]}-{views[2]} | {len(xs[0])} | {int(inl.sum())} | "
                   f"{np.degrees(np.linalg.norm(d)):.3f} | {mahalanobis:.1f} | {np.sqrt(est['noise_variance']):.2f} | "
                   f"{np.median(at_truth):.2f} | {100 * np.mean(at_truth > 1):.0f} % | "
                   f"{np.median(at_estimate):.2f} | {100 * np.mean(at_estimate > 1):.0f} % | "
-                  f"{np.median(own):.2f} | {100 * np.mean(own > 1):.0f} % |", flush=True)
+                  f"{np.median(own):.2f} | {100 * np.mean(own > 1):.0f} % | {len(seg)} | "
+                  f"{np.median(seg) if len(seg) else np.nan:.2f} | {100 * np.mean(seg > 1) if len(seg) else np.nan:.0f} % |",
+                  flush=True)
     return 0
 
 
