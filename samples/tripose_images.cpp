@@ -3,8 +3,9 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // tripose_images: the pose of view 3 straight from three images. Finds SIFT points and LSD segments
-// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 by
-// descriptor, and runs cv::tripose::estimatePoseLinePointRansac with refinement on the triplets.
+// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 under the
+// geometry of its descriptor matches with view 2, and runs cv::tripose::estimatePoseLinePointRansac
+// with refinement (Cauchy loss, samples/common/image_estimation.hpp) on the triplets.
 //
 //   tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml
 //                  [--overlay overlay.png] [--matches matches.png] [--features points|lines|all] [--threshold px] [--seed n]
@@ -299,7 +300,8 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    // Front end: features of each image, then views 1-2 under their pose and view 3 by descriptor.
+    // Front end: features of each image, then views 1-2 under their pose and view 3 under the geometry
+    // of its descriptor matches with view 2.
     StageTimes times;
     cv::Matx33d K[3];
     std::vector<cv::Mat> dist;

@@ -5,11 +5,12 @@
 // tripose_images_report: the image front end (tripose_images' steps) on every run of three consecutive
 // frames of a VGG multi-view sequence that comes with its images, beside other ways to the same pose,
 // against the sequence's cameras. Prints Markdown tables (doc/real_images.md is made of them):
-//  - tripose, points and lines: estimatePoseLinePointRansac (refined) on the point tracks and segment triplets;
+//  - tripose, points and lines: estimatePoseLinePointRansac (refined under the front end's Cauchy loss,
+//    image_estimation.hpp) on the point tracks and segment triplets;
 //  - tripose, points only: the same on the point tracks alone;
 //  - triangulation + PnP: the point tracks triangulated from views 1-2 (DLT), then
 //    cv::solvePnPRansac (SOLVEPNP_SQPNP) in view 3 at the same threshold;
-//  - tripose on the sequence's own correspondences (its hand-checked corners and segments).
+//  - tripose on the sequence's own correspondences (its hand-checked corners and segments; least squares).
 // With --calib-output, writes instead the calibration of three views (K1..K3, R12, t12 relative to
 // the first; the ground truth as R_gt, t_gt) in the form tripose_images reads.
 //

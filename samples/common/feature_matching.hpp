@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Matching the features of two images (image_features.hpp): with the two views' relative pose known
-// (epipolar constraint, then descriptors) or by descriptor alone. Every match is mutual: each
+// (epipolar constraint, then descriptors), under a fundamental matrix estimated from descriptor
+// matches, or by descriptor alone. Every match is mutual: each
 // feature is the other's best candidate, and the best is clearly better than the second (ratio test).
 #ifndef TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
 #define TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
