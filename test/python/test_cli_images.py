@@ -34,7 +34,7 @@ def truth():
 @pytest.fixture(scope="module")
 def merton_result(tmp_path_factory):
     tmp_path = tmp_path_factory.mktemp("merton")
-    proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png")
+    proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png", "--matches", tmp_path / "matches.png")
     assert proc.returncode == 0, proc.stderr
     return tmp_path, out
 
@@ -101,6 +101,22 @@ def test_overlay_is_the_third_image_with_drawings(merton_result):
     # Drawn pixels differ strongly; two JPEG decoders may differ by a level or two everywhere.
     changed = (np.abs(overlay.astype(int) - third.astype(int)).max(axis=2) > 40).mean()
     assert 0.005 < changed < 0.5
+
+
+def test_matches_picture_shows_the_three_views(merton_result):
+    tmp_path, _ = merton_result
+    picture = cv2.imread(str(tmp_path / "matches.png"))
+    third = cv2.imread(str(IMAGES[2]))
+    assert picture is not None
+    # Three 1024x768 views side by side, scaled to 1800 px in all.
+    assert picture.shape[1] == 1800 and abs(picture.shape[0] - round(768 * 1800 / 3072)) <= 1
+    # The third panel is the third image (dimmed) with green inliers drawn on it.
+    panel = picture[:, 1200:]
+    green = (panel[..., 1] > 150) & (panel[..., 0] < 100) & (panel[..., 2] < 100)
+    assert 0.002 < green.mean() < 0.5
+    expected = cv2.resize(third, (600, picture.shape[0]), interpolation=cv2.INTER_AREA).astype(float) * 0.6 + 40
+    undrawn = ~green & (panel[..., 2] < 150)
+    assert np.median(np.abs(panel.astype(float) - expected)[undrawn]) < 4  # 0.2 measured; another view: 18
 
 
 @pytest.mark.parametrize("kinds", ["points", "lines"])
