@@ -39,7 +39,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
     "                        [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]\n"
-    "                        [--allow-unknown-keys]\n"
+    "                        [--loss squared|huber|cauchy] [--loss-scale px] [--allow-unknown-keys]\n"
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4).\n"
     "               Stereo rig: with points4 and/or lines4, views 1-2 are the left and right cameras\n"
@@ -58,6 +58,9 @@ const char* kUsage =
     "               0: no refinement.\n"
     "               Default: 0 with linear, 1 with ransac\n"
     "  --seed       ransac sampler seed (default 0)\n"
+    "  --loss       ransac: the loss of the refinement on the inliers (default squared; tripose_images\n"
+    "               refines features found in images under cauchy, 0.5 px)\n"
+    "  --loss-scale scale of the huber or cauchy loss in pixels (default 1)\n"
     "  --allow-unknown-keys  read a problem file that carries other keys (by default an unknown key,\n"
     "               such as a misspelt one, is an error; the ground truth of tripose_make_scene is known)\n";
 
@@ -73,7 +76,8 @@ Options parseArguments(int argc, char** argv)
 {
     Options o;
     const std::vector<std::string> known = { "--input",      "--output",         "--method", "--threshold",
-                                             "--confidence", "--max-iterations", "--refine", "--seed" };
+                                             "--confidence", "--max-iterations", "--refine", "--seed",
+                                             "--loss",       "--loss-scale" };
     for (const auto& option : tripose_samples::optionPairs(argc, argv, kUsage, known, { "--allow-unknown-keys" }))
     {
         const std::string& arg = option.first;
@@ -107,6 +111,23 @@ Options parseArguments(int argc, char** argv)
             if (value != "0" && value != "1")
                 throw std::runtime_error("argument --refine: expected 0 or 1, got '" + value + "'");
             o.refine = value == "1" ? 1 : 0;
+        }
+        else if (arg == "--loss")
+        {
+            if (value == "squared")
+                o.ransac.refineParams.loss = cv::tripose::LOSS_SQUARED;
+            else if (value == "huber")
+                o.ransac.refineParams.loss = cv::tripose::LOSS_HUBER;
+            else if (value == "cauchy")
+                o.ransac.refineParams.loss = cv::tripose::LOSS_CAUCHY;
+            else
+                throw std::runtime_error("argument --loss: expected squared, huber or cauchy, got '" + value + "'");
+        }
+        else if (arg == "--loss-scale")
+        {
+            o.ransac.refineParams.lossScale = parseNumber(arg, value);
+            if (!(o.ransac.refineParams.lossScale > 0))
+                throw std::runtime_error("argument --loss-scale: expected a positive number of pixels, got '" + value + "'");
         }
         else // --seed
             o.ransac.seed = parseInteger(arg, value, -2147483647.0);

@@ -3,11 +3,12 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // tripose_images: the pose of view 3 straight from three images. Finds SIFT points and LSD segments
-// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 by
-// descriptor, and runs cv::tripose::estimatePoseLinePointRansac with refinement on the triplets.
+// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 under the
+// geometry of its descriptor matches with view 2, and runs cv::tripose::estimatePoseLinePointRansac
+// with refinement (Cauchy loss, samples/common/image_estimation.hpp) on the triplets.
 //
 //   tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml
-//                  [--overlay overlay.png] [--features points|lines|all] [--threshold px] [--seed n]
+//                  [--overlay overlay.png] [--matches matches.png] [--features points|lines|all] [--threshold px] [--seed n]
 //
 // The result holds what tripose_estimate --method ransac writes, the numbers of point tracks and
 // segment triplets, the time per stage, and the matched features as a problem file (K.., R12, t12,
@@ -15,6 +16,8 @@
 // when no pose is found: num_solutions 0), 1 on bad arguments or input (the message names the file,
 // key or argument; no output is written), 2 when the solver rejects the input.
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -25,6 +28,7 @@
 
 #include "arguments.hpp"
 #include "feature_triplets.hpp"
+#include "image_estimation.hpp"
 #include "image_features.hpp"
 #include "image_input.hpp"
 #include "problem_io.hpp"
@@ -37,7 +41,8 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml\n"
-    "                      [--overlay overlay.png] [--features points|lines|all] [--threshold px] [--seed n]\n"
+    "                      [--overlay overlay.png] [--matches matches.png] [--features points|lines|all]\n"
+    "                      [--threshold px] [--seed n]\n"
     "  --calib     calibration (OpenCV FileStorage, YAML or JSON; the calibration keys of a problem file):\n"
     "              K or K1..K3, [dist or dist1..dist3], R12, t12 (view 2's pose; view 1 is the world frame)\n"
     "  --images    the three images, views 1, 2 and 3\n"
@@ -45,6 +50,8 @@ const char* kUsage =
     "              num_point_tracks, num_segment_triplets, ms_* (time per stage), and the matched features\n"
     "              as a problem\n"
     "              (K.., R12, t12, points1..3, lines1..3; undistorted pixels, so no dist)\n"
+    "  --matches   the three images side by side, each point track and segment triplet drawn in all three:\n"
+    "              inliers of the estimate green, the rest red\n"
     "  --overlay   the third image with the inlier features (red) and the structure of views 1-2\n"
     "              reprojected by the estimate (green)\n"
     "  --features  points (SIFT), lines (LSD + LBD) or all (default)\n"
@@ -56,10 +63,10 @@ const int kMinFeatures = 4;
 
 struct Options
 {
-    std::string calib, output, overlay;
+    std::string calib, output, overlay, matches;
     std::vector<std::string> images;
     FeatureOptions features;
-    cv::tripose::RansacParams ransac;
+    cv::tripose::RansacParams ransac = imageRansacParams();
 };
 
 Options parseArguments(int argc, char** argv)
@@ -81,7 +88,8 @@ Options parseArguments(int argc, char** argv)
         if (o.images.size() != 3)
             throw argumentError("--images", "expected three image files, got " + std::to_string(o.images.size()));
     }
-    const std::vector<std::string> known = { "--calib", "--output", "--overlay", "--features", "--threshold", "--seed" };
+    const std::vector<std::string> known = { "--calib",    "--output",    "--overlay", "--matches",
+                                               "--features", "--threshold", "--seed" };
     for (const auto& option : optionPairs((int)rest.size(), rest.data(), kUsage, known))
     {
         const std::string& arg = option.first;
@@ -92,6 +100,8 @@ Options parseArguments(int argc, char** argv)
             o.output = value;
         else if (arg == "--overlay")
             o.overlay = value;
+        else if (arg == "--matches")
+            o.matches = value;
         else if (arg == "--features")
         {
             if (!parseFeatureKinds(value, o.features.kinds))
@@ -148,10 +158,8 @@ std::string cameraKey(const Problem& p, int view)
     return p.K.size() == 1 ? "K" : "K" + std::to_string(view + 1);
 }
 
-/** The third image with the inlier observations (red) and, in green, the points and segments of views
-1-2 triangulated with the known pose and projected by the estimated one. */
-cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat& R, const cv::Mat& t,
-                    const cv::Mat& pointInliers, const cv::Mat& lineInliers)
+//! @p image as 8-bit BGR.
+cv::Mat colourCopy(const cv::Mat& image)
 {
     cv::Mat canvas;
     if (image.channels() == 1)
@@ -160,6 +168,15 @@ cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat&
         cv::cvtColor(image, canvas, cv::COLOR_BGRA2BGR);
     else
         canvas = image.clone();
+    return canvas;
+}
+
+/** The third image with the inlier observations (red) and, in green, the points and segments of views
+1-2 triangulated with the known pose and projected by the estimated one. */
+cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat& R, const cv::Mat& t,
+                    const cv::Mat& pointInliers, const cv::Mat& lineInliers)
+{
+    cv::Mat canvas = colourCopy(image);
     const cv::Scalar red(40, 40, 230), green(40, 200, 40);
     using namespace cv::tripose::support;
     const cv::Matx33d K1 = cameraMatrixOf(matched, 0), K2 = cameraMatrixOf(matched, 1);
@@ -193,6 +210,72 @@ cv::Mat drawOverlay(const cv::Mat& image, const Problem& matched, const cv::Mat&
     return canvas;
 }
 
+/** The three images side by side (at the height of the first, at most 1800 px wide in all), each point
+track as a circle in every view with a line from its position in the view before, each segment
+triplet as its three segments; green for the estimate's inliers, red for the rest (all red when no
+pose was found). */
+cv::Mat drawMatches(const std::vector<cv::Mat>& images, const Problem& matched, const cv::Mat& pointInliers,
+                    const cv::Mat& lineInliers)
+{
+    double width = 0;
+    for (const cv::Mat& image : images)
+        width += image.cols * double(images[0].rows) / image.rows;
+    const int height = (int)std::lround(images[0].rows * std::min(1.0, 1800.0 / width));
+    std::vector<cv::Mat> panels;
+    std::vector<double> scale;
+    std::vector<double> offset;
+    double x = 0;
+    for (const cv::Mat& image : images)
+    {
+        scale.push_back(double(height) / image.rows);
+        offset.push_back(x);
+        cv::Mat panel;
+        cv::resize(colourCopy(image), panel, cv::Size(), scale.back(), scale.back(), cv::INTER_AREA);
+        x += panel.cols;
+        panels.push_back(panel);
+    }
+    cv::Mat canvas;
+    cv::hconcat(panels, canvas);
+    // Dimmed, so that thin lines show on any texture.
+    canvas.convertTo(canvas, -1, 0.6, 40);
+    const cv::Scalar green(40, 200, 40), red(40, 40, 230);
+    auto at = [&](int view, double u, double v) { return cv::Point2d(offset[view] + scale[view] * u, scale[view] * v); };
+    auto inlier = [](const cv::Mat& mask, int i) { return !mask.empty() && mask.at<uchar>(i) != 0; };
+    for (int i = 0; i < matched.points[0].rows; ++i)
+    {
+        const cv::Scalar colour = inlier(pointInliers, i) ? green : red;
+        for (int v = 0; v < 3; ++v)
+        {
+            const double* p = matched.points[v].ptr<double>(i);
+            cv::circle(canvas, at(v, p[0], p[1]), 3, colour, 1, cv::LINE_AA);
+            if (v > 0)
+            {
+                // The track's motion since the view before, drawn inside this view.
+                const double* q = matched.points[v - 1].ptr<double>(i);
+                cv::line(canvas, at(v, q[0], q[1]), at(v, p[0], p[1]), colour, 1, cv::LINE_AA);
+            }
+        }
+    }
+    for (int i = 0; i < matched.lines[0].rows; ++i)
+    {
+        const cv::Scalar colour = inlier(lineInliers, i) ? green : red;
+        for (int v = 0; v < 3; ++v)
+        {
+            const double* s = matched.lines[v].ptr<double>(i);
+            cv::line(canvas, at(v, s[0], s[1]), at(v, s[2], s[3]), colour, 2, cv::LINE_AA);
+        }
+    }
+    return canvas;
+}
+
+void writePng(const std::string& path, const cv::Mat& image)
+{
+    std::vector<uchar> png;
+    if (!cv::imencode(".png", image, png))
+        throw std::runtime_error("cannot encode " + path);
+    writeFileAtomically(path, png);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -217,15 +300,19 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    // Front end: features of each image, then views 1-2 under their pose and view 3 by descriptor.
+    // Front end: features of each image, then views 1-2 under their pose and view 3 under the geometry
+    // of its descriptor matches with view 2.
     StageTimes times;
-    ImageFeatures features[3];
     cv::Matx33d K[3];
+    std::vector<cv::Mat> dist;
     for (int v = 0; v < 3; ++v)
     {
         K[v] = cameraMatrixOf(calibration, v);
-        features[v] = extractFeatures(images[v], K[v], distortionOf(calibration, v), options.features, times);
+        dist.push_back(distortionOf(calibration, v));
     }
+    const std::vector<ImageFeatures> extracted =
+        extractFeaturesOfImages(images, { K[0], K[1], K[2] }, dist, options.features, times);
+    const ImageFeatures features[3] = { extracted[0], extracted[1], extracted[2] };
     const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
                                                    MatchOptions(), times);
     const int tracks = triplets.points[0].rows, segments = triplets.lines[0].rows;
@@ -272,9 +359,10 @@ int main(int argc, char** argv)
         std::cerr << "tripose_images: no pose found from " << tracks << " point tracks and " << segments
                   << " segment triplets\n";
     std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (LSD) %.1f, "
-                            "segment description (LBD) %.1f, matching %.1f, estimation %.1f, total %.1f\n",
-                            inliers, times.points, times.segmentDetection, times.segmentDescription, times.matching,
-                            times.estimation, times.total());
+                            "segment description (LBD) %.1f (summed over the images; wall-clock %.1f, the images in "
+                            "parallel), matching %.1f, estimation %.1f, total %.1f wall-clock\n",
+                            inliers, times.points, times.segmentDetection, times.segmentDescription, times.featuresWall,
+                            times.matching, times.estimation, times.wallTotal());
 
     try
     {
@@ -287,18 +375,15 @@ int main(int argc, char** argv)
             fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
             fs << "ms_points" << times.points << "ms_segment_detection" << times.segmentDetection
                << "ms_segment_description" << times.segmentDescription << "ms_matching" << times.matching
-               << "ms_estimation" << times.estimation;
+               << "ms_estimation" << times.estimation << "ms_features_wall" << times.featuresWall
+               << "ms_total_wall" << times.wallTotal();
             fs << "images" << "[:" << options.images[0] << options.images[1] << options.images[2] << "]";
             writeProblem(fs, matched);
         });
         if (!options.overlay.empty() && solutions > 0)
-        {
-            const cv::Mat overlay = drawOverlay(images[2], matched, R, t, pointInliers, lineInliers);
-            std::vector<uchar> png;
-            if (!cv::imencode(".png", overlay, png))
-                throw std::runtime_error("cannot encode the overlay");
-            writeFileAtomically(options.overlay, png);
-        }
+            writePng(options.overlay, drawOverlay(images[2], matched, R, t, pointInliers, lineInliers));
+        if (!options.matches.empty())
+            writePng(options.matches, drawMatches(images, matched, pointInliers, lineInliers));
     }
     catch (const std::exception& e)
     {

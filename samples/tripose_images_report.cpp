@@ -5,19 +5,25 @@
 // tripose_images_report: the image front end (tripose_images' steps) on every run of three consecutive
 // frames of a VGG multi-view sequence that comes with its images, beside other ways to the same pose,
 // against the sequence's cameras. Prints Markdown tables (doc/real_images.md is made of them):
-//  - tripose, points and lines: estimatePoseLinePointRansac (refined) on the point tracks and segment triplets;
+//  - tripose, points and lines: estimatePoseLinePointRansac (refined under the front end's Cauchy loss,
+//    image_estimation.hpp) on the point tracks and segment triplets;
 //  - tripose, points only: the same on the point tracks alone;
 //  - triangulation + PnP: the point tracks triangulated from views 1-2 (DLT), then
 //    cv::solvePnPRansac (SOLVEPNP_SQPNP) in view 3 at the same threshold;
-//  - tripose on the sequence's own correspondences (its hand-checked corners and segments).
+//  - tripose on the sequence's own correspondences (its hand-checked corners and segments; least squares).
 // With --calib-output, writes instead the calibration of three views (K1..K3, R12, t12 relative to
 // the first; the ground truth as R_gt, t_gt) in the form tripose_images reads.
 //
-//   tripose_images_report --data <VGG folder with images> [--threshold px] [--seed n]
+// With --dump-inputs, also writes each triplet's matches and their structure from views 1-2 as one
+// JSON line (the form of tripose_evaluate --dump-inputs), for the peers run from Python
+// (test/evaluation/images_vs_poselib.py).
+//
+//   tripose_images_report --data <VGG folder with images> [--threshold px] [--seed n] [--dump-inputs file.jsonl]
 //   tripose_images_report --data <VGG folder> --calib-output calib.yml [--views i j k]
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -27,6 +33,7 @@
 
 #include "arguments.hpp"
 #include "feature_triplets.hpp"
+#include "image_estimation.hpp"
 #include "image_features.hpp"
 #include "image_input.hpp"
 #include "problem_io.hpp"
@@ -42,17 +49,20 @@ namespace {
 
 const char* kUsage =
     "usage: tripose_images_report --data <VGG sequence folder with images> [--threshold px] [--seed n]\n"
+    "                             [--dump-inputs file.jsonl]\n"
     "       tripose_images_report --data <VGG sequence folder> --calib-output calib.yml [--views i j k]\n"
     "  Every three consecutive frames (images in name order, one per camera of the sequence): the image\n"
     "  front end, tripose (points and lines; points only), triangulation + solvePnPRansac (SQPNP), and\n"
     "  tripose on the sequence's own correspondences; errors against the sequence's cameras, as Markdown.\n"
+    "  --dump-inputs   also write each triplet's matches and their structure from views 1-2, one JSON line each\n"
     "  --calib-output  write the calibration of views i j k (default 0 1 2) for tripose_images, and exit\n";
 
 struct Options
 {
-    std::string data, calibOutput;
+    std::string data, calibOutput, dumpInputs;
+    FeatureOptions features;
     int views[3] = { 0, 1, 2 };
-    cv::tripose::RansacParams ransac;
+    cv::tripose::RansacParams ransac = imageRansacParams();
 };
 
 Options parseArguments(int argc, char** argv)
@@ -74,7 +84,8 @@ Options parseArguments(int argc, char** argv)
         }
     }
     for (const auto& option : optionPairs((int)rest.size(), rest.data(), kUsage,
-                                          { "--data", "--calib-output", "--threshold", "--seed" }))
+                                          { "--data", "--calib-output", "--threshold", "--seed",
+                                            "--dump-inputs" }))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
@@ -82,6 +93,8 @@ Options parseArguments(int argc, char** argv)
             o.data = value;
         else if (arg == "--calib-output")
             o.calibOutput = value;
+        else if (arg == "--dump-inputs")
+            o.dumpInputs = value;
         else if (arg == "--threshold")
         {
             o.ransac.threshold = parseNumber(arg, value);
@@ -199,6 +212,66 @@ std::string summary(const std::vector<Outcome>& outcomes)
                       median(translations));
 }
 
+//! Each image's features computed once, as a tracker would: a third of the three images' feature work.
+double sequenceTime(const StageTimes& t)
+{
+    return (t.points + t.segmentDetection + t.segmentDescription) / 3 + t.matching + t.estimation;
+}
+
+std::string jsonNumber(double x)
+{
+    return std::isfinite(x) ? cv::format("%.17g", x) : std::string("null");
+}
+
+std::string jsonMatrix(const cv::Mat& m)
+{
+    std::string s = "[";
+    for (int r = 0; r < m.rows; ++r)
+    {
+        s += r ? ",[" : "[";
+        for (int c = 0; c < m.cols; ++c)
+            s += (c ? "," : "") + jsonNumber(m.at<double>(r, c));
+        s += "]";
+    }
+    return s + "]";
+}
+
+std::string jsonOutcome(const Outcome& o)
+{
+    return cv::format("{\"ok\":%s,\"rot_deg\":%s,\"t_percent\":%s,\"inliers\":%d,\"features\":%d}",
+                      o.registered ? "true" : "false", jsonNumber(o.rotationDeg).c_str(),
+                      jsonNumber(o.translationPercent).c_str(), o.inliers, o.features);
+}
+
+/** One triplet as a JSON object, in the form of tripose_evaluate --dump-inputs (K, R12, t12, R_gt,
+t_gt, points1..3, lines1..3, and the structure of views 1-2: points3d_12, lines3d_12), for peers run
+from Python on the same matches; with the views and two of this report's results. */
+std::string inputsJson(const int v[3], const std::vector<cv::Mat>& K, const cv::Mat& R12, const cv::Mat& t12,
+                       const cv::Mat& Rref, const cv::Mat& tref, const FeatureTriplets& triplets, const Outcome& all,
+                       const Outcome& pnp)
+{
+    const cv::Matx33d K1(K[0]), K2(K[1]), R(R12);
+    const cv::Vec3d t(t12);
+    const int64 start = cv::getTickCount();
+    const cv::Mat X = support::triangulateKnownPair(K1, K2, R, t, triplets.points[0], triplets.points[1]);
+    // As the overlay of tripose_images: an end point whose ray runs within about a degree of view 2's
+    // plane through the segment has no depth from views 1-2.
+    const cv::Mat L = support::liftSegmentsKnownPair(K1, K2, R, t, triplets.lines[0], triplets.lines[1], 1e-2);
+    const double triangulationUs = 1e3 * millisecondsSince(start);
+    std::string s = cv::format("{\"views\":[%d,%d,%d],\"K\":[", v[0], v[1], v[2]);
+    for (int k = 0; k < 3; ++k)
+        s += (k ? "," : "") + jsonMatrix(K[k]);
+    s += "],\"R12\":" + jsonMatrix(R12) + ",\"t12\":" + jsonMatrix(t12.reshape(1, 1)) + ",\"R_gt\":" + jsonMatrix(Rref) +
+         ",\"t_gt\":" + jsonMatrix(tref.reshape(1, 1));
+    for (int k = 0; k < 3; ++k)
+        s += cv::format(",\"points%d\":", k + 1) + jsonMatrix(triplets.points[k]) + cv::format(",\"lines%d\":", k + 1) +
+             jsonMatrix(triplets.lines[k]);
+    s += ",\"points3d_12\":" + jsonMatrix(X) + ",\"lines3d_12\":" + jsonMatrix(L) +
+         ",\"triangulation_us\":" + jsonNumber(triangulationUs);
+    s += ",\"tripose\":" + jsonOutcome(all) + ",\"tri_sqpnp\":" + jsonOutcome(pnp) + "}";
+    return s;
+}
+
 //! View @p b's pose relative to view @p a (both relative to a common world).
 void relativePose(const support::VggSequence& s, int a, int b, cv::Mat& R, cv::Mat& t)
 {
@@ -259,23 +332,30 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    // Each frame's features once, as a sequence would compute them; their time is kept per frame.
-    std::vector<ImageFeatures> features(F);
-    std::vector<StageTimes> frameTimes(F);
+    std::vector<cv::Mat> images(F);
     try
     {
         for (int k = 0; k < F; ++k)
         {
-            const cv::Mat image = readImage(files[k]);
-            checkImageFitsCalibration(image, files[k], cv::Matx33d(sequence.cameraMatrices[k]), "camera " + std::to_string(k));
-            features[k] = extractFeatures(image, cv::Matx33d(sequence.cameraMatrices[k]), cv::Mat(), FeatureOptions(),
-                                          frameTimes[k]);
+            images[k] = readImage(files[k]);
+            checkImageFitsCalibration(images[k], files[k], cv::Matx33d(sequence.cameraMatrices[k]),
+                                      "camera " + std::to_string(k));
         }
     }
     catch (const std::exception& e)
     {
         std::cerr << "tripose_images_report: " << e.what() << "\n";
         return 1;
+    }
+    std::ofstream dump;
+    if (!options.dumpInputs.empty())
+    {
+        dump.open(options.dumpInputs);
+        if (!dump)
+        {
+            std::cerr << "tripose_images_report: argument --dump-inputs: cannot write " << options.dumpInputs << "\n";
+            return 1;
+        }
     }
 
     std::vector<Outcome> all, pointsOnly, pnp, ownCorrespondences;
@@ -289,15 +369,12 @@ int main(int argc, char** argv)
         relativePose(sequence, v[0], v[2], Rref, tref);
         std::vector<cv::Mat> K = { sequence.cameraMatrices[v[0]], sequence.cameraMatrices[v[1]],
                                    sequence.cameraMatrices[v[2]] };
-        const ImageFeatures views[3] = { features[v[0]], features[v[1]], features[v[2]] };
         const cv::Matx33d Kx[3] = { cv::Matx33d(K[0]), cv::Matx33d(K[1]), cv::Matx33d(K[2]) };
+        // The whole pipeline from three fresh images, as tripose_images runs it, timed per stage.
         StageTimes times;
-        for (int j = 0; j < 3; ++j)
-        {
-            times.points += frameTimes[v[j]].points;
-            times.segmentDetection += frameTimes[v[j]].segmentDetection;
-            times.segmentDescription += frameTimes[v[j]].segmentDescription;
-        }
+        const std::vector<ImageFeatures> features = extractFeaturesOfImages(
+            { images[v[0]], images[v[1]], images[v[2]] }, { Kx[0], Kx[1], Kx[2] }, {}, options.features, times);
+        const ImageFeatures views[3] = { features[0], features[1], features[2] };
         const FeatureTriplets triplets =
             matchTriplets(views, Kx, cv::Matx33d(R12), cv::Vec3d(t12), MatchOptions(), times);
 
@@ -310,19 +387,25 @@ int main(int argc, char** argv)
         const support::VggTriplet own = support::loadVggTriplet(options.data, v[0], v[1], v[2]);
         const cv::Mat ownPoints[3] = { own.points1, own.points2, own.points3 };
         const cv::Mat ownLines[3] = { own.lines1, own.lines2, own.lines3 };
+        // The sequence's hand-checked correspondences under least squares, as tripose_vgg_report.
+        cv::tripose::RansacParams ownParams;
+        ownParams.threshold = options.ransac.threshold;
+        ownParams.seed = options.ransac.seed;
+        ownParams.refine = true;
         ownCorrespondences.push_back(
-            runTripose(ownPoints, ownLines, own.cameraMatrices, own.R12, own.t12, own.R, own.t, options.ransac));
+            runTripose(ownPoints, ownLines, own.cameraMatrices, own.R12, own.t12, own.R, own.t, ownParams));
         tripletTimes.push_back(times);
 
         rows.push_back(cv::format("| %d-%d-%d | %d | %d | %s | %s | %s | %s |", v[0], v[1], v[2], triplets.points[0].rows,
                                   triplets.lines[0].rows, cell(all.back()).c_str(), cell(pointsOnly.back()).c_str(),
                                   cell(pnp.back()).c_str(), cell(ownCorrespondences.back()).c_str()));
-        timeRows.push_back(cv::format("| %d-%d-%d | %.0f | %.0f | %.0f | %.0f | %.1f | %.0f | %.0f | %.1f | %.1f |", v[0], v[1],
-                                      v[2], times.points, times.segmentDetection, times.segmentDescription, times.matching,
-                                      times.estimation, times.total(),
-                                      (times.points + times.segmentDetection + times.segmentDescription) / 3 +
-                                          times.matching + times.estimation,
-                                      pointsOnly.back().milliseconds, pnp.back().milliseconds));
+        timeRows.push_back(cv::format("| %d-%d-%d | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f | %.0f | %.0f | %.0f | %.1f | %.1f |",
+                                      v[0], v[1], v[2], times.points, times.segmentDetection, times.segmentDescription,
+                                      times.featuresWall, times.matching, times.estimation, times.total(),
+                                      times.wallTotal(), sequenceTime(times), pointsOnly.back().milliseconds,
+                                      pnp.back().milliseconds));
+        if (dump.is_open())
+            dump << inputsJson(v, K, R12, t12, Rref, tref, triplets, all.back(), pnp.back()) << "\n";
     }
 
     std::cout << "Sequence " << options.data << ": " << F << " frames; RANSAC threshold " << options.ransac.threshold
@@ -341,21 +424,28 @@ int main(int argc, char** argv)
     std::cout << "| tripose points only | " << summary(pointsOnly) << " |\n";
     std::cout << "| triangulation + PnP (SQPNP) | " << summary(pnp) << " |\n";
     std::cout << "| tripose, sequence's correspondences | " << summary(ownCorrespondences) << " |\n";
-    std::cout << "\nTime per triplet (ms): features of the three images (SIFT; LSD; LBD), matching, tripose points+lines "
-                 "estimation; total from three fresh images; total with each image's features computed once in a "
-                 "sequence (a third of the features); the estimation of points only and of triangulation + PnP\n\n";
-    std::cout << "| views | SIFT | LSD | LBD | matching | estimation | total | total, sequence | points-only est. | "
-                 "triangulation + PnP |\n";
-    std::cout << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    std::cout << "\nTime per triplet (ms), from three fresh images: each feature stage summed over the three images "
+                 "(SIFT; LSD; LBD), the feature stages' wall-clock time (the images in parallel), matching, tripose "
+                 "points+lines estimation; the work (sum of the stages), the wall-clock total, the total with each "
+                 "image's features computed once in a sequence (a third of the feature work); the estimation of points "
+                 "only and of triangulation + PnP\n\n";
+    std::cout << "| views | SIFT | LSD | LBD | features, wall | matching | estimation | work | total, wall | "
+                 "total, sequence | points-only est. | triangulation + PnP |\n";
+    std::cout << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const std::string& row : timeRows)
         std::cout << row << "\n";
-    std::vector<double> totals, sequenceTotals;
+    std::vector<double> columns[8];
     for (const StageTimes& t : tripletTimes)
     {
-        totals.push_back(t.total());
-        sequenceTotals.push_back((t.points + t.segmentDetection + t.segmentDescription) / 3 + t.matching + t.estimation);
+        const double values[8] = { t.points, t.segmentDetection, t.segmentDescription, t.featuresWall,
+                                   t.matching, t.estimation, t.wallTotal(), sequenceTime(t) };
+        for (int c = 0; c < 8; ++c)
+            columns[c].push_back(values[c]);
     }
-    std::cout << cv::format("\nMedian time per triplet: %.0f ms from three fresh images, %.0f ms in a sequence\n",
-                            median(totals), median(sequenceTotals));
+    std::cout << cv::format("| median | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f | - | %.0f | %.0f | - | - |\n",
+                            median(columns[0]), median(columns[1]), median(columns[2]), median(columns[3]),
+                            median(columns[4]), median(columns[5]), median(columns[6]), median(columns[7]));
+    std::cout << cv::format("\nMedian time per triplet: %.0f ms wall-clock from three fresh images, %.0f ms in a "
+                            "sequence\n", median(columns[6]), median(columns[7]));
     return 0;
 }

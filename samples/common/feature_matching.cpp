@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include <opencv2/calib3d.hpp>
+
 namespace tripose_samples {
 
 namespace {
@@ -178,6 +180,27 @@ Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptor
                 best.add(i, j, row[j]);
     }
     return best.result(ratio);
+}
+
+bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, cv::Matx33d& F)
+{
+    const Matches matches = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio,
+                                              std::numeric_limits<double>::infinity());
+    if ((int)matches.size() < options.minFundamentalInliers)
+        return false;
+    std::vector<cv::Point2d> xa, xb;
+    for (const auto& m : matches)
+    {
+        xa.emplace_back(a.points.at<double>(m.first, 0), a.points.at<double>(m.first, 1));
+        xb.emplace_back(b.points.at<double>(m.second, 0), b.points.at<double>(m.second, 1));
+    }
+    cv::Mat inliers;
+    // OpenCV's RANSAC seeds its generator alike on every call: the same images give the same matrix.
+    const cv::Mat estimate = cv::findFundamentalMat(xa, xb, cv::FM_RANSAC, options.epipolarDistance, 0.999, inliers);
+    if (estimate.rows != 3 || cv::countNonZero(inliers) < options.minFundamentalInliers)
+        return false;
+    F = cv::Matx33d(estimate);
+    return true;
 }
 
 } // namespace tripose_samples

@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Matching the features of two images (image_features.hpp): with the two views' relative pose known
-// (epipolar constraint, then descriptors) or by descriptor alone. Every match is mutual: each
+// (epipolar constraint, then descriptors), under a fundamental matrix estimated from descriptor
+// matches, or by descriptor alone. Every match is mutual: each
 // feature is the other's best candidate, and the best is clearly better than the second (ratio test).
 #ifndef TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
 #define TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
@@ -33,6 +34,9 @@ struct MatchOptions
     double pointRatio = 0.8;   //!< SIFT: best L2 distance below this fraction of the second best.
     double lineRatio = 0.8;    //!< LBD: best Hamming distance below this fraction of the second best.
     int maxLineDistance = 80;  //!< LBD: Hamming distance (of 256 bits) above which segments never match.
+    //! Views of unknown relative pose are matched under a fundamental matrix estimated from their
+    //! descriptor matches (estimateFundamental), with at least this many matches consistent with it.
+    int minFundamentalInliers = 30;
 };
 
 /** Points of views a and b under the known epipolar geometry @p F (x_b^T F x_a = 0): candidates within
@@ -46,6 +50,12 @@ the other's end points (MatchOptions::minBandOverlap), then mutual best LBD desc
 ratio test among the candidates. */
 Matches matchSegmentsEpipolar(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
                               const MatchOptions& options);
+
+/** The fundamental matrix of views a and b (x_b^T F x_a = 0) where their relative pose is unknown: the
+points matched by descriptor (matchByDescriptor), then cv::findFundamentalMat (RANSAC at
+MatchOptions::epipolarDistance, confidence 0.999) on them. False, and @p F untouched, with fewer than
+MatchOptions::minFundamentalInliers consistent matches: too few to trust the geometry. */
+bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, cv::Matx33d& F);
 
 /** Rows of @p descriptorsA and @p descriptorsB (CV_32F: L2, CV_8U: Hamming), mutual best with the
 ratio test @p ratio over all rows of B, and (Hamming) at most @p maxDistance. */

@@ -20,13 +20,22 @@ cv::Mat matchedRows(const cv::Mat& rows, const Matches& pairs, bool first)
 
 namespace {
 
-/** Extends the pairs (view 1 row, view 2 row) of one kind to view 3 by descriptor: rows of the
-three views' @p positions for every pair whose view-2 descriptor finds a mutual match in view 3. */
-void extendToView3(const Matches& pairs12, const cv::Mat positions[3], const cv::Mat& descriptors2,
-                   const cv::Mat& descriptors3, double ratio, double maxDistance, cv::Mat out[3])
+/** The features of @p view in the rows of @p pairs (their second member): what a feature of a pair of
+views 1-2 looks like in view 2. */
+ImageFeatures pairsInView2(const ImageFeatures& view, const Matches& pointPairs, const Matches& segmentPairs)
 {
-    const cv::Mat pairDescriptors = matchedRows(descriptors2, pairs12, false);
-    const Matches toView3 = matchByDescriptor(pairDescriptors, descriptors3, ratio, maxDistance);
+    ImageFeatures out;
+    out.points = matchedRows(view.points, pointPairs, false);
+    out.pointDescriptors = matchedRows(view.pointDescriptors, pointPairs, false);
+    out.segments = matchedRows(view.segments, segmentPairs, false);
+    out.lineDescriptors = matchedRows(view.lineDescriptors, segmentPairs, false);
+    return out;
+}
+
+/** Rows of the three views' @p positions for each pair of views 1-2 (@p pairs12) that @p toView3
+matches (row of @p pairs12, row in view 3). */
+void tracks(const Matches& pairs12, const Matches& toView3, const cv::Mat positions[3], cv::Mat out[3])
+{
     Matches track1, track2;
     for (const auto& m : toView3)
     {
@@ -48,16 +57,35 @@ FeatureTriplets matchTriplets(const ImageFeatures views[3], const cv::Matx33d K[
     FeatureTriplets out;
 
     const Matches points12 = matchPointsEpipolar(views[0], views[1], F, options);
-    const cv::Mat pointPositions[3] = { views[0].points, views[1].points, views[2].points };
-    extendToView3(points12, pointPositions, views[1].pointDescriptors, views[2].pointDescriptors, options.pointRatio,
-                  std::numeric_limits<double>::infinity(), out.points);
-    out.pointPairs = (int)points12.size();
-
     const Matches segments12 = matchSegmentsEpipolar(views[0], views[1], F, options);
-    const cv::Mat segmentPositions[3] = { views[0].segments, views[1].segments, views[2].segments };
-    extendToView3(segments12, segmentPositions, views[1].lineDescriptors, views[2].lineDescriptors, options.lineRatio,
-                  options.maxLineDistance, out.lines);
+    out.pointPairs = (int)points12.size();
     out.segmentPairs = (int)segments12.size();
+
+    // View 3 against the pairs' features in view 2. Its pose is what is sought, but the geometry of
+    // views 2-3 shows in their descriptor matches: under the fundamental matrix estimated from them,
+    // matching takes the same form as for views 1-2 (candidates near the epipolar lines, then
+    // descriptors), which rejects descriptor matches that no rigid motion explains and lets segments
+    // be matched by the band of their end points. Without enough matches for that geometry, the
+    // descriptors alone decide.
+    const ImageFeatures pairs = pairsInView2(views[1], points12, segments12);
+    Matches points23, segments23;
+    cv::Matx33d F23;
+    if (estimateFundamental(pairs, views[2], options, F23))
+    {
+        points23 = matchPointsEpipolar(pairs, views[2], F23, options);
+        segments23 = matchSegmentsEpipolar(pairs, views[2], F23, options);
+    }
+    else
+    {
+        points23 = matchByDescriptor(pairs.pointDescriptors, views[2].pointDescriptors, options.pointRatio,
+                                     std::numeric_limits<double>::infinity());
+        segments23 = matchByDescriptor(pairs.lineDescriptors, views[2].lineDescriptors, options.lineRatio,
+                                       options.maxLineDistance);
+    }
+    const cv::Mat pointPositions[3] = { views[0].points, views[1].points, views[2].points };
+    const cv::Mat segmentPositions[3] = { views[0].segments, views[1].segments, views[2].segments };
+    tracks(points12, points23, pointPositions, out.points);
+    tracks(segments12, segments23, segmentPositions, out.lines);
 
     times.matching += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     return out;

@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Three-view correspondences from the features of three images: views 1 and 2 matched under their
-// known relative pose, view 3 matched to those pairs by descriptor. The result is what the
+// known relative pose, view 3 matched to those pairs under the fundamental matrix of its descriptor
+// matches with view 2 (by descriptor alone without one). The result is what the
 // module's three-view estimators take (points1..3, lines1..3).
 #ifndef TRIPOSE_SAMPLES_FEATURE_TRIPLETS_HPP
 #define TRIPOSE_SAMPLES_FEATURE_TRIPLETS_HPP
@@ -23,7 +24,9 @@ struct FeatureTriplets
 };
 
 /** Matches three views: views 1-2 under their relative pose (R12, t12; view 1 at the origin),
-then view 3 to those pairs by the descriptor of view 2 (the view a sequence saw last). Adds the
+then view 3 to those pairs' features in view 2 (the view a sequence saw last) under the fundamental
+matrix estimated from their descriptor matches (estimateFundamental), by descriptor alone when
+there are too few. Adds the
 matching time to @p times.
 */
 FeatureTriplets matchTriplets(const ImageFeatures views[3], const cv::Matx33d K[3], const cv::Matx33d& R12,

@@ -8,6 +8,7 @@
 #define TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP
 
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -42,7 +43,13 @@ struct StageTimes
     double points = 0;
     double segmentDetection = 0, segmentDescription = 0; //!< LSD, LBD.
     double matching = 0, estimation = 0;
+    //! Wall-clock time of the feature stages: below their sum when images are processed in parallel.
+    double featuresWall = 0;
+    //! The stages' sum: the work, as if one image after the other on one core.
     double total() const { return points + segmentDetection + segmentDescription + matching + estimation; }
+    //! What a caller waits for.
+    double wallTotal() const { return featuresWall + matching + estimation; }
+    StageTimes& operator+=(const StageTimes& other);
 };
 
 struct FeatureOptions
@@ -58,6 +65,16 @@ Adds the time of each stage to @p times.
 */
 ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const cv::Mat& distCoeffs,
                               const FeatureOptions& options, StageTimes& times);
+
+/** extractFeatures on every image, in parallel (cv::parallel_for_, one task per image and kind of
+feature: on few cores this keeps each core busy through the whole detection, which OpenCV
+parallelises only in parts). @p distCoeffs is empty (no distortion) or has one entry per image. Adds the stage times of
+all images and the wall-clock time to @p times.
+*/
+std::vector<ImageFeatures> extractFeaturesOfImages(const std::vector<cv::Mat>& images,
+                                                   const std::vector<cv::Matx33d>& K,
+                                                   const std::vector<cv::Mat>& distCoeffs,
+                                                   const FeatureOptions& options, StageTimes& times);
 
 } // namespace tripose_samples
 

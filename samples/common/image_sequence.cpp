@@ -69,12 +69,14 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
 {
     const int F = (int)images.size();
     CV_Assert(F >= 2 && (int)cameraMatrices.size() == F);
-    std::vector<ImageFeatures> features(F);
+    std::vector<cv::Matx33d> K;
+    for (const cv::Mat& m : cameraMatrices)
+        K.emplace_back(m);
+    const std::vector<ImageFeatures> features = extractFeaturesOfImages(images, K, {}, featureOptions, times);
     std::vector<int> points(F), segments(F);
     std::vector<cv::Mat> pointPositions(F), segmentPositions(F);
     for (int k = 0; k < F; ++k)
     {
-        features[k] = extractFeatures(images[k], cv::Matx33d(cameraMatrices[k]), cv::Mat(), featureOptions, times);
         points[k] = features[k].points.rows;
         segments[k] = features[k].segments.rows;
         pointPositions[k] = features[k].points;
@@ -89,8 +91,17 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
                                               cv::Matx33d(R01), cv::Vec3d(t01));
     pointTracks.add(1, matchPointsEpipolar(features[0], features[1], F01, matchOptions));
     segmentTracks.add(1, matchSegmentsEpipolar(features[0], features[1], F01, matchOptions));
+    // Later frames have no pose yet: matched under the fundamental matrix of their descriptor matches
+    // (as view 3 of a triplet, feature_triplets.cpp), by descriptor alone without enough of them.
     for (int k = 2; k < F; ++k)
     {
+        cv::Matx33d Fk;
+        if (estimateFundamental(features[k - 1], features[k], matchOptions, Fk))
+        {
+            pointTracks.add(k, matchPointsEpipolar(features[k - 1], features[k], Fk, matchOptions));
+            segmentTracks.add(k, matchSegmentsEpipolar(features[k - 1], features[k], Fk, matchOptions));
+            continue;
+        }
         pointTracks.add(k, matchByDescriptor(features[k - 1].pointDescriptors, features[k].pointDescriptors,
                                              matchOptions.pointRatio, std::numeric_limits<double>::infinity()));
         segmentTracks.add(k, matchByDescriptor(features[k - 1].lineDescriptors, features[k].lineDescriptors,

@@ -4,7 +4,7 @@
 
 // A sequence's observations (sequence_tracking.hpp) built from its images instead of given
 // correspondences: frames 0 and 1 matched under their given poses, every later frame to the one
-// before it by descriptor, the matches chained into tracks.
+// before it under the fundamental matrix of their descriptor matches, the matches chained into tracks.
 #ifndef TRIPOSE_SAMPLES_IMAGE_SEQUENCE_HPP
 #define TRIPOSE_SAMPLES_IMAGE_SEQUENCE_HPP
 
@@ -20,7 +20,8 @@ namespace tripose_samples {
 
 /** Point and segment tracks of @p images (in order; K per frame in @p cameraMatrices, no distortion)
 with the given poses of frames 0 and 1 (R0, t0, R1, t1). Frames 0-1 are matched under their
-relative pose, frame k > 1 to frame k - 1 by descriptor (mutual best and ratio test); a match
+relative pose, frame k > 1 to frame k - 1 under the fundamental matrix estimated from their
+descriptor matches (by descriptor alone, mutual best and ratio test, when there are too few); a match
 extends the track of its feature in frame k - 1, or starts one. A track has a row in every frame,
 NaN where the frame does not see it. Adds the time per stage to @p times.
 */

@@ -24,6 +24,10 @@ import cv2
 import numpy as np
 
 MIN_FEATURES = 4  # the estimators need four features
+SIFT_UPSAMPLING_OFFSET = 0.25  # px, see extract()
+# The refinement's Cauchy loss scale (px) for detected features, as the C++ samples
+# (samples/common/image_estimation.hpp): it keeps the tail of poorly placed features from pulling.
+IMAGE_LOSS_SCALE = 0.5
 
 
 class InputError(Exception):
@@ -100,7 +104,10 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
     if kinds in ("points", "all"):
         keypoints, desc = cv2.SIFT_create(max_points).detectAndCompute(image, None)
         if keypoints:
-            out["points"] = undistort(np.array([k.pt for k in keypoints], np.float64), K, dist)
+            # SIFT's doubled first octave puts every position 0.25 px right of and below the feature
+            # (as the C++ front end, samples/common/image_features.cpp).
+            xy = np.array([k.pt for k in keypoints], np.float64) - SIFT_UPSAMPLING_OFFSET
+            out["points"] = undistort(xy, K, dist)
             out["point_desc"] = desc
     if kinds in ("lines", "all"):
         keylines = cv2.line_descriptor.LSDDetector.createLSDDetector().detect(image, 2, 1)
@@ -201,26 +208,59 @@ def match_by_descriptor(a, b, ratio=0.8, max_distance=np.inf):
     return mutual_best(np.where(distance <= max_distance, distance, np.inf), ratio)
 
 
+def estimate_fundamental(a, b, max_distance=2.0, ratio=0.8, min_inliers=30):
+    """F (x_b^T F x_a = 0) of two views of unknown relative pose from their descriptor matches
+    (RANSAC); None with fewer than min_inliers matches consistent with it."""
+    m = match_by_descriptor(a["point_desc"], b["point_desc"], ratio)
+    if len(m) < min_inliers:
+        return None
+    F, inliers = cv2.findFundamentalMat(a["points"][m[:, 0]], b["points"][m[:, 1]], cv2.FM_RANSAC, max_distance, 0.999)
+    if F is None or F.shape != (3, 3) or int(inliers.sum()) < min_inliers:
+        return None
+    return F
+
+
 def triplets(views, K, R12, t12):
-    """Views 1-2 under their pose, view 3 by view 2's descriptor: (points1..3, lines1..3)."""
+    """Views 1-2 under their pose, view 3 against the pairs' view-2 features under the fundamental
+    matrix of their descriptor matches (by descriptor alone without one): (points1..3, lines1..3)."""
     F = fundamental(K[0], K[1], R12, t12)
+    pairs = {"points": match_points_epipolar(views[0], views[1], F),
+             "segments": match_segments_epipolar(views[0], views[1], F)}
+    in2 = {"points": views[1]["points"][pairs["points"][:, 1]],
+           "point_desc": views[1]["point_desc"][pairs["points"][:, 1]],
+           "segments": views[1]["segments"][pairs["segments"][:, 1]],
+           "line_desc": views[1]["line_desc"][pairs["segments"][:, 1]]}
+    F23 = estimate_fundamental(in2, views[2])
+    if F23 is not None:
+        to3 = {"points": match_points_epipolar(in2, views[2], F23),
+               "segments": match_segments_epipolar(in2, views[2], F23)}
+    else:
+        to3 = {"points": match_by_descriptor(in2["point_desc"], views[2]["point_desc"]),
+               "segments": match_by_descriptor(in2["line_desc"], views[2]["line_desc"], max_distance=80)}
     out = {}
-    for kind, desc, pairs, extra in (
-            ("points", "point_desc", match_points_epipolar(views[0], views[1], F), {}),
-            ("segments", "line_desc", match_segments_epipolar(views[0], views[1], F), {"max_distance": 80})):
-        to3 = match_by_descriptor(views[1][desc][pairs[:, 1]], views[2][desc], **extra)
-        out[kind] = [views[0][kind][pairs[to3[:, 0], 0]], views[1][kind][pairs[to3[:, 0], 1]],
-                     views[2][kind][to3[:, 1]]]
+    for kind in ("points", "segments"):
+        p, t = pairs[kind], to3[kind]
+        out[kind] = [views[0][kind][p[t[:, 0], 0]], views[1][kind][p[t[:, 0], 1]], views[2][kind][t[:, 1]]]
     return out["points"], out["segments"]
 
 
 # --- estimate ------------------------------------------------------------------------------------
 
 def estimate_pose(points, lines, K, R12, t12, threshold, seed):
-    """One call of the tripose package's robust estimator (RANSAC, then refinement)."""
+    """The tripose package's robust estimator (RANSAC, then refinement), the refinement over the
+    inliers repeated under the Cauchy loss of the C++ samples (the package's RANSAC refines by least
+    squares)."""
     import tripose
-    return tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
+    pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
                                                    K, R12, t12, threshold=threshold, refine=True, seed=seed)
+    if pose["num_inliers"] == 0:
+        return pose
+    p, l = np.asarray(pose["point_inliers"], bool), np.asarray(pose["line_inliers"], bool)
+    refined = tripose.refine_pose_line_point(points[0][p], points[1][p], points[2][p], lines[0][l], lines[1][l],
+                                             lines[2][l], K, R12, t12, pose["R"], pose["t"], loss="cauchy",
+                                             loss_scale=IMAGE_LOSS_SCALE)
+    pose["R"], pose["t"] = refined["R"], refined["t"]
+    return pose
 
 
 def write_result(path, calib, points, lines, pose):

@@ -200,9 +200,26 @@ def test_bad_input_is_named_and_nothing_is_written(tmp_path, valid_scene, kind, 
     (["--max-iterations", "0", "--method", "ransac"], "argument --max-iterations"),
     (["--max-iterations", "2.5", "--method", "ransac"], "argument --max-iterations"),
     (["--refine", "2", "--method", "ransac"], "argument --refine"),
+    (["--loss", "tukey", "--method", "ransac"], "argument --loss"),
+    (["--loss-scale", "0", "--method", "ransac"], "argument --loss-scale"),
+    (["--loss-scale", "-2", "--method", "ransac"], "argument --loss-scale"),
 ])
 def test_bad_arguments_are_named(tmp_path, valid_scene, args, name):
     expect_rejected(tmp_path, valid_scene, name, *args)
+
+
+def test_loss_reaches_the_refinement(tmp_path):
+    # Noisy features: a Cauchy loss weighs the residuals otherwise than least squares, so the refined
+    # poses differ; the same loss named twice gives the same pose.
+    scene = make_scene(tmp_path, points=30, lines=10, seed=3, noise=1.0)
+    poses = {}
+    for name, extra in (("squared", []), ("cauchy", ["--loss", "cauchy", "--loss-scale", "0.5"]),
+                        ("cauchy_again", ["--loss", "cauchy", "--loss-scale", "0.5"])):
+        proc, out = estimate(tmp_path, scene, "--method", "ransac", *extra, name=f"{name}.yml")
+        assert proc.returncode == 0, proc.stderr
+        poses[name] = read_matrices(out, ["R"])["R"]
+    assert np.abs(poses["squared"] - poses["cauchy"]).max() > 1e-6
+    assert np.abs(poses["cauchy"] - poses["cauchy_again"]).max() == 0
 
 
 def test_unparsable_file_is_rejected(tmp_path):
