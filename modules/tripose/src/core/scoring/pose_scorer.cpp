@@ -28,7 +28,10 @@ constexpr double kMinInverseDepthShare = 0.1;
 constexpr double kSlideConditioning = 1e-10;
 // Gauss-Newton steps of a slide: a feature that a short known baseline leaves loose in depth may
 // move by a large part of it, where one linearisation of the projection falls short.
-constexpr int kSlideIterations = 3;
+constexpr int kSlideIterations = 2;
+// An observation whose residual without the slide is within this share of the inlier bound is
+// scored as it is: the slide could only lower a cost that already counts it an inlier.
+constexpr double kSettledShare = 0.25;
 
 /** Moment, in a camera, of the line through the points at inverse depths rho on two rays from one
 origin (e: the origin in the camera; fA, fB: the rays' directions rotated into it), times
@@ -186,7 +189,7 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
             double r2 = threshold2, e2 = 0;
             bool measured;
             if (slides_)
-                measured = slidPointResidual2(camera, p, term, e.pointSlides[k], e2);
+                measured = slidPointResidual2(camera, p, term, e.pointSlides[k], threshold2, e2);
             else if ((measured = pointResidual(camera, p.toCamera(term.X), term.observed, r)))
                 e2 = r.squaredNorm();
             if (measured)
@@ -217,7 +220,8 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
             double r2 = threshold2, e2 = 0;
             bool measured, behind = false;
             if (slides_)
-                measured = slidLineResidual2(camera, p, term, e.lineSlides[k], e2, behind);
+                // A line is an inlier for 0.5 e2 < threshold2 (the mean of its two distances).
+                measured = slidLineResidual2(camera, p, term, e.lineSlides[k], 2 * threshold2, e2, behind);
             else
             {
                 const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
@@ -322,7 +326,7 @@ void PoseScorer::knownLineSlide(const std::vector<CameraPose>& poses, int i, Kno
 }
 
 bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& pose, const PointTerm& term,
-                                    const KnownSlide<1>& slide, double& r2) const
+                                    const KnownSlide<1>& slide, double bound2, double& r2) const
 {
     // In a camera at pose, the point at inverse depth rho on the ray (origin c, direction u) is
     // (R c + t) + R u / rho: rho e + f up to the scale its projection ignores.
@@ -333,6 +337,8 @@ bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& 
     if (!pointResidual(camera, rho0 * e + f, term.observed, r, &Jh, 0.0))
         return false;
     r2 = r.squaredNorm();
+    if (std::isfinite(bound2) && r2 <= kSettledShare * bound2)
+        return true;
     double rho = rho0;
     for (int iteration = 0; iteration < kSlideIterations; ++iteration)
     {
@@ -343,6 +349,9 @@ bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& 
         const double a = J.squaredNorm() + slide.H(0, 0), b = J.dot(r) + slide.H(0, 0) * (rho - rho0) + slide.g(0);
         if (!(a > 0))
             break;
+        // The first step's model minimum r.r - b^2 / a: past the bound the slide changes no verdict.
+        if (iteration == 0 && r2 - b * b / a >= bound2)
+            return true;
         // The point stays in front of the first known view (rho > 0; rho = 0 is the point at infinity).
         rho = std::max(rho - b / a, kMinInverseDepthShare * rho0);
     }
@@ -356,7 +365,7 @@ bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& 
 }
 
 bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& pose, const LineTerm& term,
-                                   const KnownSlide<2>& slide, double& r2, bool& behind) const
+                                   const KnownSlide<2>& slide, double bound2, double& r2, bool& behind) const
 {
     const Eigen::Vector3d e = pose.toCamera(slide.origin);
     const Eigen::Vector3d fA = pose.R * slide.rays.col(0), fB = pose.R * slide.rays.col(1);
@@ -375,6 +384,8 @@ bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& p
     if (behind || !lineResidual(camera, slidMoment(e, fA, fB, rho0), term.end0, term.end1, r, &Jm))
         return false;
     r2 = r.squaredNorm();
+    if (std::isfinite(bound2) && r2 <= kSettledShare * bound2)
+        return true;
     Eigen::Vector2d rho = rho0;
     for (int iteration = 0; iteration < kSlideIterations; ++iteration)
     {
@@ -390,7 +401,11 @@ bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& p
             break;
         Eigen::Matrix2d inverse;
         inverse << M(1, 1), -M(0, 1), -M(1, 0), M(0, 0);
-        const Eigen::Vector2d next = rho - (inverse * v) / det;
+        const Eigen::Vector2d step = -(inverse * v) / det;
+        // The first step's model minimum r.r + v . step: past the bound the slide changes no verdict.
+        if (iteration == 0 && r2 + v.dot(step) >= bound2)
+            return true;
+        const Eigen::Vector2d next = rho + step;
         for (int end = 0; end < 2; ++end)
             rho(end) = std::max(next(end), kMinInverseDepthShare * rho0(end));
     }

@@ -142,11 +142,13 @@ private:
     void knownLineSlide(const std::vector<CameraPose>& poses, int i, KnownSlide<2>& slide) const;
     /** Squared residual (px^2, both coordinates or both end-point distances) of @p term in a view at
     @p pose with its structure slid (KnownDepth::Slides); false when it cannot be measured, with
-    @p behind set when that is because the feature is behind the camera. */
+    @p behind set when that is because the feature is behind the camera. @p bound2: the squared
+    residual that makes an inlier; where the slide cannot change that verdict (well within it
+    without the slide, or beyond it after the slide's first step) the residual is left unslid. */
     bool slidPointResidual2(const Intrinsics& camera, const CameraPose& pose, const PointTerm& term,
-                            const KnownSlide<1>& slide, double& r2) const;
+                            const KnownSlide<1>& slide, double bound2, double& r2) const;
     bool slidLineResidual2(const Intrinsics& camera, const CameraPose& pose, const LineTerm& term,
-                           const KnownSlide<2>& slide, double& r2, bool& behind) const;
+                           const KnownSlide<2>& slide, double bound2, double& r2, bool& behind) const;
 
     const ViewSet& set_;
     bool slides_;
