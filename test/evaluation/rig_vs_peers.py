@@ -61,6 +61,8 @@ def rig_views(inputs):
 
 
 def poselib_generalized(inputs, threshold_px, seed):
+    """PoseLib's generalized absolute pose RANSAC on @inputs (a "rig_inputs" dump): R, t of the left
+    time-B camera and the call's time (us), the triangulation not included."""
     import poselib
 
     views, K = rig_views(inputs)
@@ -74,7 +76,8 @@ def poselib_generalized(inputs, threshold_px, seed):
     t0 = time.perf_counter()
     pose, _info = poselib.estimate_generalized_absolute_pose([v[0] for v in views], [v[1] for v in views],
                                                              [left, right], [camera, camera], ransac, {})
-    return np.asarray(pose.R), 1e6 * (time.perf_counter() - t0)
+    elapsed = 1e6 * (time.perf_counter() - t0)
+    return np.asarray(pose.R), np.asarray(pose.t), elapsed
 
 
 def opencv_pnp(inputs, threshold_px):
@@ -92,8 +95,8 @@ def opencv_pnp(inputs, threshold_px):
         rvec, tvec = cv2.solvePnPRefineLM(X[inliers], pixels[inliers], K[2], None, rvec, tvec)
     elapsed = 1e6 * (time.perf_counter() - t0)
     if not ok:
-        return None, elapsed
-    return cv2.Rodrigues(rvec)[0], elapsed
+        return None, None, elapsed
+    return cv2.Rodrigues(rvec)[0], tvec.ravel(), elapsed
 
 
 def peer_trial(trial, repeats, threshold):
@@ -104,7 +107,7 @@ def peer_trial(trial, repeats, threshold):
                        ("opencv", lambda: opencv_pnp(inputs, threshold))):
         times, R = [], None
         for _ in range(repeats):
-            R, us = call()
+            R, _t, us = call()
             times.append(us)
         out[name] = (float(np.median(times)), rotation_error_deg(np.asarray(R), R_gt) if R is not None else np.inf)
     return out
