@@ -96,8 +96,8 @@ def test_ransac_survives_outliers_that_break_the_linear_solver(smoke):
     _, results = smoke
     assert {g["key"]["config"] for g in results["outliers"]} == {"20P+20L", "3P+60L", "rig 100P+40L"}
     # 20 points + 20 lines and the line-heavy 3 points + 60 lines: RANSAC + refine stays near the
-    # truth where 30 % wrong matches in view 3 throw the linear solver tens of degrees off (over 5
-    # degrees in every full-size row, 0.2 degrees for RANSAC).
+    # truth where 30 % wrong matches in view 3 throw the linear solver degrees off (full run, 10-60 %
+    # wrong matches: 6-96 degrees for the linear solver, under 0.3 for RANSAC + refine).
     for config in ("20P+20L", "3P+60L"):
         g = _groups(results, "outliers", config=config, outliers=0.3)[0]
         ours, linear = g["methods"]["ransac"]["rot_deg"]["median"], g["methods"]["linear"]["rot_deg"]["median"]
@@ -113,8 +113,8 @@ def test_rig_ransac_stays_near_the_four_view_limit_under_outliers(smoke):
         g = _groups(results, "outliers", config="rig 100P+40L", outliers=ratio)[0]
         methods = g["methods"]
         assert {"stereo_ransac", "stereo_ml_from_truth", "poselib-generalized"} <= set(methods), ratio
-        # The limit is refined from the truth on the true matches: outliers do not move it (0.04-0.06
-        # degrees at both ratios in the full run), so the robust estimate must come near it.
+        # The limit is refined from the truth on the true matches, so outliers hardly move it (0.053 and
+        # 0.067 degrees in the full run, where the stereo RANSAC's median is 1.01x and 1.03x it).
         limit = methods["stereo_ml_from_truth"]["rot_deg"]["median"]
         assert limit < 0.2, ratio
         assert methods["stereo_ransac"]["fails"] == 0, ratio
