@@ -18,8 +18,9 @@ B) for every method:
   with both time-B cameras, points only, on the points triangulated from the rig at time A;
 - OpenCV: solvePnPRansac (AP3P, 10000 iterations at most, confidence 0.999) in the left time-B
   camera on the same points, then solvePnPRefineLM on its inliers;
-- the four-view maximum-likelihood refinement from the true pose (refinePoseLinePointStereo): the
-  accuracy the observations allow, for the count of scenes where the estimate stops short of it.
+- the four-view maximum-likelihood refinement from the true pose on the true matches
+  (refinePoseLinePointStereo): the accuracy the observations allow, for the count of scenes where
+  the estimate stops short of it.
 The peers are timed without the triangulation. Every time is the median of --repeats calls on one
 scene; a row gives the median over the scenes, the ratio peer time / tripose time (above 1: tripose
 is faster), the median rotation error, tripose's slowest scene over its median, and the scenes in
