@@ -18,8 +18,9 @@ B) for every method:
   with both time-B cameras, points only, on the points triangulated from the rig at time A;
 - OpenCV: solvePnPRansac (AP3P, 10000 iterations at most, confidence 0.999) in the left time-B
   camera on the same points, then solvePnPRefineLM on its inliers;
-- the four-view maximum-likelihood refinement from the true pose (refinePoseLinePointStereo): the
-  accuracy the observations allow, for the count of scenes where the estimate stops short of it.
+- the four-view maximum-likelihood refinement from the true pose on the true matches
+  (refinePoseLinePointStereo): the accuracy the observations allow, for the count of scenes where
+  the estimate stops short of it.
 The peers are timed without the triangulation. Every time is the median of --repeats calls on one
 scene; a row gives the median over the scenes, the ratio peer time / tripose time (above 1: tripose
 is faster), the median rotation error, tripose's slowest scene over its median, and the scenes in
@@ -61,6 +62,8 @@ def rig_views(inputs):
 
 
 def poselib_generalized(inputs, threshold_px, seed):
+    """PoseLib's generalized absolute pose RANSAC on @inputs (a "rig_inputs" dump): R, t of the left
+    time-B camera and the call's time (us), the triangulation not included."""
     import poselib
 
     views, K = rig_views(inputs)
@@ -74,7 +77,8 @@ def poselib_generalized(inputs, threshold_px, seed):
     t0 = time.perf_counter()
     pose, _info = poselib.estimate_generalized_absolute_pose([v[0] for v in views], [v[1] for v in views],
                                                              [left, right], [camera, camera], ransac, {})
-    return np.asarray(pose.R), 1e6 * (time.perf_counter() - t0)
+    elapsed = 1e6 * (time.perf_counter() - t0)
+    return np.asarray(pose.R), np.asarray(pose.t), elapsed
 
 
 def opencv_pnp(inputs, threshold_px):
@@ -92,8 +96,8 @@ def opencv_pnp(inputs, threshold_px):
         rvec, tvec = cv2.solvePnPRefineLM(X[inliers], pixels[inliers], K[2], None, rvec, tvec)
     elapsed = 1e6 * (time.perf_counter() - t0)
     if not ok:
-        return None, elapsed
-    return cv2.Rodrigues(rvec)[0], elapsed
+        return None, None, elapsed
+    return cv2.Rodrigues(rvec)[0], tvec.ravel(), elapsed
 
 
 def peer_trial(trial, repeats, threshold):
@@ -104,7 +108,7 @@ def peer_trial(trial, repeats, threshold):
                        ("opencv", lambda: opencv_pnp(inputs, threshold))):
         times, R = [], None
         for _ in range(repeats):
-            R, us = call()
+            R, _t, us = call()
             times.append(us)
         out[name] = (float(np.median(times)), rotation_error_deg(np.asarray(R), R_gt) if R is not None else np.inf)
     return out

@@ -16,6 +16,7 @@ command gives the same errors (times vary with the machine).
 """
 
 import argparse
+import functools
 import json
 import math
 import os
@@ -41,6 +42,19 @@ REGIMES = {
     "planar large": ["--motion", "large", "--planar"],
     "planar small": ["--motion", "small", "--planar"],
 }
+# The outlier experiment's configurations (1 px noise, wrong matches in the new view(s)): the
+# paper's scene with 20 points + 20 lines, a line-heavy one with 3 points + 60 lines (both large
+# motion, views 1-2 known), and the stereo rig with 100 points + 40 lines (the rig at time A known,
+# wrong matches at time B; SyntheticStereoParams' defaults). Each gives its tripose_evaluate
+# arguments, the methods it runs (None: all), its PoseLib peer (PEERS) and its title.
+OUTLIER_CONFIGS = {
+    "20P+20L": dict(source="synthetic", points=20, lines=20, methods=None, peer="pnpl",
+                    title="20 points + 20 lines, large motion, outliers in view 3"),
+    "3P+60L": dict(source="synthetic", points=3, lines=60, methods="linear,ransac,ml_from_truth",
+                   peer="pnpl-adaptive", title="3 points + 60 lines, large motion, outliers in view 3"),
+    "rig 100P+40L": dict(source="stereo", points=100, lines=40, methods="stereo_ransac,stereo_ml_from_truth",
+                         peer="generalized", title="stereo rig, 100 points + 40 lines, outliers at time B"),
+}
 # The paper's Fig. 6 draws, as (lines, points).
 VGG_CONFIGS = [(2, 2), (2, 3), (2, 4), (3, 3), (4, 2), (4, 4), (6, 6), (10, 10)]
 
@@ -64,6 +78,8 @@ METHODS = {
     "three_view_ransac": "three-view RANSAC + refine, views 1-3 (ours)",
     "tri+iterative": "triangulate + solvePnP ITERATIVE",
     "stereo_ml_from_truth": "four-view ML from ground truth (limit)",
+    # The rig's PoseLib peer: both time-B cameras, the points triangulated from the rig at A.
+    "poselib-generalized": "triangulate + PoseLib generalized absolute pose, min_iterations 0",
 }
 STYLE = {
     "linear": dict(color="tab:blue", marker="o"),
@@ -82,11 +98,15 @@ STYLE = {
     "three_view_ransac": dict(color="tab:brown", marker=">"),
     "tri+iterative": dict(color="tab:red", marker="v"),
     "stereo_ml_from_truth": dict(color="black", marker="x", linestyle="--"),
+    "poselib-generalized": dict(color="goldenrod", marker="p"),
 }
 # Column and legend order of the stereo regime: ours on four views, ours on views 1-3, the peers, the limit.
 STEREO_METHODS = ["stereo_ransac", "stereo_multi_start", "stereo_linear+refine", "stereo_linear", "three_view_ransac",
                   "three_view_linear+refine", "poselib", "poselib-adaptive", "tri+sqpnp", "tri+iterative",
                   "stereo_ml_from_truth"]
+# Column order of the outlier tables: ours, the peers, the limits.
+OUTLIER_METHODS = ["ransac", "stereo_ransac", "linear", "linear+refine", "tri+sqpnp", "tri+epnp", "poselib",
+                   "poselib-adaptive", "poselib-generalized", "ml_from_truth", "stereo_ml_from_truth"]
 # The stereo regime's decision: the final estimate within this factor of the four-view ML limit in
 # median rotation error (issue 14).
 STEREO_ML_FACTOR = 1.05
@@ -94,13 +114,14 @@ STEREO_ML_FACTOR = 1.05
 SIZES = {
     # Smoke: every figure and table, few trials; CI runs it in well under 3 minutes on 2 cores.
     "smoke": dict(trials=20, noise=[0.0, 1.0, 3.0], fig4_n=[4, 8], fig5_n=[4, 10, 45], fig5_trials=10,
-                  fig5_repeats=3, vgg_trials=10, outliers=[0.0, 0.3], outlier_trials=10,
+                  fig5_repeats=3, vgg_trials=10, outliers=[0.0, 0.3], outlier_trials=10, rig_outlier_trials=10,
                   regime_n=[4, 10], regime_noise=[1.0], regime_trials=10,
                   stereo_n=[4, 10], stereo_noise=[1.0], stereo_trials=10),
     # Full: the paper's 500 trials per point (100 runs per VGG configuration).
     "full": dict(trials=500, noise=[0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0], fig4_n=[4, 5, 6, 7, 8],
                  fig5_n=[4, 5, 6, 8, 10, 15, 20, 25, 30, 35, 40, 45], fig5_trials=500, fig5_repeats=5,
                  vgg_trials=100, outliers=[0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6], outlier_trials=500,
+                 rig_outlier_trials=500,
                  regime_n=[4, 10], regime_noise=[0.5, 1.0, 2.0], regime_trials=200,
                  stereo_n=[4, 10], stereo_noise=[0.5, 1.0, 1.5, 2.0, 3.0], stereo_trials=500),
 }
@@ -162,7 +183,14 @@ def rotation_error_deg(A, B):
     return math.degrees(2.0 * math.asin(min(1.0, np.linalg.norm(A - B) / (2.0 * math.sqrt(2.0)))))
 
 
-def add_poselib(trial):
+# PoseLib's defaults run at least 1000 RANSAC iterations; the adaptive variant lets its stopping rule
+# decide alone, which is the fair speed comparison with our adaptive RANSAC.
+POSELIB_VARIANTS = (("poselib", None), ("poselib-adaptive", 0))
+
+
+def add_poselib(trial, variants=POSELIB_VARIANTS):
+    """Adds PoseLib's PnPL on the structure triangulated from views 1-2, as the (name, min_iterations)
+    @variants."""
     inputs = trial.pop("inputs")
     R_gt = np.array(inputs["R_gt"], dtype=float)
     t_gt = np.array(inputs["t_gt"], dtype=float).reshape(3)
@@ -171,9 +199,7 @@ def add_poselib(trial):
     # PoseLib's minimal solvers need three features (P3P, P2P1LL, P1P2LL, P3LL).
     if n_points + n_lines < 3:
         return trial
-    # PoseLib's defaults run at least 1000 RANSAC iterations; the adaptive variant lets its stopping
-    # rule decide alone, which is the fair speed comparison with our adaptive RANSAC.
-    for name, min_iterations in (("poselib", None), ("poselib-adaptive", 0)):
+    for name, min_iterations in variants:
         try:
             R, t, us = _poselib_pose(inputs, trial["threshold"], trial["seed"] * 100003 + trial["trial"],
                                      min_iterations)
@@ -191,18 +217,57 @@ def add_poselib(trial):
     return trial
 
 
+def add_poselib_rig(trial):
+    """Adds PoseLib's generalized absolute pose on the stereo rig (rig_vs_peers.poselib_generalized:
+    both time-B cameras, the points triangulated from the rig at A, min_iterations 0)."""
+    from rig_vs_peers import poselib_generalized
+
+    trial.pop("inputs")
+    inputs = trial.pop("rig_inputs")
+    R_gt = np.array(inputs["R_gt"], dtype=float)
+    t_gt = np.array(inputs["t_gt"], dtype=float).reshape(3)
+    try:
+        R, t, us = poselib_generalized(inputs, trial["threshold"], trial["seed"] * 1009 + trial["trial"])
+        ok = bool(np.all(np.isfinite(R)) and np.all(np.isfinite(t)))
+        trial["methods"]["poselib-generalized"] = {
+            "ok": ok,
+            "rot_deg": rotation_error_deg(R, R_gt) if ok else None,
+            "t_rel": float(np.linalg.norm(t - t_gt) / np.linalg.norm(t_gt)) if ok else None,
+            # The triangulation (the rig's points and lines at A) is part of this peer's work, as above.
+            "time_us": us + inputs["triangulation_us"],
+        }
+    except Exception:  # noqa: BLE001 - a failed PoseLib call is a failure of that peer on this trial
+        trial["methods"]["poselib-generalized"] = {"ok": False, "rot_deg": None, "t_rel": None, "time_us": None}
+    return trial
+
+
+# The PoseLib peers by name (OUTLIER_CONFIGS); every other experiment gets "pnpl".
+PEERS = {
+    "pnpl": add_poselib,
+    "pnpl-adaptive": functools.partial(add_poselib, variants=(("poselib-adaptive", 0),)),
+    "generalized": add_poselib_rig,
+}
+
+
+def peer_for(name, key):
+    """The function that adds the PoseLib peer to a trial of experiment @name, group @key."""
+    if name == "outliers":
+        return PEERS[OUTLIER_CONFIGS[key["config"]]["peer"]]
+    return PEERS["pnpl"]
+
+
 # ------------------------------------------------------------------------------------------------
 # Running experiments
 
-def run_tool(tool, args, progress, poselib=True):
-    """Runs one tripose_evaluate invocation; returns its trials (with the PoseLib peer added)."""
-    cmd = [str(tool)] + [str(a) for a in args] + (["--dump-inputs"] if poselib else [])
+def run_tool(tool, args, progress, peer=add_poselib):
+    """Runs one tripose_evaluate invocation; returns its trials (with the PoseLib @peer added, if any)."""
+    cmd = [str(tool)] + [str(a) for a in args] + (["--dump-inputs"] if peer else [])
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     trials = []
     for line in proc.stdout:
         trial = json.loads(line)
-        if poselib:
-            trial = add_poselib(trial)
+        if peer:
+            trial = peer(trial)
         trials.append(trial)
         progress.update(1)
     err = proc.stderr.read()
@@ -267,10 +332,16 @@ def plan(size):
             jobs.append(("fig5", key, ["synthetic", "--points", n, "--lines", n, "--noise", 1.0, "--motion", motion,
                                        "--trials", cfg["fig5_trials"], "--repeats", cfg["fig5_repeats"], "--seed", 3000],
                          cfg["fig5_trials"]))
-    for ratio in cfg["outliers"]:
-        key = dict(motion="large", points=20, lines=20, noise=1.0, outliers=ratio)
-        jobs.append(("outliers", key, ["synthetic", "--points", 20, "--lines", 20, "--noise", 1.0, "--outliers", ratio,
-                                       "--trials", cfg["outlier_trials"], "--seed", 4000], cfg["outlier_trials"]))
+    for config, spec in OUTLIER_CONFIGS.items():
+        trials = cfg["rig_outlier_trials"] if spec["source"] == "stereo" else cfg["outlier_trials"]
+        methods = ["--methods", spec["methods"]] if spec["methods"] else []
+        for ratio in cfg["outliers"]:
+            key = dict(config=config, points=spec["points"], lines=spec["lines"], noise=1.0, outliers=ratio)
+            if spec["source"] == "synthetic":
+                key["motion"] = "large"
+            jobs.append(("outliers", key, [spec["source"], "--points", spec["points"], "--lines", spec["lines"],
+                                           "--noise", 1.0, "--outliers", ratio] + methods +
+                         ["--trials", trials, "--seed", 4000], trials))
     for regime, regime_args in REGIMES.items():
         for n in cfg["regime_n"]:
             for noise in cfg["regime_noise"]:
@@ -301,7 +372,7 @@ def run_all(size, tool, jobs_filter=None):
     with tqdm(total=sum(j[3] for j in jobs), unit="trial", desc=f"evaluation ({size})", file=sys.stderr) as bar:
         for name, key, args, _ in jobs:
             bar.set_postfix_str(f"{name} {' '.join(f'{k}={v}' for k, v in key.items())}", refresh=False)
-            trials = run_tool(tool, args, bar)
+            trials = run_tool(tool, args, bar, peer_for(name, key))
             results.setdefault(name, []).append({"key": key, "methods": summarise_group(trials, raw=name == "fig6")})
     return results
 
@@ -502,40 +573,56 @@ def plot_time(results, out_dir):
 
 
 def plot_outliers(results, out_dir):
+    """Median rotation error, translation error and time vs the outlier ratio, one row per
+    configuration of OUTLIER_CONFIGS."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    groups = results.get("outliers", [])
-    if not groups:
+    configs = [c for c in OUTLIER_CONFIGS if _group(results, "outliers", config=c)]
+    if not configs:
         return []
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), squeeze=False)
-    for c, (quantity, label) in enumerate((("rot_deg", "median rotation error (deg)"),
-                                           ("t_rel", "median rel. translation error"), ("time_us", "median time (us)"))):
-        ax = axes[0][c]
-        for method in METHODS:
-            pts = []
-            for g in sorted(groups, key=lambda g: g["key"]["outliers"]):
-                s = g["methods"].get(method)
-                if s is None:
-                    continue
-                v = s["time_us"]["median"] if quantity == "time_us" else s[quantity]["median"]
-                if v is not None and math.isfinite(v):
-                    pts.append((100 * g["key"]["outliers"], max(v, 1e-12)))
-            if pts:
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], label=METHODS[method], markersize=4, **STYLE[method])
-        ax.set_yscale("log")
-        ax.set_xlabel("outliers in view 3 (%)")
-        ax.set_ylabel(label, fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
-    fig.suptitle("20 points + 20 lines, noise 1 px, large motion", fontsize=10)
-    fig.tight_layout(rect=(0, 0.1, 1, 0.95))
+    fig, axes = plt.subplots(len(configs), 3, figsize=(13, 3.4 * len(configs)), squeeze=False)
+    for r, config in enumerate(configs):
+        groups = sorted(_group(results, "outliers", config=config), key=lambda g: g["key"]["outliers"])
+        for c, (quantity, label) in enumerate((("rot_deg", "median rotation error (deg)"),
+                                               ("t_rel", "median rel. translation error"),
+                                               ("time_us", "median time (us)"))):
+            ax = axes[r][c]
+            for method in OUTLIER_METHODS:
+                pts = _outlier_curve(groups, method, quantity)
+                if pts:
+                    ax.plot([p[0] for p in pts], [p[1] for p in pts], label=METHODS[method], markersize=4,
+                            **STYLE[method])
+            ax.set_yscale("log")
+            ax.set_xlabel("outliers (%)", fontsize=8)
+            ax.set_ylabel(label, fontsize=8)
+            ax.grid(True, which="both", alpha=0.3)
+            if c == 1:
+                ax.set_title(OUTLIER_CONFIGS[config]["title"] + ", noise 1 px", fontsize=9)
+    legend = {}
+    for row in axes:
+        for handle, label in zip(*row[0].get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    fig.legend(list(legend.values()), list(legend), loc="lower center", ncol=4, fontsize=8)
+    fig.tight_layout(rect=(0, 0.04 + 0.025 * (len(legend) // 4), 1, 1))
     path = out_dir / "outliers.png"
     fig.savefig(path, dpi=90)
     plt.close(fig)
     return [path]
+
+
+def _outlier_curve(groups, method, quantity):
+    """(outlier %, median @quantity) of @method over @groups, finite values only (log axes: 0 at a floor)."""
+    pts = []
+    for g in groups:
+        s = g["methods"].get(method)
+        if s is None:
+            continue
+        v = (s["time_us"]["median"] if s["time_us"] else None) if quantity == "time_us" else s[quantity]["median"]
+        if v is not None and math.isfinite(v):
+            pts.append((100 * g["key"]["outliers"], max(v, 1e-12)))
+    return pts
 
 
 def plot_vgg(results, out_dir):
@@ -598,10 +685,12 @@ def _fmt(x, digits=3):
     return f"{x:.{digits}g}"
 
 
-def tables_markdown(results, size, machine, command):
+def tables_markdown(results, size, machine, runs):
+    commands = "; ".join(f"`{run['command']}` ({', '.join(exps)}, {run['elapsed_s']:.0f} s)"
+                         for run, exps in _runs_by_command(runs))
     out = [f"<!-- Generated by test/evaluation/run_evaluation.py --size {size}; do not edit. -->", "",
            f"Size: **{size}**. Machine: {machine['cpu']}, {machine['cores']} cores, {machine['system']}. "
-           f"Command: `{command}`.", ""]
+           f"Commands: {commands}.", ""]
 
     def method_table(title, groups, keycols, stat, quantities=("rot_deg", "t_rel"), with_time=False, order=METHODS):
         out.append(f"### {title}")
@@ -666,10 +755,13 @@ def tables_markdown(results, size, machine, command):
             out.append("| " + " | ".join(cells) + " |")
         out.append("")
 
-    groups = results.get("outliers", [])
-    if groups:
-        method_table("Outliers (20P+20L, 1 px, large motion): median rotation error (deg) / relative translation "
-                     "error / median time", groups, ["outliers"], "median", with_time=True)
+    for config, spec in OUTLIER_CONFIGS.items():
+        groups = sorted(_group(results, "outliers", config=config), key=lambda g: g["key"]["outliers"])
+        if groups:
+            trials = max(s["n"] for s in groups[0]["methods"].values())
+            method_table(f"Outliers ({spec['title']}, 1 px, {trials} scenes per ratio): median rotation error (deg) / "
+                         "relative translation error / median time", groups, ["outliers"], "median", with_time=True,
+                         order=OUTLIER_METHODS)
 
     for regime in REGIMES:
         groups = [g for g in results.get("regimes", []) if g["key"]["regime"] == regime]
@@ -704,6 +796,44 @@ def tables_markdown(results, size, machine, command):
 
 
 # ------------------------------------------------------------------------------------------------
+# Partial runs (--only): the experiments not rerun are kept from the summary already in <out>.
+
+def runs_of(summary):
+    """Experiment -> the run that produced it ({"command", "elapsed_s"}); a summary written before runs
+    were recorded gets its one command for every experiment."""
+    if "runs" in summary:
+        return summary["runs"]
+    return {name: {"command": summary["command"], "elapsed_s": summary["elapsed_s"]} for name in summary["results"]}
+
+
+def merge_previous(path, size, results, runs):
+    """Adds to @results (and @runs) the experiments of the summary at @path that this run did not
+    redo, if that summary has the same size; returns both."""
+    if not path.is_file():
+        return results, runs
+    previous = json.loads(path.read_text())
+    if previous["size"] != size:
+        return results, runs
+    previous_runs = runs_of(previous)
+    merged = {name: groups for name, groups in previous["results"].items() if name not in results}
+    merged.update(results)
+    merged_runs = {name: previous_runs[name] for name in merged if name not in runs}
+    merged_runs.update(runs)
+    return merged, merged_runs
+
+
+def _runs_by_command(runs):
+    """[(run, [experiments])] in the order of first appearance, one entry per distinct command."""
+    out = []
+    for name, run in runs.items():
+        for seen, names in out:
+            if seen == run:
+                names.append(name)
+                break
+        else:
+            out.append((run, [name]))
+    return out
+
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -711,7 +841,8 @@ def main(argv=None):
     parser.add_argument("--out", type=Path, default=REPO / "doc" / "evaluation",
                         help="output folder for PNGs, tables.md and data/summary.json (default doc/evaluation)")
     parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers", "regimes", "stereo"],
-                        help="run only these experiments")
+                        help="run only these experiments (the others are kept from <out>/data/summary.json when "
+                             "it has the same size)")
     parser.add_argument("--plot-only", action="store_true",
                         help="redraw the figures and tables from <out>/data/summary.json without running anything")
     args = parser.parse_args(argv)
@@ -720,8 +851,8 @@ def main(argv=None):
     if args.plot_only:
         summary = json.loads((out / "data" / "summary.json").read_text())
         args.size = summary["size"]
-        results, machine, command, elapsed = (summary["results"], summary["machine"], summary["command"],
-                                              summary["elapsed_s"])
+        results, machine, elapsed = summary["results"], summary["machine"], summary["elapsed_s"]
+        runs = runs_of(summary)
     else:
         tool = find_tool()
         started = time.time()
@@ -731,10 +862,13 @@ def main(argv=None):
         machine = machine_description()
         command = "test/evaluation/run_evaluation.py --size " + args.size + (" --only " + " ".join(args.only)
                                                                               if args.only else "")
+        runs = {name: {"command": command, "elapsed_s": elapsed} for name in results}
+        if args.only:
+            results, runs = merge_previous(out / "data" / "summary.json", args.size, results, runs)
         summary = {"size": args.size, "config": SIZES[args.size], "machine": machine, "elapsed_s": elapsed,
-                   "command": command, "results": results}
+                   "command": command, "runs": runs, "results": results}
         (out / "data" / "summary.json").write_text(json.dumps(summary, indent=1))
-    (out / "tables.md").write_text(tables_markdown(results, args.size, machine, command))
+    (out / "tables.md").write_text(tables_markdown(results, args.size, machine, runs))
 
     pngs = []
     pngs += plot_noise_curves(results, "fig3", out, [(3, 3), (4, 3), (3, 4), (4, 4)], ["q25"],

@@ -26,7 +26,8 @@
 //   linear         estimatePoseLinePoint (the paper's linear solver)
 //   linear+refine  refinePoseLinePoint started from the linear estimate
 //   ransac         estimatePoseLinePointRansac (robust + refined), threshold --threshold px
-//   ml_from_truth  refinePoseLinePoint started from the ground truth: the accuracy limit
+//   ml_from_truth  refinePoseLinePoint started from the ground truth, on the true matches of synthetic
+//                  scenes (every feature elsewhere): the accuracy limit
 //   tri+sqpnp      points triangulated from views 1-2, then cv::solvePnP(SOLVEPNP_SQPNP), >= 3 points
 //   tri+epnp       the same with SOLVEPNP_EPNP, >= 4 points
 // Methods of the stereo experiment (views 1-2: the rig at time A, views 3-4: at time B):
@@ -35,7 +36,8 @@
 //                             further starts where the cost has several basins)
 //   stereo_linear+refine      refinePoseLinePointStereo started from the stereo_linear estimate
 //   stereo_ransac             estimatePoseLinePointStereoRansac (robust + refined), threshold --threshold px
-//   stereo_ml_from_truth      refinePoseLinePointStereo started from the ground truth: the four-view limit
+//   stereo_ml_from_truth      refinePoseLinePointStereo started from the ground truth, on the true
+//                             matches: the four-view limit
 //   three_view_ransac         ransac on views 1-3 only (the right image at B unused)
 //   three_view_linear+refine  linear+refine on views 1-3 only
 //   tri+sqpnp                 as above, in view 3 (the left image at B)
@@ -109,6 +111,7 @@ struct Problem
     cv::Mat points4, lines4;                                     // stereo only: the right image at time B
     std::vector<cv::Mat> K;                                      // three 3x3 (four for stereo)
     cv::Mat R12, t12, R, t;                                      // R, t: ground truth of view 3
+    cv::Mat pointInliers, lineInliers;                           // synthetic: Nx1 / Mx1 CV_8U, 1 for a true match
 
     bool stereo() const { return K.size() == 4; }
     //! The cameras of views 1-3, what the three-view functions take.
@@ -248,7 +251,11 @@ Problem syntheticProblem(const Options& o, int trial)
     params.baseline12Fraction = o.baseline12Fraction;
     params.planar = o.planar;
     params.seed = o.seed + trial;
-    return threeViewProblem(cv::tripose::support::generateSyntheticScene(params));
+    const cv::tripose::support::SyntheticScene s = cv::tripose::support::generateSyntheticScene(params);
+    Problem p = threeViewProblem(s);
+    p.pointInliers = s.pointInliers;
+    p.lineInliers = s.lineInliers;
+    return p;
 }
 
 Problem syntheticStereoProblem(const Options& o, int trial)
@@ -264,6 +271,8 @@ Problem syntheticStereoProblem(const Options& o, int trial)
     Problem p = threeViewProblem(s);
     p.points4 = s.points4;
     p.lines4 = s.lines4;
+    p.pointInliers = s.pointInliers;
+    p.lineInliers = s.lineInliers;
     return p;
 }
 
@@ -307,7 +316,25 @@ Problem selectFeatures(const Problem& p, const std::vector<int>& pr, const std::
     q.points4 = selectRows(p.points4, pr);
     q.lines1 = selectRows(p.lines1, lr); q.lines2 = selectRows(p.lines2, lr); q.lines3 = selectRows(p.lines3, lr);
     q.lines4 = selectRows(p.lines4, lr);
+    q.pointInliers = selectRows(p.pointInliers, pr);
+    q.lineInliers = selectRows(p.lineInliers, lr);
     return q;
+}
+
+//! The rows of @p mask that are non-zero; every row of @p all where there is no mask.
+std::vector<int> trueRows(const cv::Mat& mask, const cv::Mat& all)
+{
+    std::vector<int> rows;
+    for (int r = 0; r < all.rows; ++r)
+        if (mask.empty() || mask.at<uchar>(r) != 0)
+            rows.push_back(r);
+    return rows;
+}
+
+//! The true matches of @p p (all of its features where it has no inlier masks).
+Problem trueMatches(const Problem& p)
+{
+    return selectFeatures(p, trueRows(p.pointInliers, p.points1), trueRows(p.lineInliers, p.lines1));
 }
 
 /** The features of a stereo problem that view 3 (the left image at B) sees: what the three-view
@@ -418,12 +445,13 @@ bool stereoRansacSolve(const Problem& p, const Options& o, cv::Mat& R, cv::Mat& 
                                                           p.t12, R, t, ransacParams(o)) > 0;
 }
 
-//! Starts from the ground truth and refines with @p refine: the accuracy limit of the cost.
+//! Starts from the ground truth and refines with @p refine on the true matches: the accuracy limit of
+//! the cost (wrong matches would pull a non-robust refinement off it).
 bool fromTruth(const Problem& p, cv::Mat& R, cv::Mat& t, bool (*refine)(const Problem&, cv::Mat&, cv::Mat&))
 {
     R = p.R.clone();
     t = p.t.clone();
-    return refine(p, R, t);
+    return refine(trueMatches(p), R, t);
 }
 
 bool triangulateThenPnP(const Problem& p, int flags, cv::Mat& R, cv::Mat& t)
