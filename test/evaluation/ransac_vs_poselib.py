@@ -35,6 +35,17 @@ def run_tool(tool, args):
     return [json.loads(line) for line in out.splitlines() if line.strip()]
 
 
+def run_tools(tools, args):
+    """Each tool's trials on the same scenes, and the first tool's with their inputs dumped (what the
+    peers run on): ({tool: trials}, dumped trials)."""
+    trials, dumped = {}, None
+    for tool in tools:
+        trials[tool] = run_tool(tool, args + (["--dump-inputs"] if dumped is None else []))
+        if dumped is None:
+            dumped = trials[tool]
+    return trials, dumped
+
+
 def poselib_trial(trial, repeats):
     inputs = trial["inputs"]
     R_gt = np.array(inputs["R_gt"], dtype=float)
@@ -70,12 +81,9 @@ def main():
             args = ["synthetic", "--points", a.points, "--lines", a.lines, "--noise", a.noise, "--outliers", ratio,
                     "--threshold", a.threshold, "--trials", a.trials, "--seed", seed, "--repeats", a.repeats,
                     "--motion", a.motion, "--methods", "ransac"]
-            dumped = None
+            per_tool, dumped = run_tools(names, args)
             for name in names:
-                trials = run_tool(name, args + (["--dump-inputs"] if dumped is None else []))
-                if dumped is None:
-                    dumped = trials
-                for t in trials:
+                for t in per_tool[name]:
                     m = t["methods"]["ransac"]
                     results[ratio][name][0].append(m["time_us"] if m["ok"] else np.nan)
                     results[ratio][name][1].append(m["rot_deg"] if m["ok"] else np.inf)

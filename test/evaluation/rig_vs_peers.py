@@ -28,8 +28,6 @@ which tripose is more than 0.5 degrees off while the refinement from the truth i
 """
 
 import argparse
-import json
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -37,15 +35,11 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from ransac_vs_poselib import run_tools  # noqa: E402
 from run_evaluation import rotation_error_deg  # noqa: E402
 
 OFF_DEG = 0.5
 LIMIT_DEG = 0.1
-
-
-def run_tool(tool, args):
-    out = subprocess.run([str(tool)] + [str(a) for a in args], check=True, capture_output=True, text=True).stdout
-    return [json.loads(line) for line in out.splitlines() if line.strip()]
 
 
 def rig_views(inputs):
@@ -139,12 +133,9 @@ def main():
             args = ["stereo", "--points", a.points, "--lines", a.lines, "--noise", a.noise, "--outliers", ratio,
                     "--threshold", a.threshold, "--trials", a.trials, "--seed", seed, "--repeats", a.repeats,
                     "--methods", "stereo_ransac,stereo_ml_from_truth"]
-            dumped = None
+            per_tool, dumped = run_tools(names, args)
             for name in names:
-                trials = run_tool(name, args + (["--dump-inputs"] if dumped is None else []))
-                if dumped is None:
-                    dumped = trials
-                for t in trials:
+                for t in per_tool[name]:
                     m, limit = t["methods"]["stereo_ransac"], t["methods"]["stereo_ml_from_truth"]
                     cell = results[ratio][name]
                     cell["time"].append(m["time_us"] if m["ok"] else np.nan)

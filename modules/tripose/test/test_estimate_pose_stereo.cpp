@@ -24,19 +24,6 @@ using cv::tripose::support::generateSyntheticStereoScene;
 const double kExactRadians = 1e-6;
 const double kExactRelative = 1e-6;
 
-SyntheticStereoParams stereoParams(int points, int lines, int seed, double noise = 0, double outliers = 0,
-                                   double missing = 0)
-{
-    SyntheticStereoParams p;
-    p.numPoints = points;
-    p.numLines = lines;
-    p.seed = seed;
-    p.noiseSigma = noise;
-    p.outlierRatio = outliers;
-    p.missingRatio = missing;
-    return p;
-}
-
 int solveStereo(const SyntheticStereoScene& s, Mat& R, Mat& t, int method = cv::tripose::POSE_LINEAR,
                 std::vector<Mat>* Rs = nullptr, std::vector<Mat>* ts = nullptr, Mat* errors = nullptr)
 {

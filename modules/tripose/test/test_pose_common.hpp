@@ -93,6 +93,21 @@ inline cv::tripose::support::SyntheticScene makeScene(const FeatureMix& mix, int
     return cv::tripose::support::generateSyntheticScene(sceneParams(mix, motion, noise, seed, outlierRatio));
 }
 
+//! A stereo-rig scene's parameters: the generator's rig, depths and motion with these features, noise
+//! (px), share of wrong matches at time B and share of features seen by one time-B view only.
+inline cv::tripose::support::SyntheticStereoParams stereoParams(int points, int lines, int seed, double noise = 0,
+                                                            double outliers = 0, double missing = 0)
+{
+    cv::tripose::support::SyntheticStereoParams p;
+    p.numPoints = points;
+    p.numLines = lines;
+    p.seed = seed;
+    p.noiseSigma = noise;
+    p.outlierRatio = outliers;
+    p.missingRatio = missing;
+    return p;
+}
+
 //! Solves a scene with the linear method; all candidates best first.
 inline int solveScene(const cv::tripose::support::SyntheticScene& s, std::vector<Mat>& Rs, std::vector<Mat>& ts, Mat& R, Mat& t)
 {

@@ -22,19 +22,11 @@ using ::tripose::PoseScore;
 using ::tripose::PoseScorer;
 using ::tripose::RigPoseSolver;
 using ::tripose::ViewSet;
-using cv::tripose::support::SyntheticStereoParams;
 using cv::tripose::support::SyntheticStereoScene;
 
 SyntheticStereoScene rigScene(int points, int lines, int seed, double noise, double outliers, double missing)
 {
-    SyntheticStereoParams p;
-    p.numPoints = points;
-    p.numLines = lines;
-    p.seed = seed;
-    p.noiseSigma = noise;
-    p.outlierRatio = outliers;
-    p.missingRatio = missing;
-    return cv::tripose::support::generateSyntheticStereoScene(p);
+    return cv::tripose::support::generateSyntheticStereoScene(stereoParams(points, lines, seed, noise, outliers, missing));
 }
 
 ViewSet readRig(const SyntheticStereoScene& s)
