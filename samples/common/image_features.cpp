@@ -65,7 +65,6 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
                               const FeatureOptions& options, StageTimes& times)
 {
     CV_Assert(image.depth() == CV_8U && !image.empty());
-    const int64 whole = cv::getTickCount();
     cv::Mat grey = image;
     if (image.channels() != 1)
         cv::cvtColor(image, grey, image.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
@@ -123,7 +122,6 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
             out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)kept.size()).clone();
         }
     }
-    times.featuresWall += millisecondsSince(whole);
     return out;
 }
 
@@ -161,11 +159,9 @@ std::vector<ImageFeatures> extractFeaturesOfImages(const std::vector<cv::Mat>& i
         features[k].segments = lines.segments.empty() ? cv::Mat(0, 4, CV_64F) : lines.segments;
         features[k].lineDescriptors = lines.lineDescriptors;
     }
-    for (StageTimes& t : perTask)
-    {
-        t.featuresWall = 0; // the tasks overlapped: their own wall times do not add up
+    // The tasks overlap: the wall time of the features is the whole call's, not their sum.
+    for (const StageTimes& t : perTask)
         times += t;
-    }
     times.featuresWall += millisecondsSince(start);
     return features;
 }

@@ -259,7 +259,8 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed):
     refined = tripose.refine_pose_line_point(points[0][p], points[1][p], points[2][p], lines[0][l], lines[1][l],
                                              lines[2][l], K, R12, t12, pose["R"], pose["t"], loss="cauchy",
                                              loss_scale=IMAGE_LOSS_SCALE)
-    pose["R"], pose["t"] = refined["R"], refined["t"]
+    # The robust estimate's other entries (inlier masks, counts) stay; its RMS is the refinement's now.
+    pose["R"], pose["t"], pose["rms"] = refined["R"], refined["t"], refined["rms"]
     return pose
 
 

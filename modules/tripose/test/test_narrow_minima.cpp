@@ -62,18 +62,6 @@ ViewSet readScene(const ts::SyntheticScene& s)
                                                    s.cameraMatrices, noArray(), s.R12, s.t12);
 }
 
-CameraPose corePose(const Mat& R, const Mat& t)
-{
-    CameraPose p;
-    for (int r = 0; r < 3; ++r)
-    {
-        for (int c = 0; c < 3; ++c)
-            p.R(r, c) = R.at<double>(r, c);
-        p.t(r) = t.at<double>(r);
-    }
-    return p;
-}
-
 ::tripose::RefineOptions referenceOptions()
 {
     ::tripose::RefineOptions o;
@@ -326,9 +314,15 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
                                            s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
                                            cv::tripose::POSE_LINEAR_REFINE, candidateRs, candidateTs, errors);
         // The candidates' costs from their RMS over the same residuals as the reference's.
+        // A candidate within the noise of the first counts only if it is another minimum: refinement
+        // reaches one minimum from several candidates, 1e-7 to 1e-6 apart (the RANSAC's report merges
+        // minima within 1e-3, as here).
         const int n = ranked[0].residuals;
-        reportedByLinear += errors.rows > 1 &&
-                            n * (errors.at<double>(1) * errors.at<double>(1) - errors.at<double>(0) * errors.at<double>(0)) < bound;
+        bool reported = false;
+        for (int k = 1; k < errors.rows && !reported; ++k)
+            reported = n * (errors.at<double>(k) * errors.at<double>(k) - errors.at<double>(0) * errors.at<double>(0)) < bound &&
+                       cv::norm(candidateRs[k] - candidateRs[0]) > 1e-3;
+        reportedByLinear += reported;
     }
     std::cout << "narrow 0.5 % 4P+4L, " << scenes << " scenes: a second minimum clearly within the noise in "
               << clearlyAmbiguous << "; reported by the RANSAC in " << reportedByRansac
@@ -341,6 +335,7 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
     EXPECT_GE(reportedByRansac, 9 * clearlyAmbiguous / 10);
     EXPECT_GE(reportedByLinear, 9 * clearlyAmbiguous / 10);
     // 95 % of what is listed holds up under further refinement.
+    EXPECT_GT(listed, 0);
     EXPECT_GE(20 * confirmedMinima, 19 * listed);
 
     // A wide baseline (the paper's small motion) has one basin: the RANSAC lists its pose alone.

@@ -10,6 +10,7 @@
 
 #include "test_precomp.hpp"
 #include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
+#include "../src/core/geometry/camera.hpp"
 
 namespace opencv_test {
 
@@ -57,6 +58,19 @@ using cv::tripose::support::poseError;
 
 //! An angle in radians in degrees, the unit of PoseError: noise-free bounds are stated in radians,
 //! as in the Python tests.
+//! The core's pose of a 3x3 rotation and 3-vector translation (CV_64F).
+inline ::tripose::CameraPose corePose(const Mat& R, const Mat& t)
+{
+    ::tripose::CameraPose p;
+    for (int r = 0; r < 3; ++r)
+    {
+        for (int c = 0; c < 3; ++c)
+            p.R(r, c) = R.at<double>(r, c);
+        p.t(r) = t.at<double>(r);
+    }
+    return p;
+}
+
 inline double degrees(double radians)
 {
     return radians * 180.0 / CV_PI;

@@ -35,18 +35,6 @@ ViewSet readRig(const SyntheticStereoScene& s)
                                                    s.lines3, s.lines4, s.cameraMatrices, noArray(), s.R12, s.t12, 3);
 }
 
-CameraPose truePose(const SyntheticStereoScene& s)
-{
-    CameraPose pose;
-    for (int r = 0; r < 3; ++r)
-    {
-        pose.t(r) = s.t.at<double>(r);
-        for (int c = 0; c < 3; ++c)
-            pose.R(r, c) = s.R.at<double>(r, c);
-    }
-    return pose;
-}
-
 //! Angle between two rotations, accurate near zero (an arc cosine of the trace is not).
 double rotationErrorDeg(const CameraPose& a, const CameraPose& b)
 {
@@ -80,7 +68,7 @@ TEST(Tripose_RigRobustSampling, samples_of_either_camera_contain_the_true_pose)
         const MixedSampling& sampling = *solver.mixedSampling();
         ASSERT_EQ(2u, sampling.pools.size());
         ASSERT_EQ(2u, solver.cameras().size());
-        const CameraPose truth = truePose(s);
+        const CameraPose truth = corePose(s.R, s.t);
         for (int pool = 0; pool < 2; ++pool)
         {
             const ::tripose::View& own = setup.views.views[solver.cameras()[pool]];
@@ -132,7 +120,7 @@ TEST(Tripose_RigRobustSampling, samples_of_either_camera_contain_the_true_pose)
 TEST(Tripose_RigRobustSampling, sliding_known_depth_keeps_the_inliers_of_the_true_pose)
 {
     const double threshold = 2.0 * 2.0; // the estimator's sampling threshold for a 2 px threshold
-    int observations = 0, fixedInliers = 0, slidInliers = 0, wrongObservations = 0, wrongAccepted = 0;
+    int observations = 0, fixedInliers = 0, slidInliers = 0, wrongMatches = 0, wrongAccepted = 0;
     for (int seed = 0; seed < 20; ++seed)
     {
         const SyntheticStereoScene s = rigScene(100, 40, 950 + seed, 1.0, 0.3, 0.2);
@@ -140,48 +128,41 @@ TEST(Tripose_RigRobustSampling, sliding_known_depth_keeps_the_inliers_of_the_tru
         const PoseScorer fixed(views), slid(views, PoseScorer::KnownDepth::Slides);
         ASSERT_FALSE(fixed.slidesKnownDepth());
         ASSERT_TRUE(slid.slidesKnownDepth());
-        const CameraPose truth = truePose(s);
+        const CameraPose truth = corePose(s.R, s.t);
         FeatureSubset fixedSet, slidSet;
         const PoseScore a = fixed.score(truth, threshold, std::numeric_limits<double>::infinity(), &fixedSet);
         const PoseScore b = slid.score(truth, threshold, std::numeric_limits<double>::infinity(), &slidSet);
         ASSERT_EQ(a.considered, b.considered);
         fixedInliers += a.inliers;
         slidInliers += b.inliers;
-        // Observations of true matches, and wrong matches accepted, by feature.
-        for (int i = 0; i < views.numPoints; ++i)
-        {
-            const bool right = s.pointInliers.at<uchar>(i) != 0;
-            const int seen = views.views[2].seesPoint(i) + views.views[3].seesPoint(i);
-            // A feature without structure from time A (triangulated behind the rig) is unmeasured.
-            if (right)
-                observations += slid.hasKnownPoint(i) ? seen : 0;
-            else
+        // Observations of true matches, and wrong matches accepted, by feature; a true feature
+        // without structure from time A (triangulated behind the rig) is unmeasured.
+        const auto count = [&](int features, const Mat& truth, const std::vector<int>& accepted, bool isPoint) {
+            for (int i = 0; i < features; ++i)
             {
-                ++wrongObservations;
-                wrongAccepted += std::count(slidSet.points.begin(), slidSet.points.end(), i) > 0;
+                const ::tripose::View &left = views.views[2], &right = views.views[3];
+                if (truth.at<uchar>(i) != 0)
+                {
+                    if (isPoint ? slid.hasKnownPoint(i) : slid.hasKnownLine(i))
+                        observations += isPoint ? left.seesPoint(i) + right.seesPoint(i)
+                                                : left.seesLine(i) + right.seesLine(i);
+                    continue;
+                }
+                ++wrongMatches;
+                wrongAccepted += std::count(accepted.begin(), accepted.end(), i) > 0;
             }
-        }
-        for (int i = 0; i < views.numLines; ++i)
-        {
-            const bool right = s.lineInliers.at<uchar>(i) != 0;
-            const int seen = views.views[2].seesLine(i) + views.views[3].seesLine(i);
-            if (right)
-                observations += slid.hasKnownLine(i) ? seen : 0;
-            else
-            {
-                ++wrongObservations;
-                wrongAccepted += std::count(slidSet.lines.begin(), slidSet.lines.end(), i) > 0;
-            }
-        }
+        };
+        count(views.numPoints, s.pointInliers, slidSet.points, true);
+        count(views.numLines, s.lineInliers, slidSet.lines, false);
     }
     std::cout << "[ rig      ] true pose, 20 scenes 100P+40L, 1 px, 30 % wrong matches: inlier observations "
               << "with the structure fixed " << fixedInliers << ", sliding " << slidInliers << " of " << observations
-              << " true with structure; wrong matches accepted " << wrongAccepted << "/" << wrongObservations << std::endl;
+              << " true with structure; wrong matches accepted " << wrongAccepted << "/" << wrongMatches << std::endl;
     // At 1 px and a 4 px test about 1 in 3000 true observations fall outside; the slide has one
     // degree of freedom per point (two per line) and leaves more than that in every view.
     EXPECT_GE(slidInliers, 0.97 * observations);
     EXPECT_LT(fixedInliers, 0.9 * observations);
-    EXPECT_LE(wrongAccepted, 0.03 * wrongObservations + 1);
+    EXPECT_LE(wrongAccepted, 0.03 * wrongMatches + 1);
 }
 
 // On noise-free data the true pose explains every observation exactly whatever the depths do.
@@ -192,7 +173,7 @@ TEST(Tripose_RigRobustSampling, sliding_scorer_is_exact_at_the_true_pose)
         const SyntheticStereoScene s = rigScene(30, 15, 980 + seed, 0.0, 0.0, 0.2);
         const ViewSet views = readRig(s);
         const PoseScorer slid(views, PoseScorer::KnownDepth::Slides);
-        const PoseScore score = slid.score(truePose(s), 1.0);
+        const PoseScore score = slid.score(corePose(s.R, s.t), 1.0);
         int observations = 0;
         for (int v = 2; v < 4; ++v)
         {

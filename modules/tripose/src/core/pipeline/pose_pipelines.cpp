@@ -21,17 +21,31 @@ namespace tripose {
 
 namespace {
 
-// Refined candidates closer than this (rotation in radians, translation relative to its norm) are
-// one local minimum reached twice.
+// Refined candidates closer than this (rotation: Frobenius norm of the difference; translation
+// relative to its norm) are one local minimum reached twice.
 constexpr double kSameMinimum = 1e-7;
 
+std::vector<ScoredPose> scoredPoses(const std::vector<LocalMinimum>& minima)
+{
+    std::vector<ScoredPose> out;
+    for (const LocalMinimum& m : minima)
+    {
+        ScoredPose p;
+        p.pose = m.pose;
+        p.rms = m.rms;
+        out.push_back(p);
+    }
+    return out;
+}
+
 /** Refines every candidate over every view and, when the problem has several basins
-(@p severalBasins: a narrow known pair or planar structure, scoring/known_structure.hpp), from the
-26 starts around the best-ranked one that keep its rotation and move the centre of the estimated
-camera (refine/multi_start_refinement.hpp); each is re-triangulated until it settles. Returns the distinct minima that use as many features as
-the best one (an RMS over fewer residuals is not comparable), lowest RMS first: with a narrow
-known pair or planar structure the linear candidates alone lead refinement to another minimum in
-most scenes (doc/accuracy.md). Candidates whose refinement has no usable feature are dropped. */
+(@p severalBasins: a narrow known pair or planar structure, scoring/known_structure.hpp), also from
+the solver's starts of distinct rotations and the centre-direction starts around the best minimum
+(searchBasins(), refine/hypothesis_starts.hpp); each is re-triangulated until it settles. Returns
+the distinct minima that use as many features as the best one (an RMS over fewer residuals is not
+comparable), lowest RMS first: with a narrow known pair or planar structure the linear candidates
+alone lead refinement to another minimum in most scenes (doc/accuracy.md). Candidates whose
+refinement has no usable feature are dropped. */
 void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool severalBasins,
                       std::vector<ScoredPose>& candidates)
 {
@@ -47,15 +61,7 @@ void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool sever
     }
     else
         refineFromStarts(views, starts, params, nullptr, nullptr, &minima);
-    std::vector<ScoredPose> refined;
-    for (const LocalMinimum& m : distinctMinima(minima, kSameMinimum))
-    {
-        ScoredPose p;
-        p.pose = m.pose;
-        p.rms = m.rms;
-        refined.push_back(p);
-    }
-    candidates.swap(refined);
+    candidates = scoredPoses(distinctMinima(minima, kSameMinimum));
 }
 
 } // namespace
@@ -104,13 +110,7 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     estimate.minima.clear();
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
     {
-        for (const LocalMinimum& m : refiner.minimaWithinNoise(estimate.pose))
-        {
-            ScoredPose p;
-            p.pose = m.pose;
-            p.rms = m.rms;
-            estimate.minima.push_back(p);
-        }
+        estimate.minima = scoredPoses(refiner.minimaWithinNoise(estimate.pose));
         return true;
     }
     estimate = RobustEstimate();

@@ -14,14 +14,16 @@
 
 namespace tripose {
 
-/** The robust estimator's final stage: maximum-likelihood refinement
-over every view from the estimator's pose, from the solver's estimates on the inliers (when it has
-one and they are enough) and from the 26 starts of centreDirectionStarts() around the estimator's
-pose, each re-triangulated until it settles, the lowest cost kept (refine/multi_start_refinement.hpp).
-Only where the problem has several basins (a narrow known baseline, planar structure); there too,
-sets larger than kMaxMultiStartFeatures are refined once from the estimator's pose: the samples and
-local optimisation already put it in the right basin, and 27 starts would cost more than the rest
-of the estimator. Elsewhere one refinement from the estimator's pose reaches the optimum.
+/** The robust estimator's final stage: maximum-likelihood refinement over every view from the
+estimator's pose, from the solver's estimates on the inliers (when it has one and they are enough),
+from the solver's starts of distinct rotations (hypothesis_starts.hpp) and from the 26 starts of
+centreDirectionStarts() around the best minimum (searchBasins()), each re-triangulated until it
+settles, the lowest cost kept and the minima within the noise of it remembered
+(minimaWithinNoise()). Only where the problem has several basins (a narrow known baseline, planar
+structure) and the caller asks for the starts; there too, sets larger than kMaxMultiStartFeatures
+are refined once from the estimator's pose: the samples and local optimisation already put it in
+the right basin, and the starts would cost more than the rest of the estimator. Elsewhere one
+refinement from the estimator's pose reaches the optimum.
 */
 class MultiStartRefiner : public PoseRefiner
 {
@@ -101,15 +103,19 @@ public:
                 break;
             RefineOptions longer = params_;
             longer.maxIterations = kPolishFactor * params_.maxIterations;
-            const LocalMinimum first =
-                refineRetriangulating(set_, pose, longer, &r.inliers.points, &r.inliers.lines);
-            if (!first.finite())
-                break;
+            // The returned pose refined as far, polished only once another minimum is within the noise.
+            LocalMinimum first;
             std::vector<LocalMinimum> others;
             for (size_t k = 1; k < r.minima.size() && (int)others.size() < kMaxReportedMinima; ++k)
             {
                 if (!withinNoise(r.minima.front(), r.minima[k]))
                     continue;
+                if (!first.finite())
+                {
+                    first = refineRetriangulating(set_, pose, longer, &r.inliers.points, &r.inliers.lines);
+                    if (!first.finite())
+                        break;
+                }
                 const LocalMinimum polished =
                     refineRetriangulating(set_, r.minima[k].pose, longer, &r.inliers.points, &r.inliers.lines);
                 if (!polished.finite() || !withinNoise(first, polished) ||

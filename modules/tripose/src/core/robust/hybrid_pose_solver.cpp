@@ -27,12 +27,13 @@ tenths of a degree to degrees on a short baseline), and P3L returns poses that f
 that direction. Exactly parallel lines P3L itself rejects. */
 constexpr double kParallelLinesDeg = 5.0;
 
+const double kParallelLinesSine = std::sin(kParallelLinesDeg * M_PI / 180.0);
+
 bool nearlyParallel(const WorldLine* lines, int count)
 {
-    const double sine = std::sin(kParallelLinesDeg * M_PI / 180.0);
     const Eigen::Vector3d d0 = lines[0].direction.normalized();
     for (int j = 1; j < count; ++j)
-        if (d0.cross(lines[j].direction.normalized()).norm() > sine)
+        if (d0.cross(lines[j].direction.normalized()).norm() > kParallelLinesSine)
             return false;
     return true;
 }

@@ -349,7 +349,8 @@ bool PoseScorer::slidPointResidual2(const Intrinsics& camera, const CameraPose& 
         const double a = J.squaredNorm() + slide.H(0, 0), b = J.dot(r) + slide.H(0, 0) * (rho - rho0) + slide.g(0);
         if (!(a > 0))
             break;
-        // The first step's model minimum r.r - b^2 / a: past the bound the slide changes no verdict.
+        // The first step's model minimum r.r - b^2 / a: past the bound, the observation is taken for an
+        // outlier without further steps (at the true pose this loses 8 of 3405 true observations, the test).
         if (iteration == 0 && r2 - b * b / a >= bound2)
             return true;
         // The point stays in front of the first known view (rho > 0; rho = 0 is the point at infinity).
@@ -402,7 +403,7 @@ bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& p
         Eigen::Matrix2d inverse;
         inverse << M(1, 1), -M(0, 1), -M(1, 0), M(0, 0);
         const Eigen::Vector2d step = -(inverse * v) / det;
-        // The first step's model minimum r.r + v . step: past the bound the slide changes no verdict.
+        // The first step's model minimum r.r + v . step: past the bound, an outlier (as for points).
         if (iteration == 0 && r2 + v.dot(step) >= bound2)
             return true;
         const Eigen::Vector2d next = rho + step;

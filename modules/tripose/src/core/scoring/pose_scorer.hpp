@@ -143,8 +143,9 @@ private:
     /** Squared residual (px^2, both coordinates or both end-point distances) of @p term in a view at
     @p pose with its structure slid (KnownDepth::Slides); false when it cannot be measured, with
     @p behind set when that is because the feature is behind the camera. @p bound2: the squared
-    residual that makes an inlier; where the slide cannot change that verdict (well within it
-    without the slide, or beyond it after the slide's first step) the residual is left unslid. */
+    residual that makes an inlier. Well within it without the slide, the residual is left unslid (the
+    slide cannot change that verdict); beyond it by the first step's linear model, too (an outlier
+    whose further steps would seldom bring it inside). */
     bool slidPointResidual2(const Intrinsics& camera, const CameraPose& pose, const PointTerm& term,
                             const KnownSlide<1>& slide, double bound2, double& r2) const;
     bool slidLineResidual2(const Intrinsics& camera, const CameraPose& pose, const LineTerm& term,
