@@ -184,8 +184,7 @@ Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptor
 
 bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, cv::Matx33d& F)
 {
-    const Matches matches = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio,
-                                              std::numeric_limits<double>::infinity());
+    const Matches matches = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio, kInf);
     if ((int)matches.size() < options.minFundamentalInliers)
         return false;
     std::vector<cv::Point2d> xa, xb;
@@ -201,6 +200,20 @@ bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const M
         return false;
     F = cv::Matx33d(estimate);
     return true;
+}
+
+void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
+                      Matches& segments)
+{
+    cv::Matx33d F;
+    if (estimateFundamental(a, b, options, F))
+    {
+        points = matchPointsEpipolar(a, b, F, options);
+        segments = matchSegmentsEpipolar(a, b, F, options);
+        return;
+    }
+    points = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio, kInf);
+    segments = matchByDescriptor(a.lineDescriptors, b.lineDescriptors, options.lineRatio, options.maxLineDistance);
 }
 
 } // namespace tripose_samples

@@ -57,6 +57,13 @@ MatchOptions::epipolarDistance, confidence 0.999) on them. False, and @p F untou
 MatchOptions::minFundamentalInliers consistent matches: too few to trust the geometry. */
 bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, cv::Matx33d& F);
 
+/** Points and segments of views a and b matched where their relative pose is unknown: under the
+fundamental matrix of their descriptor matches (estimateFundamental(), then matchPointsEpipolar()
+and matchSegmentsEpipolar()), which rejects descriptor matches that no rigid motion explains; by
+descriptor alone (matchByDescriptor()) without enough matches for that geometry. */
+void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
+                      Matches& segments);
+
 /** Rows of @p descriptorsA and @p descriptorsB (CV_32F: L2, CV_8U: Hamming), mutual best with the
 ratio test @p ratio over all rows of B, and (Hamming) at most @p maxDistance. */
 Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptorsB, double ratio,

@@ -4,7 +4,6 @@
 
 #include "feature_triplets.hpp"
 
-#include <limits>
 
 #include "two_view_geometry.hpp"
 
@@ -69,19 +68,7 @@ FeatureTriplets matchTriplets(const ImageFeatures views[3], const cv::Matx33d K[
     // descriptors alone decide.
     const ImageFeatures pairs = pairsInView2(views[1], points12, segments12);
     Matches points23, segments23;
-    cv::Matx33d F23;
-    if (estimateFundamental(pairs, views[2], options, F23))
-    {
-        points23 = matchPointsEpipolar(pairs, views[2], F23, options);
-        segments23 = matchSegmentsEpipolar(pairs, views[2], F23, options);
-    }
-    else
-    {
-        points23 = matchByDescriptor(pairs.pointDescriptors, views[2].pointDescriptors, options.pointRatio,
-                                     std::numeric_limits<double>::infinity());
-        segments23 = matchByDescriptor(pairs.lineDescriptors, views[2].lineDescriptors, options.lineRatio,
-                                       options.maxLineDistance);
-    }
+    matchUnknownPose(pairs, views[2], options, points23, segments23);
     const cv::Mat pointPositions[3] = { views[0].points, views[1].points, views[2].points };
     const cv::Mat segmentPositions[3] = { views[0].segments, views[1].segments, views[2].segments };
     tracks(points12, points23, pointPositions, out.points);

@@ -95,17 +95,10 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
     // (as view 3 of a triplet, feature_triplets.cpp), by descriptor alone without enough of them.
     for (int k = 2; k < F; ++k)
     {
-        cv::Matx33d Fk;
-        if (estimateFundamental(features[k - 1], features[k], matchOptions, Fk))
-        {
-            pointTracks.add(k, matchPointsEpipolar(features[k - 1], features[k], Fk, matchOptions));
-            segmentTracks.add(k, matchSegmentsEpipolar(features[k - 1], features[k], Fk, matchOptions));
-            continue;
-        }
-        pointTracks.add(k, matchByDescriptor(features[k - 1].pointDescriptors, features[k].pointDescriptors,
-                                             matchOptions.pointRatio, std::numeric_limits<double>::infinity()));
-        segmentTracks.add(k, matchByDescriptor(features[k - 1].lineDescriptors, features[k].lineDescriptors,
-                                               matchOptions.lineRatio, matchOptions.maxLineDistance));
+        Matches points, segments;
+        matchUnknownPose(features[k - 1], features[k], matchOptions, points, segments);
+        pointTracks.add(k, points);
+        segmentTracks.add(k, segments);
     }
     times.matching += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
 
