@@ -20,6 +20,13 @@ but is off by default and absent from Debian's 4.6). Key points found in an imag
 image show it: +0.25 px on both axes on Model House and Merton College I (doc/real_images.md). */
 const double kSiftUpsamplingOffset = 0.25;
 
+/** LSD detects on the image scaled by 0.8 (cv::resize: pixel centres at (x + 0.5) / 0.8 - 0.5 of the
+original) and divides its coordinates by 0.8 alone: every end point comes out 0.5 / 0.8 - 0.5 =
+0.125 px left of and above the edge. An edge rendered at a known sub-pixel position shows it (-0.125
+px on average over positions, slopes and polarities), and so do segments found in an image and in
+its mirror image (-0.11 to -0.13 px, doc/real_images.md). */
+const double kLsdDownsamplingOffset = 0.125;
+
 double millisecondsSince(int64 start)
 {
     return 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
@@ -114,10 +121,10 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
             cv::Mat ends((int)kept.size() * 2, 2, CV_64F);
             for (size_t i = 0; i < kept.size(); ++i)
             {
-                ends.at<double>(2 * (int)i, 0) = kept[i].startPointX;
-                ends.at<double>(2 * (int)i, 1) = kept[i].startPointY;
-                ends.at<double>(2 * (int)i + 1, 0) = kept[i].endPointX;
-                ends.at<double>(2 * (int)i + 1, 1) = kept[i].endPointY;
+                ends.at<double>(2 * (int)i, 0) = kept[i].startPointX + kLsdDownsamplingOffset;
+                ends.at<double>(2 * (int)i, 1) = kept[i].startPointY + kLsdDownsamplingOffset;
+                ends.at<double>(2 * (int)i + 1, 0) = kept[i].endPointX + kLsdDownsamplingOffset;
+                ends.at<double>(2 * (int)i + 1, 1) = kept[i].endPointY + kLsdDownsamplingOffset;
             }
             out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)kept.size()).clone();
         }

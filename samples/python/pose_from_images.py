@@ -25,6 +25,7 @@ import numpy as np
 
 MIN_FEATURES = 4  # the estimators need four features
 SIFT_UPSAMPLING_OFFSET = 0.25  # px, see extract()
+LSD_DOWNSAMPLING_OFFSET = 0.125  # px, see extract()
 # The refinement's Cauchy loss scale (px) for detected features, as the C++ samples
 # (samples/common/image_estimation.hpp): it keeps the tail of poorly placed features from pulling.
 IMAGE_LOSS_SCALE = 0.5
@@ -116,7 +117,10 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
             k.class_id = i
         if keylines:
             keylines, desc = cv2.line_descriptor.BinaryDescriptor.createBinaryDescriptor().compute(image, keylines)
-            ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in keylines], np.float64)
+            # LSD works on the image scaled by 0.8 and only divides its coordinates by 0.8: every end
+            # point comes out 0.125 px left of and above the edge (as the C++ front end).
+            ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in keylines],
+                            np.float64) + LSD_DOWNSAMPLING_OFFSET
             out["segments"] = undistort(ends.reshape(-1, 2), K, dist).reshape(-1, 4)
             out["line_desc"] = desc
     return out

@@ -8,11 +8,13 @@ disagreement is the detector's offset along that axis.
 
     .venv/bin/python test/evaluation/feature_position_bias.py image [image ...]
 
-Prints, per image and axis, the offset of OpenCV's SIFT key points as detected, after the image
-front end's correction (samples/python/pose_from_images.py, as samples/common/image_features.cpp),
-and of LSD segments (contrib line_descriptor, as the front end runs it) across their direction.
+Prints, per image and axis, the offset of OpenCV's SIFT key points and of LSD segments (contrib
+line_descriptor, across their direction) as detected and after the image front end's corrections
+(samples/python/pose_from_images.py, as samples/common/image_features.cpp). First, the same for LSD
+on straight edges rendered at known sub-pixel positions, which needs no mirror.
 """
 
+import functools
 import sys
 from pathlib import Path
 
@@ -45,11 +47,19 @@ def sift_offset(image, mirrored, axis, corrected):
     return float(np.median(a[i, axis] - b[j, axis]) / 2), len(i)
 
 
-def segment_offset(image, mirrored, axis):
-    detect = cv2.line_descriptor.LSDDetector.createLSDDetector()
-    ends = [np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in detect.detect(im, 2, 1)
-                      if k.lineLength > 30]) for im in (image, mirrored)]
-    a, b = ends
+def detected_segments(image, corrected, min_length=30):
+    """Segments (N x 4) longer than min_length, from contrib's LSD as detected or as the front end
+    places them."""
+    if corrected:
+        ends = pose_from_images.extract(image, None, None, "lines")["segments"]
+    else:
+        ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY]
+                         for k in cv2.line_descriptor.LSDDetector.createLSDDetector().detect(image, 2, 1)])
+    return ends[np.hypot(ends[:, 2] - ends[:, 0], ends[:, 3] - ends[:, 1]) > min_length]
+
+
+def segment_offset(image, mirrored, axis, corrected=False):
+    a, b = detected_segments(image, corrected), detected_segments(mirrored, corrected)
     n = image.shape[1 - axis] - 1
     b = b.copy()
     b[:, [axis, axis + 2]] = n - b[:, [axis, axis + 2]]
@@ -70,11 +80,54 @@ def segment_offset(image, mirrored, axis):
     return (float(np.median(offsets)) if offsets else float("nan")), len(offsets)
 
 
+@functools.lru_cache(maxsize=None)
+def rendered_edges(size=240, supersampling=10):
+    """Straight edges rendered at known sub-pixel positions (pixel centres at integers, each pixel the
+    mean of supersampling^2 samples), as (image, unit normal, signed distance of the edge from the
+    image centre along it). The edges cross the image within 12 deg of an axis, both polarities: the
+    mirror measure's segments (segment_offset) are these; diagonal edges bend LSD's end points by up
+    to 0.3 px either way, an error of direction rather than of position."""
+    edges = []
+    centre = size / 2
+    grid = (np.arange(size * supersampling) + 0.5) / supersampling - 0.5
+    x, y = np.meshgrid(grid, grid)
+    for offset in (-29.7, 0.0, 1.3, 17.55):
+        for angle in np.radians([3.0, -11.0, 7.0, 88.0, 95.0, 81.0]):
+            normal = np.array([np.cos(angle), np.sin(angle)])
+            bright = ((x - centre) * normal[0] + (y - centre) * normal[1] > offset).astype(np.float32)
+            image = (60 + 140 * bright.reshape(size, supersampling, size, supersampling).mean(axis=(1, 3)))
+            image = image.astype(np.uint8)
+            edges += [(image, normal, offset), (255 - image, normal, offset)]
+    return tuple(edges)
+
+
+def rendered_edge_shift(corrected):
+    """The detector's constant shift (dx, dy) in px, fitted by least squares to the signed distances
+    of the mid-points of the segments found on rendered_edges() (a shift moves a mid-point by
+    dx nx + dy ny along the edge's normal n), and the distances left once it is taken off."""
+    distances, normals = [], []
+    for image, normal, offset in rendered_edges():
+        segments = detected_segments(image, corrected)
+        longest = segments[np.argmax(np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]))]
+        centre = image.shape[0] / 2
+        distances.append(((longest[:2] + longest[2:]) / 2 - centre) @ normal - offset)
+        normals.append(normal)
+    distances, normals = np.array(distances), np.array(normals)
+    shift = np.linalg.lstsq(normals, distances, rcond=None)[0]
+    return shift, distances - normals @ shift
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    print("| image | axis | SIFT as detected (px) | SIFT, front end (px) | key point pairs | LSD (px) | segment pairs |")
-    print("| --- | --- | --- | --- | --- | --- | --- |")
+    for corrected, name in ((False, "as detected"), (True, "front end")):
+        shift, left = rendered_edge_shift(corrected)
+        print(f"LSD on rendered edges, {name}: shift ({shift[0]:+.3f}, {shift[1]:+.3f}) px; "
+              f"{len(left)} segments, largest distance left {np.abs(left).max():.3f} px")
+    print()
+    print("| image | axis | SIFT as detected (px) | SIFT, front end (px) | key point pairs | LSD as detected (px) "
+          "| LSD, front end (px) | segment pairs |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     for path in sys.argv[1:]:
         image = cv2.imread(path, cv2.IMREAD_GRAYSCALE)
         if image is None:
@@ -84,7 +137,9 @@ def main():
             raw, n = sift_offset(image, mirrored, axis, False)
             fixed, _ = sift_offset(image, mirrored, axis, True)
             lsd, m = segment_offset(image, mirrored, axis)
-            print(f"| {Path(path).name} | {name} | {raw:+.3f} | {fixed:+.3f} | {n} | {lsd:+.3f} | {m} |")
+            lsd_fixed, _ = segment_offset(image, mirrored, axis, corrected=True)
+            print(f"| {Path(path).name} | {name} | {raw:+.3f} | {fixed:+.3f} | {n} | {lsd:+.3f} | {lsd_fixed:+.3f} "
+                  f"| {m} |")
     return 0
 
 
