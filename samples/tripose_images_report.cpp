@@ -37,6 +37,7 @@
 #include "image_features.hpp"
 #include "image_input.hpp"
 #include "problem_io.hpp"
+#include "tripose_support/json_writing.hpp"
 #include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/vgg_dataset.hpp"
@@ -218,22 +219,17 @@ double sequenceTime(const StageTimes& t)
     return (t.points + t.segmentDetection + t.segmentDescription) / 3 + t.matching + t.estimation;
 }
 
+//! The dump's numbers read back as the doubles written.
+const int kDumpDigits = 17;
+
 std::string jsonNumber(double x)
 {
-    return std::isfinite(x) ? cv::format("%.17g", x) : std::string("null");
+    return support::jsonNumber(x, kDumpDigits);
 }
 
 std::string jsonMatrix(const cv::Mat& m)
 {
-    std::string s = "[";
-    for (int r = 0; r < m.rows; ++r)
-    {
-        s += r ? ",[" : "[";
-        for (int c = 0; c < m.cols; ++c)
-            s += (c ? "," : "") + jsonNumber(m.at<double>(r, c));
-        s += "]";
-    }
-    return s + "]";
+    return support::jsonMatrix(m, kDumpDigits);
 }
 
 std::string jsonOutcome(const Outcome& o)

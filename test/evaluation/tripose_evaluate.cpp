@@ -63,6 +63,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
+#include "tripose_support/json_writing.hpp"
 #include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
 #include "tripose_support/synthetic_scene.hpp"
@@ -519,38 +520,17 @@ Result runMethod(const std::string& method, const Problem& p, const Options& o)
 // ---------------------------------------------------------------------------------------------
 // JSON output
 
+//! Ten significant digits: far below any error the experiments measure, and lines a driver reads fast.
+const int kJsonDigits = 10;
+
 std::string num(double x)
 {
-    if (!std::isfinite(x))
-        return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%.10g", x);
-    return buf;
-}
-
-std::string jsonEscape(const std::string& text)
-{
-    std::string out;
-    for (char c : text)
-    {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) { out += ' '; continue; }
-        out += c;
-    }
-    return out;
+    return cv::tripose::support::jsonNumber(x, kJsonDigits);
 }
 
 std::string matrix(const cv::Mat& m)
 {
-    std::string s = "[";
-    for (int r = 0; r < m.rows; ++r)
-    {
-        s += r ? ",[" : "[";
-        for (int c = 0; c < m.cols; ++c)
-            s += (c ? "," : "") + num(m.at<double>(r, c));
-        s += "]";
-    }
-    return s + "]";
+    return cv::tripose::support::jsonMatrix(m, kJsonDigits);
 }
 
 std::string inputsJson(const Problem& p)
@@ -626,7 +606,7 @@ int main(int argc, char** argv)
                 const Result r = runMethod(m, input, o);
                 line += std::string(first ? "" : ",") + "\"" + m + "\":{\"ok\":" + (r.ok ? "true" : "false") +
                         ",\"rot_deg\":" + (r.ok ? num(r.rot) : "null") + ",\"t_rel\":" + (r.ok ? num(r.trans) : "null") +
-                        ",\"time_us\":" + num(r.timeUs) + (r.error.empty() ? "" : ",\"error\":\"" + jsonEscape(r.error) + "\"") + "}";
+                        ",\"time_us\":" + num(r.timeUs) + (r.error.empty() ? "" : ",\"error\":\"" + cv::tripose::support::jsonEscape(r.error) + "\"") + "}";
                 first = false;
             }
             line += "}";
