@@ -11,6 +11,7 @@
 #include "../support/error.hpp"
 
 #include "../scoring/candidate_ranking.hpp"
+#include "../scoring/line_noise_test.hpp"
 #include "robust_estimator.hpp"
 #include "mixed_sampler.hpp"
 #include "sample_generator.hpp"
@@ -39,7 +40,8 @@ public:
     RobustEstimator(const PoseSolver& solver, const PoseScorer& scorer, const PoseRefiner* refiner,
                     const RansacOptions& params)
         : solver_(solver), scorer_(scorer), refiner_(refiner), params_(params),
-          samplingThreshold_(kSamplingThresholdFactor * params.threshold)
+          samplingThreshold_(kSamplingThresholdFactor * params.threshold),
+          linesAgainstPointNoise_(scorer.slidesKnownDepth())
     {
         const ViewSet& set = scorer.views();
         numPoints_ = set.numPoints;
@@ -162,16 +164,26 @@ private:
             if (settled)
                 break;
         }
+        return summarizeInliers(estimate);
+    }
+
+    /** Sets the estimate's inlier RMS from the residuals of the last inlierMasks(), which made its
+    masks at its pose, and returns the truncated cost of that pose (settleInliers()): an outlier of
+    the masks costs threshold^2. */
+    double summarizeInliers(RobustEstimate& estimate) const
+    {
         const double t2 = params_.threshold * params_.threshold;
         double cost = 0, inlierSquares = 0;
-        for (const std::vector<double>* r : { &pointResiduals_, &lineResiduals_ })
-            for (double e : *r)
+        const auto add = [&](const std::vector<double>& residuals, const std::vector<unsigned char>& mask) {
+            for (size_t i = 0; i < residuals.size(); ++i)
             {
-                cost += std::min(e * e, t2);
-                // The masks compare these same residuals with the threshold.
-                if (e < params_.threshold)
-                    inlierSquares += e * e;
+                const double e2 = residuals[i] * residuals[i];
+                cost += mask[i] ? e2 : t2;
+                inlierSquares += mask[i] ? e2 : 0.0;
             }
+        };
+        add(pointResiduals_, estimate.pointInliers);
+        add(lineResiduals_, estimate.lineInliers);
         estimate.inlierRms = estimate.numInliers > 0 ? std::sqrt(inlierSquares / estimate.numInliers)
                                                      : std::numeric_limits<double>::quiet_NaN();
         return cost;
@@ -249,6 +261,9 @@ private:
         lineMask.resize(lineResiduals_.size());
         for (size_t i = 0; i < lineResiduals_.size(); ++i)
             count += lineMask[i] = lineResiduals_[i] < params_.threshold;
+        if (linesAgainstPointNoise_)
+            count -= rejectLinesAbovePointNoise(scorer_.views(), params_.threshold, pointResiduals_, pointMask,
+                                                lineResiduals_, lineMask);
         return count;
     }
 
@@ -285,6 +300,10 @@ private:
     const PoseRefiner* refiner_;
     const RansacOptions& params_;
     const double samplingThreshold_;
+    /** Whether the final inlier test also judges lines against the inlier points' noise
+    (scoring/line_noise_test.hpp): where the known depth slides, the stereo rig, whose wrong line
+    matches can be consistent between the images at each time and pass the threshold. */
+    const bool linesAgainstPointNoise_;
     int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
     bool sampledPose_ = false; //!< Some minimal sample gave a pose.
     std::vector<double> pointResiduals_, lineResiduals_;
