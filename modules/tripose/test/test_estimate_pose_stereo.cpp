@@ -268,6 +268,58 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
     }
 }
 
+//! The scene without its wrong matches: the rows that s.pointInliers / s.lineInliers mark, in every view.
+SyntheticStereoScene trueMatchesOnly(const SyntheticStereoScene& s)
+{
+    SyntheticStereoScene out = s;
+    const auto select = [](const Mat& rows, const Mat& keep) {
+        Mat kept;
+        for (int i = 0; i < rows.rows; ++i)
+            if (keep.at<uchar>(i))
+                kept.push_back(rows.row(i));
+        return kept;
+    };
+    Mat* points[4] = { &out.points1, &out.points2, &out.points3, &out.points4 };
+    Mat* lines[4] = { &out.lines1, &out.lines2, &out.lines3, &out.lines4 };
+    for (int v = 0; v < 4; ++v)
+    {
+        *points[v] = select(*points[v], s.pointInliers);
+        *lines[v] = select(*lines[v], s.lineInliers);
+    }
+    return out;
+}
+
+TEST(Tripose_Stereo, ransac_is_not_pulled_off_by_wrong_lines_that_pass_the_inlier_test)
+{
+    // Scenes of the outlier experiment (tripose_evaluate stereo --points 100 --lines 40 --noise 1
+    // --outliers 0.5 --threshold 3 --seed 4000, trials 55, 94, 161 and 177) in which the estimate was
+    // 0.6-2.7 degrees off while the four-view refinement from the truth on the true matches is within
+    // 0.1: wrong line matches consistent between the two time-B images pass the re-triangulated
+    // inlier test, and the least-squares settle followed them (doc/evaluation.md, Stereo rig).
+    for (int trial : { 55, 94, 161, 177 })
+    {
+        const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(100, 40, 4000 + trial, 1.0, 0.5));
+        Mat R = s.R.clone(), t = s.t.clone();
+        ASSERT_TRUE(std::isfinite(refineStereo(trueMatchesOnly(s), R, t)));
+        const double limit = poseError(R, t, s.R, s.t).rotationDeg;
+        ASSERT_LT(limit, 0.1) << "trial " << trial;
+
+        cv::tripose::RansacParams params;
+        params.threshold = 3;
+        params.seed = 4000;
+        Mat pointMask, lineMask;
+        ASSERT_GT(cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4,
+                                                                 s.lines1, s.lines2, s.lines3, s.lines4,
+                                                                 s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
+                                                                 params, pointMask, lineMask),
+                  0);
+        const PoseError e = poseError(R, t, s.R, s.t);
+        std::cout << "[ stereo   ] outlier experiment, 50 %, trial " << trial << ": " << e.rotationDeg
+                  << " deg (limit " << limit << " deg)" << std::endl;
+        EXPECT_LT(e.rotationDeg, 0.5) << "trial " << trial;
+    }
+}
+
 TEST(Tripose_Stereo, refinement_from_a_perturbed_pose_returns_the_truth)
 {
     RNG rng(31);

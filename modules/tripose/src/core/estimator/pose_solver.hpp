@@ -76,6 +76,9 @@ public:
     the estimator should also settle its final pose from all the features, not only from the
     hypothesis' inliers. */
     virtual bool searchesSeveralBasins() const { return false; }
+    /** True when refine() also searches other starts than the given pose (several basins), so that
+    two calls on the same features from different poses may end in different minima. */
+    virtual bool searchesOtherStarts() const { return false; }
 };
 
 } // namespace tripose

@@ -42,6 +42,7 @@ public:
     {}
 
     bool searchesSeveralBasins() const override { return severalBasins_; }
+    bool searchesOtherStarts() const override { return searchStarts_; }
 
     bool refine(const FeatureSubset& inliers, CameraPose& pose) const override
     {
