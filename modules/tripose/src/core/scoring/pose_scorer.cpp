@@ -122,7 +122,7 @@ PoseScorer::PoseScorer(const ViewSet& set, KnownDepth depth)
         observations_[SequentialTest::Line] += (int)estimated_[v].lines.size();
     }
     Random random(kTestOrderSeed);
-    const int tested = std::min((int)order.size(), kMaxTested);
+    const int tested = (int)order.size() < kMinTestedObservations ? 0 : std::min((int)order.size(), kMaxTested);
     for (int i = 0; i < tested; ++i)
         std::swap(order[i], order[random.uniform(i, (int)order.size())]);
     testOrder_.assign(order.begin(), order.begin() + tested);
@@ -266,7 +266,7 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
     PoseScore s;
     if (inliers)
         inliers->clear();
-    if (test && test->active() && !passesSequentialTest(pose, threshold2, *test, s))
+    if (test && test->active() && !testOrder_.empty() && !passesSequentialTest(pose, threshold2, *test, s))
     {
         s.cost = std::numeric_limits<double>::infinity();
         s.rejected = true;
