@@ -25,10 +25,12 @@ ratio, a martingale under the good hypothesis): a pose that would beat the best 
 a thousand, and a wrong one is rejected after a handful of observations instead of being scored up
 to the best cost (the MSAC bound: at half outliers, more than half of the observations).
 
-The threshold is fixed rather than Chum and Matas' optimum for speed (A = 1 + K + log A with K the
-solve time in observation checks): the optimum is some 20 for a P3P sample, which would reject one
-good pose in 20, and would cost samples and change results; at 1000 a wrong pose takes about 11
-observations instead of 7 (epsilon 0.5, delta 0.01), a small part of its solve.
+The threshold is fixed rather than Chum and Matas' optimum for speed (A = 1 + K + log A, K the
+solve time in observation checks times the information per observation over the poses per
+sample), which for solves as cheap as a three-feature sample's is in the tens: it would lose a good
+pose in a few per cent of the samples, costing samples and changing results. At 1000 a wrong pose
+takes about 11 observations instead of 5 (epsilon 0.5, delta 0.01, against A = 20), a small part
+of its solve.
 */
 class SequentialTest
 {
