@@ -21,6 +21,11 @@
 //     tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M
 //                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list]
 //                      [--dump-inputs]
+//   synthetic registration against several known views (SyntheticMultiViewScene: V known views and
+//   a new one about 20 m around a 10 m cube, every feature seen by the new view and at least two
+//   known views; wrong matches replace observations of the new view):
+//     tripose_evaluate multiview --known V --points N --lines M --noise px [--outliers ratio]
+//                      [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]
 //
 // Methods (--methods, comma separated; default all that apply):
 //   linear         estimatePoseLinePoint (the paper's linear solver)
@@ -42,6 +47,8 @@
 //   three_view_linear+refine  linear+refine on views 1-3 only
 //   tri+sqpnp                 as above, in view 3 (the left image at B)
 //   tri+iterative             the same with SOLVEPNP_ITERATIVE, >= 6 points (its DLT start needs them)
+// Methods of the multiview experiment:
+//   multiview_ransac          estimatePoseMultiViewRansac (robust + refined), threshold --threshold px
 // Per method: rot_deg (angle of R_est R_gt^T), t_rel (|t - t_gt| / |t_gt|), time_us (median of
 // --repeats calls, one thread), ok. With --dump-inputs each line also carries the inputs and the
 // structure triangulated from views 1-2 (points and lines, with the time that took), which is
@@ -66,6 +73,7 @@
 #include "tripose_support/json_writing.hpp"
 #include "tripose_support/known_pair_structure.hpp"
 #include "tripose_support/pose_error.hpp"
+#include "tripose_support/synthetic_multiview_scene.hpp"
 #include "tripose_support/synthetic_scene.hpp"
 #include "tripose_support/synthetic_stereo_scene.hpp"
 #include "tripose_support/vgg_dataset.hpp"
@@ -81,21 +89,25 @@ const char* kUsage =
     "                        [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
     "       tripose_evaluate vgg --sequence DIR [--views a,b,c] --points N --lines M [--trials T]\n"
     "                        [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
+    "       tripose_evaluate multiview --known V --points N --lines M --noise px [--outliers ratio]\n"
+    "                        [--trials T] [--seed S] [--repeats K] [--threshold px] [--methods list] [--dump-inputs]\n"
     "methods: linear, linear+refine, ransac, ml_from_truth, tri+sqpnp, tri+epnp (default: all)\n"
     "stereo methods: stereo_linear, stereo_multi_start, stereo_linear+refine, stereo_ransac,\n"
     "                stereo_ml_from_truth, three_view_ransac, three_view_linear+refine, tri+sqpnp,\n"
-    "                tri+iterative (default: all)\n";
+    "                tri+iterative (default: all)\n"
+    "multiview methods: multiview_ransac (default: all)\n";
 
 const std::vector<std::string> kAllMethods = { "linear", "linear+refine", "ransac", "ml_from_truth", "tri+sqpnp",
                                                "tri+epnp" };
 const std::vector<std::string> kStereoMethods = { "stereo_linear", "stereo_multi_start", "stereo_linear+refine",
                                                   "stereo_ransac", "stereo_ml_from_truth", "three_view_ransac",
                                                   "three_view_linear+refine", "tri+sqpnp", "tri+iterative" };
+const std::vector<std::string> kMultiViewMethods = { "multiview_ransac" };
 
 struct Options
 {
-    std::string source;  // "synthetic", "stereo" or "vgg"
-    int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1;
+    std::string source;  // "synthetic", "stereo", "vgg" or "multiview"
+    int points = 4, lines = 4, trials = 20, seed = 0, repeats = 1, known = 4;
     double noise = 0.0, outliers = 0.0, missing = 0.0, threshold = -1.0, baseline12Fraction = 0.0;
     bool planar = false;
     int motion = cv::tripose::support::MOTION_LARGE;
@@ -113,8 +125,12 @@ struct Problem
     std::vector<cv::Mat> K;                                      // three 3x3 (four for stereo)
     cv::Mat R12, t12, R, t;                                      // R, t: ground truth of view 3
     cv::Mat pointInliers, lineInliers;                           // synthetic: Nx1 / Mx1 CV_8U, 1 for a true match
+    // multiview only: every view's observations (the known views, then the new one; NaN rows where a
+    // view does not see a feature) and the known views' world poses; R, t: the new view's. K: one matrix.
+    std::vector<cv::Mat> viewPoints, viewLines, knownRs, knownTs;
 
     bool stereo() const { return K.size() == 4; }
+    bool multiView() const { return !knownRs.empty(); }
     //! The cameras of views 1-3, what the three-view functions take.
     std::vector<cv::Mat> threeViewCameras() const { return std::vector<cv::Mat>(K.begin(), K.begin() + 3); }
 };
@@ -133,12 +149,14 @@ std::vector<std::string> split(const std::string& s, char sep)
 Options parse(int argc, char** argv)
 {
     if (argc < 2)
-        throw std::runtime_error("missing experiment kind (synthetic, stereo or vgg)");
+        throw std::runtime_error("missing experiment kind (synthetic, stereo, vgg or multiview)");
     Options o;
     o.source = argv[1];
-    if (o.source != "synthetic" && o.source != "stereo" && o.source != "vgg")
-        throw std::runtime_error("experiment kind must be synthetic, stereo or vgg, got " + o.source);
-    const std::vector<std::string>& known = o.source == "stereo" ? kStereoMethods : kAllMethods;
+    if (o.source != "synthetic" && o.source != "stereo" && o.source != "vgg" && o.source != "multiview")
+        throw std::runtime_error("experiment kind must be synthetic, stereo, vgg or multiview, got " + o.source);
+    const std::vector<std::string>& known = o.source == "stereo"      ? kStereoMethods
+                                            : o.source == "multiview" ? kMultiViewMethods
+                                                                      : kAllMethods;
     o.methods = known;
     for (int i = 2; i < argc; ++i)
     {
@@ -150,6 +168,7 @@ Options parse(int argc, char** argv)
         const std::string v = argv[++i];
         if (arg == "--points") o.points = std::stoi(v);
         else if (arg == "--lines") o.lines = std::stoi(v);
+        else if (arg == "--known") o.known = std::stoi(v);
         else if (arg == "--trials") o.trials = std::stoi(v);
         else if (arg == "--seed") o.seed = std::stoi(v);
         else if (arg == "--repeats") o.repeats = std::stoi(v);
@@ -191,6 +210,12 @@ Options parse(int argc, char** argv)
         throw std::runtime_error("arguments --planar, --baseline12-fraction, --sequence: not for stereo");
     if (o.source != "stereo" && o.missing != 0.0)
         throw std::runtime_error("argument --missing: stereo only");
+    if (o.source == "multiview" && (o.planar || o.baseline12Fraction != 0.0 || !o.sequence.empty()))
+        throw std::runtime_error("arguments --planar, --baseline12-fraction, --sequence: not for multiview");
+    if (o.source == "multiview" && o.known < 2)
+        throw std::runtime_error("argument --known: expected >= 2");
+    if (o.source == "multiview" && !(o.outliers >= 0 && o.outliers < 1))
+        throw std::runtime_error("argument --outliers: expected a ratio in [0, 1)");
     if (o.source == "vgg" && o.sequence.empty())
         throw std::runtime_error("argument --sequence: required for vgg");
     if (o.threshold <= 0)  // A fixed 2 px would drop inliers at high noise; 3 sigma keeps ~99% of them.
@@ -345,6 +370,61 @@ Problem seenInView3(const Problem& p)
     return selectFeatures(p, finiteRows(p.points3), finiteRows(p.lines3));
 }
 
+/** A SyntheticMultiViewScene of --known views with 1 px (--noise) of noise, and round(ratio x count) of
+the new view's point and line observations each replaced by a random wrong match: a random point of
+the 640 x 480 image at least 20 px from the true one, a random segment with an end point at least
+20 px from the true line (as the three-view synthetic scenes make them). */
+Problem multiViewProblem(const Options& o, int trial)
+{
+    const uint64 seed = (uint64)(o.seed + trial);
+    cv::tripose::support::SyntheticMultiViewScene s(o.known, o.points, o.lines, seed);
+    s.addNoise(o.noise, 0x9E3779B97F4A7C15ull ^ seed);
+    Problem p;
+    p.viewPoints = s.points;
+    p.viewLines = s.lines;
+    p.knownRs = s.Rs;
+    p.knownTs = s.ts;
+    p.K = { cv::Mat(s.K, true) };
+    p.R = cv::Mat(s.R, true);
+    p.t = cv::Mat(s.t, true);
+    p.pointInliers = cv::Mat(o.points, 1, CV_8U, cv::Scalar(1));
+    p.lineInliers = cv::Mat(o.lines, 1, CV_8U, cv::Scalar(1));
+    cv::RNG rng(0xC2B2AE3D27D4EB4Full ^ seed);
+    const auto randomPixel = [&rng]() { return cv::Point2d(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0)); };
+    const auto lineDistance = [](const cv::Point2d& x, const cv::Point2d& a, const cv::Point2d& b) {
+        const cv::Point2d d = b - a;
+        return std::abs(d.cross(x - a)) / std::max(cv::norm(d), 1e-12);
+    };
+    std::vector<int> order = drawRows(o.points, (int)std::lround(o.outliers * o.points), rng);
+    for (int i : order)
+    {
+        double* x = p.viewPoints.back().ptr<double>(i);
+        const cv::Point2d truth(x[0], x[1]);
+        cv::Point2d wrong;
+        do
+            wrong = randomPixel();
+        while (cv::norm(wrong - truth) < 20.0);
+        x[0] = wrong.x;
+        x[1] = wrong.y;
+        p.pointInliers.at<uchar>(i) = 0;
+    }
+    order = drawRows(o.lines, (int)std::lround(o.outliers * o.lines), rng);
+    for (int i : order)
+    {
+        double* l = p.viewLines.back().ptr<double>(i);
+        const cv::Point2d ta(l[0], l[1]), tb(l[2], l[3]);
+        cv::Point2d a, b;
+        do
+        {
+            a = randomPixel();
+            b = randomPixel();
+        } while (cv::norm(b - a) < 20.0 || std::max(lineDistance(a, ta, tb), lineDistance(b, ta, tb)) < 20.0);
+        l[0] = a.x; l[1] = a.y; l[2] = b.x; l[3] = b.y;
+        p.lineInliers.at<uchar>(i) = 0;
+    }
+    return p;
+}
+
 Problem vggProblem(const cv::tripose::support::VggTriplet& v, const Options& o, int trial)
 {
     if (v.points1.rows < o.points || v.lines1.rows < o.lines)
@@ -422,6 +502,13 @@ bool ransacSolve(const Problem& p, const Options& o, cv::Mat& R, cv::Mat& t)
                                                     ransacParams(o)) > 0;
 }
 
+bool multiViewRansacSolve(const Problem& p, const Options& o, cv::Mat& R, cv::Mat& t)
+{
+    std::vector<cv::Mat> K(p.viewPoints.size(), p.K[0]);
+    return cv::tripose::estimatePoseMultiViewRansac(p.viewPoints, p.viewLines, K, cv::noArray(), p.knownRs,
+                                                    p.knownTs, R, t, ransacParams(o)) > 0;
+}
+
 // The stereo functions on the four views.
 
 bool stereoSolve(const Problem& p, int method, cv::Mat& R, cv::Mat& t)
@@ -486,6 +573,8 @@ Result runMethod(const std::string& method, const Problem& p, const Options& o)
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return fromTruth(p, R, t, refineFrom); });
         if (method == "ransac" || method == "three_view_ransac")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return ransacSolve(p, o, R, t); });
+        if (method == "multiview_ransac")
+            return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return multiViewRansacSolve(p, o, R, t); });
         if (method == "stereo_linear")
             return timed(p, o.repeats, [&](cv::Mat& R, cv::Mat& t) { return stereoSolve(p, cv::tripose::POSE_LINEAR, R, t); });
         if (method == "stereo_multi_start")
@@ -533,6 +622,23 @@ std::string matrix(const cv::Mat& m)
     return cv::tripose::support::jsonMatrix(m, kJsonDigits);
 }
 
+//! A multiview problem as it is: the observations of every view, the known poses, the ground truth.
+std::string multiViewInputsJson(const Problem& p)
+{
+    const auto list = [](const std::vector<cv::Mat>& ms) {
+        std::string s = "[";
+        for (size_t k = 0; k < ms.size(); ++k)
+            s += (k ? "," : "") + matrix(ms[k]);
+        return s + "]";
+    };
+    std::vector<cv::Mat> ts;
+    for (const cv::Mat& t : p.knownTs)
+        ts.push_back(t.reshape(1, 3));
+    return "{\"K\":" + matrix(p.K[0]) + ",\"Rs\":" + list(p.knownRs) + ",\"ts\":" + list(ts) +
+           ",\"R_gt\":" + matrix(p.R) + ",\"t_gt\":" + matrix(p.t.reshape(1, 3)) + ",\"points\":" +
+           list(p.viewPoints) + ",\"lines\":" + list(p.viewLines) + "}";
+}
+
 std::string inputsJson(const Problem& p)
 {
     const int64 t0 = cv::getTickCount();
@@ -576,9 +682,10 @@ int main(int argc, char** argv)
             vgg = cv::tripose::support::loadVggTriplet(o.sequence, o.views[0], o.views[1], o.views[2]);
         for (int trial = 0; trial < o.trials; ++trial)
         {
-            const Problem p = o.source == "vgg"      ? vggProblem(vgg, o, trial)
-                              : o.source == "stereo" ? syntheticStereoProblem(o, trial)
-                                                     : syntheticProblem(o, trial);
+            const Problem p = o.source == "vgg"         ? vggProblem(vgg, o, trial)
+                              : o.source == "stereo"    ? syntheticStereoProblem(o, trial)
+                              : o.source == "multiview" ? multiViewProblem(o, trial)
+                                                        : syntheticProblem(o, trial);
             // Stereo: the methods on views 1-3 get the features the left image at B sees.
             const Problem left = p.stereo() ? seenInView3(p) : p;
             std::string line = "{\"source\":\"" + o.source + "\",\"trial\":" + std::to_string(trial) +
@@ -592,6 +699,9 @@ int main(int argc, char** argv)
             else if (o.source == "stereo")
                 line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"missing\":" +
                         num(o.missing);
+            else if (o.source == "multiview")
+                line += ",\"noise\":" + num(o.noise) + ",\"outliers\":" + num(o.outliers) + ",\"known\":" +
+                        std::to_string(o.known);
             else
                 line += ",\"sequence\":\"" + o.sequence.substr(o.sequence.find_last_of('/') + 1) + "\",\"views\":[" +
                         std::to_string(o.views[0]) + "," + std::to_string(o.views[1]) + "," +
@@ -611,7 +721,7 @@ int main(int argc, char** argv)
             }
             line += "}";
             if (o.dumpInputs)
-                line += ",\"inputs\":" + inputsJson(left);
+                line += ",\"inputs\":" + (p.multiView() ? multiViewInputsJson(p) : inputsJson(left));
             // The rig's peers that use both time-B views (generalized absolute pose) need every feature.
             if (o.dumpInputs && p.stereo())
                 line += ",\"rig_inputs\":" + inputsJson(p);

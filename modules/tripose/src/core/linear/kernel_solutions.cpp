@@ -138,7 +138,7 @@ int solveN4(const Eigen::Matrix<double, 12, 4>& basis, std::vector<Vector12d>& s
     generated::betaN4Polynomial(u, p);
     // Nearly real complex roots are kept too: where the polynomial is ill conditioned the root
     // of the true solution can drift off the real axis, and the polishing below brings it back.
-    const int numRoots = solveRealPolynomialRoots(p, 11, roots, kNearlyRealTolerance);
+    const int numRoots = solveNearlyRealPolynomialRoots(p, 11, roots, kNearlyRealTolerance);
     // Packed null vector: u1..u3 degree 4 (5 coefficients each), u4, u5 degree 3, u6 degree 2.
     const double* u4 = u + 15;
     const double* u5 = u + 19;

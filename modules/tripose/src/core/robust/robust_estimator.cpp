@@ -148,7 +148,7 @@ private:
         candidates_.clear();
         solver_.estimateMinimal(sample, exhaustive, candidates_);
         sampledPose_ = sampledPose_ || !candidates_.empty();
-        if (!keepBest(candidates_))
+        if (!keepBest(candidates_, params_.sequentialTest ? &test_ : nullptr))
             return false;
         if (params_.localOptimization)
             optimizeLocally();
@@ -220,13 +220,17 @@ private:
         return true;
     }
 
-    //! Makes the cheapest of @p poses the best model if it beats it; true if it did.
-    bool keepBest(const std::vector<CameraPose>& poses)
+    /** Makes the cheapest of @p poses the best model if it beats it; true if it did. @p test: the
+    sequential test that the poses must pass before they are scored (the minimal samples' poses),
+    told the rates of every new best model and what it saw of the poses it rejected. */
+    bool keepBest(const std::vector<CameraPose>& poses, SequentialTest* test = nullptr)
     {
         bool improved = false;
         for (const CameraPose& pose : poses)
         {
-            const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_);
+            const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_, test);
+            if (s.rejected)
+                test_.addRejected(s.tested, s.testedConsistent);
             if (s.cost < best_.cost)
             {
                 best_ = s;
@@ -236,7 +240,18 @@ private:
                 improved = true;
             }
         }
+        if (improved)
+            setGoodRates();
         return improved;
+    }
+
+    //! The sequential test's rates of a good pose: the best model's consistent observations.
+    void setGoodRates()
+    {
+        const int points = scorer_.observations(SequentialTest::Point);
+        const int lines = scorer_.observations(SequentialTest::Line);
+        test_.setGoodRates(points > 0 ? double(best_.pointInliers) / points : 0.0,
+                           lines > 0 ? double(best_.inliers - best_.pointInliers) / lines : 0.0);
     }
 
     //! Re-solves from the inliers of the best model while that lowers the cost.
@@ -330,6 +345,7 @@ private:
     PoseScore best_ = worstScore();
     CameraPose bestPose_;
     FeatureSubset bestInliers_, inliers_;
+    SequentialTest test_;
 
     static PoseScore worstScore()
     {

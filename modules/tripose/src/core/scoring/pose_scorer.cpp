@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../support/error.hpp"
+#include "../support/random.hpp"
 
 #include "../geometry/conditioning.hpp"
 #include "../geometry/residuals.hpp"
@@ -32,6 +33,8 @@ constexpr int kSlideIterations = 2;
 // An observation whose residual without the slide is within this share of the inlier bound is
 // scored as it is: the slide could only lower a cost that already counts it an inlier.
 constexpr double kSettledShare = 0.25;
+// Seed of the sequential test's order of the observations (any: the order is fixed per scorer).
+constexpr uint64_t kTestOrderSeed = 0x5851F42D4C957F2Dull;
 
 /** Moment, in a camera, of the line through the points at inverse depths rho on two rays from one
 origin (e: the origin in the camera; fA, fB: the rays' directions rotated into it), times
@@ -106,6 +109,23 @@ PoseScorer::PoseScorer(const ViewSet& set, KnownDepth depth)
         }
         estimated_.push_back(e);
     }
+    // The sequential test's order: every observation, shuffled once (the same for every pose), so
+    // that wrong matches gathered in one range of the features do not reject a good pose.
+    std::vector<TestedObservation> order;
+    for (int v = 0; v < (int)estimated_.size(); ++v)
+    {
+        for (int k = 0; k < (int)estimated_[v].points.size(); ++k)
+            order.push_back(TestedObservation{ v, SequentialTest::Point, k });
+        for (int k = 0; k < (int)estimated_[v].lines.size(); ++k)
+            order.push_back(TestedObservation{ v, SequentialTest::Line, k });
+        observations_[SequentialTest::Point] += (int)estimated_[v].points.size();
+        observations_[SequentialTest::Line] += (int)estimated_[v].lines.size();
+    }
+    Random random(kTestOrderSeed);
+    const int tested = (int)order.size() < kMinTestedObservations ? 0 : std::min((int)order.size(), kMaxTested);
+    for (int i = 0; i < tested; ++i)
+        std::swap(order[i], order[random.uniform(i, (int)order.size())]);
+    testOrder_.assign(order.begin(), order.begin() + tested);
 }
 
 void PoseScorer::triangulateKnown()
@@ -169,30 +189,100 @@ void PoseScorer::triangulateKnown()
     }
 }
 
-PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bound, FeatureSubset* inliers) const
+bool PoseScorer::pointTermResidual2(const EstimatedView& e, size_t k, const Intrinsics& camera, const CameraPose& p,
+                                    double threshold2, double& e2) const
+{
+    const PointTerm& term = e.points[k];
+    if (slides_)
+        return slidPointResidual2(camera, p, term, e.pointSlides[k], threshold2, e2);
+    Eigen::Vector2d r;
+    if (!pointResidual(camera, p.toCamera(term.X), term.observed, r))
+        return false;
+    e2 = r.squaredNorm();
+    return true;
+}
+
+bool PoseScorer::lineTermResidual2(const EstimatedView& e, size_t k, const Intrinsics& camera, const CameraPose& p,
+                                   double threshold2, double& e2, bool& behind) const
+{
+    const LineTerm& term = e.lines[k];
+    if (slides_)
+        // A line is an inlier for 0.5 e2 < threshold2 (the mean of its two distances).
+        return slidLineResidual2(camera, p, term, e.lineSlides[k], 2 * threshold2, e2, behind);
+    const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
+    const Eigen::Vector3d moment = a.cross(b);
+    // The residuals alone would accept the line reflected through the camera centre.
+    behind = segmentBehindCamera(moment, b - a, term.calibratedEnd0, term.calibratedEnd1);
+    Eigen::Vector2d r;
+    if (behind || !lineResidual(camera, moment, term.end0, term.end1, r))
+        return false;
+    e2 = r.squaredNorm();
+    return true;
+}
+
+bool PoseScorer::passesSequentialTest(const CameraPose& pose, double threshold2, const SequentialTest& test,
+                                      PoseScore& s) const
+{
+    // The estimated views' poses, once per test (one for three views and registration, two for a rig).
+    constexpr int kLocalViews = 4;
+    CameraPose local[kLocalViews];
+    std::vector<CameraPose> many;
+    CameraPose* poses = local;
+    if (estimated_.size() > (size_t)kLocalViews)
+    {
+        many.resize(estimated_.size());
+        poses = many.data();
+    }
+    for (size_t v = 0; v < estimated_.size(); ++v)
+        poses[v] = set_.views[estimated_[v].view].poseFor(pose);
+    double logRatio = 0;
+    for (const TestedObservation& o : testOrder_)
+    {
+        const EstimatedView& e = estimated_[o.view];
+        const Intrinsics& camera = set_.views[e.view].camera;
+        double e2 = 0;
+        bool consistent;
+        if (o.kind == SequentialTest::Point)
+            consistent = pointTermResidual2(e, o.term, camera, poses[o.view], threshold2, e2) && e2 < threshold2;
+        else
+        {
+            bool behind = false;
+            consistent = lineTermResidual2(e, o.term, camera, poses[o.view], threshold2, e2, behind) &&
+                         0.5 * e2 < threshold2;
+        }
+        ++s.tested[o.kind];
+        s.testedConsistent[o.kind] += consistent;
+        logRatio += test.step(o.kind, consistent);
+        if (logRatio > test.logThreshold())
+            return false;
+    }
+    return true;
+}
+
+PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bound, FeatureSubset* inliers,
+                            const SequentialTest* test) const
 {
     const double threshold2 = threshold * threshold;
     PoseScore s;
     if (inliers)
         inliers->clear();
+    if (test && test->active() && !testOrder_.empty() && !passesSequentialTest(pose, threshold2, *test, s))
+    {
+        s.cost = std::numeric_limits<double>::infinity();
+        s.rejected = true;
+        return s;
+    }
     for (const EstimatedView& e : estimated_)
     {
         const View& view = set_.views[e.view];
         const CameraPose p = view.poseFor(pose);
         const Intrinsics& camera = view.camera;
         s.cost += e.unmeasured * threshold2;
-        Eigen::Vector2d r;
         for (size_t k = 0; k < e.points.size(); ++k)
         {
-            const PointTerm& term = e.points[k];
             ++s.considered;
             double r2 = threshold2, e2 = 0;
-            bool measured;
-            if (slides_)
-                measured = slidPointResidual2(camera, p, term, e.pointSlides[k], threshold2, e2);
-            else if ((measured = pointResidual(camera, p.toCamera(term.X), term.observed, r)))
-                e2 = r.squaredNorm();
-            if (measured)
+            if (pointTermResidual2(e, k, camera, p, threshold2, e2))
             {
                 s.sumSquares += e2;
                 ++s.residuals;
@@ -200,8 +290,9 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
                 {
                     r2 = e2;
                     ++s.inliers;
+                    ++s.pointInliers;
                     if (inliers)
-                        inliers->points.push_back(term.feature);
+                        inliers->points.push_back(e.points[k].feature);
                 }
             }
             else
@@ -215,23 +306,10 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
         }
         for (size_t k = 0; k < e.lines.size(); ++k)
         {
-            const LineTerm& term = e.lines[k];
             s.considered += 2;
             double r2 = threshold2, e2 = 0;
-            bool measured, behind = false;
-            if (slides_)
-                // A line is an inlier for 0.5 e2 < threshold2 (the mean of its two distances).
-                measured = slidLineResidual2(camera, p, term, e.lineSlides[k], 2 * threshold2, e2, behind);
-            else
-            {
-                const Eigen::Vector3d a = p.toCamera(term.A), b = p.toCamera(term.B);
-                const Eigen::Vector3d moment = a.cross(b);
-                // The residuals alone would accept the line reflected through the camera centre.
-                behind = segmentBehindCamera(moment, b - a, term.calibratedEnd0, term.calibratedEnd1);
-                measured = !behind && lineResidual(camera, moment, term.end0, term.end1, r);
-                if (measured)
-                    e2 = r.squaredNorm();
-            }
+            bool behind = false;
+            const bool measured = lineTermResidual2(e, k, camera, p, threshold2, e2, behind);
             s.behind += behind ? 2 : 0;
             if (measured)
             {
@@ -242,7 +320,7 @@ PoseScore PoseScorer::score(const CameraPose& pose, double threshold, double bou
                     r2 = 0.5 * e2;
                     ++s.inliers;
                     if (inliers)
-                        inliers->lines.push_back(term.feature);
+                        inliers->lines.push_back(e.lines[k].feature);
                 }
             }
             s.cost += r2;

@@ -36,6 +36,9 @@ struct RansacOptions
     bool refine = true;             //!< Finish with the maximum-likelihood refinement over the inliers.
     RefineOptions refineOptions;    //!< Options of that refinement.
     uint64_t seed = 0;              //!< Seed of the sampler: the same seed gives the same result.
+    //! Reject the minimal samples' poses early by the sequential probability ratio test
+    //! (scoring/sequential_test.hpp). Not in the public parameters: for tests and measurements.
+    bool sequentialTest = true;
 };
 
 /** The checks of the options, which each adapter runs on what its caller passed (the pipelines
