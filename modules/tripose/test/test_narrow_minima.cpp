@@ -16,6 +16,7 @@
 //
 // reported in doc/accuracy.md, "Narrow known baselines: the lowest minimum".
 
+#include <cstdio>
 #include <cstdlib>
 
 #include <Eigen/Geometry>
@@ -26,6 +27,7 @@
 #include "../src/core/linear/linear_pose_solver.hpp"
 #include "../src/core/pipeline/pose_pipelines.hpp"
 #include "../src/core/refine/distinct_minima.hpp"
+#include "../src/core/refine/hypothesis_starts.hpp"
 #include "../src/core/refine/multi_start_refinement.hpp"
 
 namespace opencv_test {
@@ -130,16 +132,28 @@ int studySize()
     return size ? std::atoi(size) : 0;
 }
 
+//! First seed of the study (TRIPOSE_NARROW_FIRST_SEED, default 0): other seed sets than the CI's.
+int firstSeed()
+{
+    const char* first = std::getenv("TRIPOSE_NARROW_FIRST_SEED");
+    return first ? std::atoi(first) : 0;
+}
+
 typedef testing::TestWithParam<Regime> Tripose_NarrowMinima;
 
 TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
 {
-    const Regime regime = GetParam();
+    Regime regime = GetParam();
+    // TRIPOSE_NARROW_MIX="P L" studies another mix of points and lines at the regime's baseline.
+    if (const char* mix = std::getenv("TRIPOSE_NARROW_MIX"))
+        if (std::sscanf(mix, "%d %d", &regime.points, &regime.lines) != 2)
+            FAIL() << "TRIPOSE_NARROW_MIX: two numbers, points and lines";
     const int scenes = studySize() > 0 ? studySize() : regime.ciScenes;
+    const int first = studySize() > 0 ? firstSeed() : 0;
     int linearReached = 0, ransacReached = 0, truthIsLowest = 0;
     std::vector<int> linearMissed, ransacMissed;
     double smallestGap = std::numeric_limits<double>::infinity(), closestDistinct = smallestGap, widestSame = 0;
-    for (int seed = 0; seed < scenes; ++seed)
+    for (int seed = first; seed < first + scenes; ++seed)
     {
         ts::SyntheticSceneParams params;
         params.numPoints = regime.points;
@@ -184,6 +198,30 @@ TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
                       << " deg from the lowest; truth " << poseError(R, t, s.R, s.t).rotationDeg << " deg"
                       << std::endl;
         };
+        // Study aid (TRIPOSE_NARROW_VERBOSE): the minima of POSE_LINEAR_REFINE's search, each with its
+        // cost at the search's iterations and refined to convergence.
+        const auto searchMinima = [&]() {
+            const ::tripose::LinearPoseSolver linear(views);
+            const std::vector<::tripose::ScoredPose> ranked = ::tripose::estimateCandidates(views, linear, false);
+            std::vector<CameraPose> starts;
+            for (const ::tripose::ScoredPose& c : ranked)
+                starts.push_back(c.pose);
+            const size_t linearStarts = starts.size();
+            ::tripose::appendHypothesisStarts(views, linear, ::tripose::FeatureSubset::all(views.numPoints, views.numLines),
+                                              starts);
+            std::vector<LocalMinimum> found;
+            ::tripose::searchBasins(views, starts, ::tripose::RefineOptions(), nullptr, nullptr, &found);
+            const std::vector<LocalMinimum> distinct = ::tripose::distinctMinima(found, kDistinctRotation);
+            std::cout << "    search: " << linearStarts << " linear + " << starts.size() - linearStarts
+                      << " hypothesis starts, " << found.size() << " minima, " << distinct.size() << " distinct:";
+            for (const LocalMinimum& m : distinct)
+            {
+                const LocalMinimum c = ::tripose::refineRetriangulating(views, m.pose, referenceOptions());
+                std::cout << " " << m.squares() << "/" << m.used << "->" << c.squares() << "/" << c.used
+                          << (reaches(c, lowest) ? "*" : "");
+            }
+            std::cout << std::endl;
+        };
         Mat R, t;
         if (cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                                s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
@@ -194,6 +232,8 @@ TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
         {
             linearMissed.push_back(seed);
             explain("linear + refine", R, t);
+            if (std::getenv("TRIPOSE_NARROW_VERBOSE"))
+                searchMinima();
         }
 
         cv::tripose::RansacParams ransac;
@@ -208,6 +248,8 @@ TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
         {
             ransacMissed.push_back(seed);
             explain("RANSAC", R, t);
+            if (std::getenv("TRIPOSE_NARROW_VERBOSE"))
+                searchMinima();
         }
     }
     std::cout << regime.name << " " << regime.points << "P+" << regime.lines << "L, 1 px, " << scenes
