@@ -23,6 +23,8 @@ struct LocalMinimum
     int used = 0;
     int residuals = 0;  //!< Residuals in rms.
     int parameters = 0; //!< Pose and structure parameters that entered the cost: 6 + 3 per point + 4 per line.
+    //! The refinement stopped on its tolerance, not on its iteration limit: the cost is the minimum's.
+    bool converged = false;
 
     //! The cost the refinement minimises: the sum of squared residuals (px^2).
     double squares() const { return rms * rms * residuals; }
