@@ -76,17 +76,6 @@ public:
     the estimator should also settle its final pose from all the features, not only from the
     hypothesis' inliers. */
     virtual bool searchesSeveralBasins() const { return false; }
-    /** The maximum-likelihood cost at @p pose when this refiner returned it for @p inliers: the
-    features that entered it (@p used) and the sum of squared residuals (@p squares). False when it
-    does not know it; then the estimator compares its poses by their truncated costs. */
-    virtual bool refinedCost(const FeatureSubset& inliers, const CameraPose& pose, int& used, double& squares) const
-    {
-        (void)inliers;
-        (void)pose;
-        (void)used;
-        (void)squares;
-        return false;
-    }
 };
 
 } // namespace tripose

@@ -86,19 +86,6 @@ public:
         return true;
     }
 
-    bool refinedCost(const FeatureSubset& inliers, const CameraPose& pose, int& used, double& squares) const override
-    {
-        for (const Result& r : results_)
-            if (r.inliers.points == inliers.points && r.inliers.lines == inliers.lines &&
-                r.minima.front().pose.R == pose.R && r.minima.front().pose.t == pose.t)
-            {
-                used = r.minima.front().used;
-                squares = r.minima.front().squares();
-                return true;
-            }
-        return false;
-    }
-
     /** The minima that the refinement which returned @p pose reached: that one first, then the
     other distinct minima within the noise of it (withinNoise()), lowest cost first, each with its
     RMS over that refinement's features. The others are refined further first (kPolishFactor times

@@ -76,19 +76,7 @@ public:
             std::fill(fromAll.pointInliers.begin(), fromAll.pointInliers.end(), 1);
             std::fill(fromAll.lineInliers.begin(), fromAll.lineInliers.end(), 1);
             const double allCost = settleInliers(fromAll, false);
-            // On the same inliers the two are minima of one maximum-likelihood cost, which orders
-            // them: the truncated costs, of residuals with each feature re-triangulated alone,
-            // misorder close minima (narrow 0.5 % 4P+4L: 2 of 100 scenes).
-            bool lower = allCost < cost;
-            int used = 0, allUsed = 0;
-            double squares = 0, allSquares = 0;
-            if (fromAll.pointInliers == estimate.pointInliers && fromAll.lineInliers == estimate.lineInliers &&
-                refiner_->refinedCost(subsetOf(estimate.pointInliers, estimate.lineInliers), estimate.pose, used,
-                                      squares) &&
-                refiner_->refinedCost(subsetOf(fromAll.pointInliers, fromAll.lineInliers), fromAll.pose, allUsed,
-                                      allSquares))
-                lower = allUsed != used ? allUsed > used : allSquares < squares;
-            if (lower)
+            if (allCost < cost)
             {
                 estimate = fromAll;
                 cost = allCost;
@@ -236,7 +224,8 @@ private:
         }
     }
 
-    static FeatureSubset subsetOf(const std::vector<unsigned char>& pointMask, const std::vector<unsigned char>& lineMask)
+    void refineOnInliers(CameraPose& pose, const std::vector<unsigned char>& pointMask,
+                         const std::vector<unsigned char>& lineMask) const
     {
         FeatureSubset inliers;
         for (int i = 0; i < (int)pointMask.size(); ++i)
@@ -245,14 +234,8 @@ private:
         for (int i = 0; i < (int)lineMask.size(); ++i)
             if (lineMask[i])
                 inliers.lines.push_back(i);
-        return inliers;
-    }
-
-    void refineOnInliers(CameraPose& pose, const std::vector<unsigned char>& pointMask,
-                         const std::vector<unsigned char>& lineMask) const
-    {
         CameraPose refined = pose;
-        if (refiner_->refine(subsetOf(pointMask, lineMask), refined) && refined.allFinite())
+        if (refiner_->refine(inliers, refined) && refined.allFinite())
             pose = refined;
     }
 
