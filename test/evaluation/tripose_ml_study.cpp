@@ -9,7 +9,7 @@
 // final estimate is that optimum.
 //
 //   tripose_ml_study [--trials T] [--seed S] [--noise px] [--threshold px] [--regimes list]
-//                    [--mixes list] [--csv]
+//                    [--mixes list] [--csv] [--time]
 //
 // Regimes (--regimes, comma separated; default all): large, small, narrow1 (view 2 at 1 % of the
 // depth from view 1, view 3 by small motion), narrow05 (0.5 %), planar_large, planar_small (one
@@ -19,6 +19,9 @@
 // the estimate is at the optimum when that RMS is within 1e-3 px of the RMS reached from the truth
 // and its rotation within 1e-3 degrees of the optimum's (the same minimum, not just an equally good
 // one).
+//
+// --time adds the estimators' median time per scene (microseconds, the call alone, one thread): run
+// two builds side by side in one session to compare them (doc/speed.md).
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +41,7 @@ namespace ts = cv::tripose::support;
 
 const char* kUsage =
     "usage: tripose_ml_study [--trials T] [--seed S] [--noise px] [--threshold px] [--regimes list]\n"
-    "                        [--mixes list] [--csv]\n"
+    "                        [--mixes list] [--csv] [--time]\n"
     "regimes: large, small, narrow1, narrow05, planar_large, planar_small (default: all)\n"
     "mixes: 4+4, 10+10 (default: both)\n";
 
@@ -61,7 +64,7 @@ struct Options
     int trials = 200, seed = 0;
     double noise = 1.0, threshold = 4.0;
     std::vector<std::string> regimes, mixes = { "4+4", "10+10" };
-    bool csv = false;
+    bool csv = false, time = false;
 };
 
 std::vector<std::string> splitList(const std::string& s)
@@ -92,9 +95,9 @@ Options parse(int argc, char** argv)
             std::fputs(kUsage, stdout);
             std::exit(0);
         }
-        if (arg == "--csv")
+        if (arg == "--csv" || arg == "--time")
         {
-            o.csv = true;
+            (arg == "--csv" ? o.csv : o.time) = true;
             continue;
         }
         if (i + 1 >= argc)
@@ -139,6 +142,7 @@ double refineFrom(const ts::SyntheticScene& s, cv::Mat& R, cv::Mat& t)
 struct Outcome
 {
     std::vector<double> rot; //!< rotation error (deg) per scene; 180 where no pose was returned
+    std::vector<double> micros; //!< time of the estimator's call per scene (us)
     int atOptimum = 0; //!< the same minimum as refinement from the truth
     int atOrBelow = 0; //!< a minimum whose RMS is at most 1e-3 px above that one's (possibly another, lower one)
     long inliers = 0;
@@ -173,11 +177,12 @@ int main(int argc, char** argv)
         if (o.csv)
             std::printf("regime,mix,trials,ransac_med,linref_med,ml_med,ransac_ratio,linref_ratio,"
                         "ransac_at_opt,linref_at_opt,ransac_at_or_below,linref_at_or_below,linear_med,"
-                        "ransac_inliers\n");
+                        "ransac_inliers%s\n", o.time ? ",ransac_us,linref_us" : "");
         else
             std::printf("| regime | mix | RANSAC + refine (deg) | linear + refine (deg) | ML limit (deg) | ratios | "
-                        "same minimum (RANSAC, linear) | RMS at or below (RANSAC, linear) | linear alone (deg) |\n"
-                        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+                        "same minimum (RANSAC, linear) | RMS at or below (RANSAC, linear) | linear alone (deg) |%s\n"
+                        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |%s\n",
+                        o.time ? " time (us: RANSAC, linear + refine) |" : "", o.time ? " --- |" : "");
         for (const std::string& regimeName : o.regimes)
         {
             const auto regime = std::find_if(kRegimes.begin(), kRegimes.end(),
@@ -210,9 +215,11 @@ int main(int argc, char** argv)
                     cv::tripose::RansacParams rp;
                     rp.threshold = o.threshold;
                     cv::Mat R, t;
+                    int64 start = cv::getTickCount();
                     const int inliers = cv::tripose::estimatePoseLinePointRansac(
                         s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3, s.cameraMatrices,
                         cv::noArray(), s.R12, s.t12, R, t, rp);
+                    ransac.micros.push_back(1e6 * double(cv::getTickCount() - start) / cv::getTickFrequency());
                     score(s, inliers > 0, R, t, Rml, tml, mlRms, ransac);
                     ransac.inliers += inliers;
 
@@ -224,24 +231,29 @@ int main(int argc, char** argv)
                     linRot.push_back(n > 0 ? ts::poseError(R, t, s.R, s.t).rotationDeg : 180.0);
                     R.release();
                     t.release();
+                    start = cv::getTickCount();
                     n = cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                            s.lines3, s.cameraMatrices, cv::noArray(), s.R12, s.t12,
                                                            R, t, cv::tripose::POSE_LINEAR_REFINE);
+                    linref.micros.push_back(1e6 * double(cv::getTickCount() - start) / cv::getTickFrequency());
                     score(s, n > 0, R, t, Rml, tml, mlRms, linref);
                 }
                 const double ml = median(mlRot), ra = median(ransac.rot), li = median(linref.rot);
                 if (o.csv)
-                    std::printf("%s,%s,%d,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f\n",
+                    std::printf("%s,%s,%d,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f",
                                 regime->name.c_str(), mix.c_str(), o.trials, ra, li, ml, ra / ml, li / ml,
                                 double(ransac.atOptimum) / o.trials, double(linref.atOptimum) / o.trials,
                                 double(ransac.atOrBelow) / o.trials, double(linref.atOrBelow) / o.trials,
                                 median(linRot), double(ransac.inliers) / o.trials);
                 else
-                    std::printf("| %s | %s | %.3f | %.3f | %.3f | %.3fx, %.3fx | %.1f %%, %.1f %% | %.1f %%, %.1f %% | %.3f |\n",
+                    std::printf("| %s | %s | %.3f | %.3f | %.3f | %.3fx, %.3fx | %.1f %%, %.1f %% | %.1f %%, %.1f %% | %.3f |",
                                 regime->name.c_str(), mix.c_str(), ra, li, ml, ra / ml, li / ml,
                                 100.0 * ransac.atOptimum / o.trials, 100.0 * linref.atOptimum / o.trials,
                                 100.0 * ransac.atOrBelow / o.trials, 100.0 * linref.atOrBelow / o.trials,
                                 median(linRot));
+                if (o.time)
+                    std::printf(o.csv ? ",%.1f,%.1f" : " %.1f, %.1f |", median(ransac.micros), median(linref.micros));
+                std::printf("\n");
                 std::fflush(stdout);
             }
         }

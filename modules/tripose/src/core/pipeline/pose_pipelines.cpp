@@ -54,8 +54,10 @@ void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool sever
     for (const ScoredPose& candidate : candidates)
         starts.push_back(candidate.pose);
     std::vector<LocalMinimum> minima;
-    if (severalBasins && !candidates.empty())
+    if (severalBasins)
     {
+        // The solver's minimal samples give starts even where its estimate over all features has
+        // no candidate (a narrow known pair: 2 of 100 scenes at 0.5 %, 4P+4L).
         appendHypothesisStarts(views, solver, FeatureSubset::all(views.numPoints, views.numLines), starts);
         searchBasins(views, starts, params, nullptr, nullptr, &minima);
     }

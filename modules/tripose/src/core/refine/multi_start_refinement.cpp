@@ -25,6 +25,21 @@ constexpr double kSameRms = 1e-9;
 // differs from the first start's by more than this (Frobenius norm of the difference, about 0.4
 // degrees): closer, the starts would be the same ones again.
 constexpr double kRecentreRotation = 1e-2;
+// searchBasins() refines from its starts with at least this many iterations: in a narrow scene the
+// cost creeps along valleys for tens of iterations, and at the default 30 a start stopped short of
+// its minimum ranks above or below the others by where it stopped (doc/accuracy.md, "Narrow known
+// baselines: the lowest minimum").
+constexpr int kSearchIterations = 100;
+// settleMinima(): the lowest minima of a search, at most kMaxSettled of them (distinct rotations)
+// and at most kSettleCostFactor times the best cost, are refined again from their poses with
+// kSettleFactor times the iterations, the structure re-triangulated there.
+constexpr int kSettleFactor = 3;
+constexpr int kMaxSettled = 8;
+constexpr double kSettleCostFactor = 2.0;
+// Unsettled minima whose rotations are closer than this (Frobenius norm, about 0.04 degrees) are
+// settled once.
+constexpr double kSameSettledRotation = 1e-3;
+
 
 int countUsed(const RefinedStructure& s)
 {
@@ -132,21 +147,87 @@ LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>&
     return best;
 }
 
-LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+namespace {
+
+/** The minima of a search, refined to their ends: each of @p minima that could be the lowest (see
+the constants above) is replaced by the minimum that refineRetriangulating() reaches from its pose
+with kSettleFactor times the iterations. Two things change there: a minimum that stopped on the
+iteration limit goes on along its valley (in narrow scenes 1.08 to 3.2 times the best cost at 30
+iterations was the lowest at convergence), and one that the search's structure held (a line kept
+in front, a point at another depth) moves to the minimum that refinement of its pose alone reaches,
+which is what a refinement of the returned pose finds. Returns the best of the result; @p minima
+holds the settled minima in place of those. A minimum already settled costs a few iterations. */
+LocalMinimum settleMinima(const ViewSet& set, std::vector<LocalMinimum>& minima, const RefineOptions& params,
+                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
+{
+    LocalMinimum best;
+    for (const LocalMinimum& m : minima)
+        if (m.betterThan(best))
+            best = m;
+    if (!best.finite())
+        return best;
+    std::vector<LocalMinimum> order = minima;
+    std::stable_sort(order.begin(), order.end(),
+                     [](const LocalMinimum& a, const LocalMinimum& b) { return a.betterThan(b); });
+    RefineOptions longer = params;
+    longer.maxIterations = kSettleFactor * params.maxIterations;
+    std::vector<LocalMinimum> settled, kept;
+    std::vector<CameraPose> tried;
+    LocalMinimum lowest;
+    for (const LocalMinimum& m : order)
+    {
+        bool repeated = false;
+        for (const CameraPose& t : tried)
+            repeated = repeated || (t.R - m.pose.R).norm() <= kSameSettledRotation;
+        if (repeated)
+            continue;
+        const bool contender = (int)tried.size() < kMaxSettled && m.used >= best.used &&
+                               m.squares() <= kSettleCostFactor * best.squares();
+        if (!contender)
+        {
+            kept.push_back(m);
+            if (m.betterThan(lowest))
+                lowest = m;
+            continue;
+        }
+        tried.push_back(m.pose);
+        const LocalMinimum s = refineRetriangulating(set, m.pose, longer, pointIndices, lineIndices);
+        if (s.finite())
+        {
+            settled.push_back(s);
+            if (s.betterThan(lowest))
+                lowest = s;
+        }
+    }
+    kept.insert(kept.end(), settled.begin(), settled.end());
+    minima.swap(kept);
+    return lowest;
+}
+
+} // namespace
+
+LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& options,
                           const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
                           std::vector<LocalMinimum>* minima)
 {
+    RefineOptions params = options;
+    params.maxIterations = std::max(params.maxIterations, kSearchIterations);
     if (starts.empty())
         return LocalMinimum();
+    std::vector<LocalMinimum> reached;
     std::vector<CameraPose> first = starts;
     centreDirectionStarts(set, starts.front(), first);
-    LocalMinimum best = refineFromStarts(set, first, params, pointIndices, lineIndices, minima);
-    if (!best.finite() || (best.pose.R - starts.front().R).norm() <= kRecentreRotation)
-        return best;
-    std::vector<CameraPose> second;
-    centreDirectionStarts(set, best.pose, second);
-    const LocalMinimum recentred = refineFromStarts(set, second, params, pointIndices, lineIndices, minima);
-    return recentred.betterThan(best) ? recentred : best;
+    LocalMinimum best = refineFromStarts(set, first, params, pointIndices, lineIndices, &reached);
+    if (best.finite() && (best.pose.R - starts.front().R).norm() > kRecentreRotation)
+    {
+        std::vector<CameraPose> second;
+        centreDirectionStarts(set, best.pose, second);
+        refineFromStarts(set, second, params, pointIndices, lineIndices, &reached);
+    }
+    best = settleMinima(set, reached, params, pointIndices, lineIndices);
+    if (minima)
+        minima->insert(minima->end(), reached.begin(), reached.end());
+    return best;
 }
 
 } // namespace tripose

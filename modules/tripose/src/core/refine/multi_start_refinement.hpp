@@ -75,8 +75,12 @@ centreDirectionStarts() around the first of them; then, when the best minimum's 
 apart from that first start's, from the centre-direction starts around the best minimum as well.
 The first start's rotation is a hypothesis' (a linear estimate: 5-9 degrees off at 1 px with a
 narrow known pair), and the starts that keep it miss basins that the same starts around the refined
-rotation reach (doc/accuracy.md, "Narrow known baselines: the lowest minimum"). Appends every
-minimum reached to @p minima when given; returns the best.
+rotation reach (doc/accuracy.md, "Narrow known baselines: the lowest minimum"). The refinements
+run at least 100 iterations (more when @p params asks); then the lowest minima (up to eight, within
+twice the best cost) are refined again from their poses, with three times the iterations and the
+structure re-triangulated there, and replaced by where that ends: the best is chosen among minima
+refined to their ends, and refinement of the returned pose stays at its cost. Appends every minimum
+kept to @p minima when given; returns the best.
 */
 LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
                           const std::vector<int>* pointIndices = nullptr,

@@ -66,9 +66,13 @@ public:
         if (last_.valid && inliers.points == last_.inliers.points && inliers.lines == last_.inliers.lines &&
             pose.R == last_.result.R && pose.t == last_.result.t)
             return true;
-        std::vector<CameraPose> starts(1, pose);
+        // The solver's estimates on the inliers first: the centre-direction starts keep the first
+        // start's rotation, and around the estimate's pose alone they missed the lowest minimum
+        // that POSE_LINEAR_REFINE's search reaches (narrow 0.5 % 4P+4L: 2 of 100 scenes).
+        std::vector<CameraPose> starts;
         if (solver_ && inliers.size() >= solver_->nonMinimalSize())
             solver_->estimateNonMinimal(inliers, starts);
+        starts.push_back(pose);
         if (solver_)
             appendHypothesisStarts(set_, *solver_, inliers, starts);
         std::vector<LocalMinimum> minima;
