@@ -23,14 +23,13 @@ slowest scene over the median one. The tools and PoseLib alternate batch by batc
 over the ratios), so that machine load falls on all of them alike.
 """
 
-import argparse
 import sys
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ransac_vs_poselib import run_tools  # noqa: E402
+from ransac_vs_poselib import collect_method, comparison_arguments, run_tools, tool_labels  # noqa: E402
 from run_evaluation import _poselib_pose, rotation_error_deg  # noqa: E402
 
 
@@ -123,23 +122,11 @@ def poselib_trial(trial, repeats):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--tool", action="append", required=True, help="tripose_evaluate binary (repeatable)")
-    ap.add_argument("--label", action="append", default=[], help="column title of each --tool, in their order")
+    ap = comparison_arguments(__doc__, [0.0, 0.5])
     ap.add_argument("--known", type=int, default=4)
-    ap.add_argument("--points", type=int, default=100)
-    ap.add_argument("--lines", type=int, default=40)
-    ap.add_argument("--noise", type=float, default=1.0)
-    ap.add_argument("--threshold", type=float, default=4.0)
-    ap.add_argument("--outliers", type=float, nargs="*", default=[0.0, 0.5])
-    ap.add_argument("--trials", type=int, default=10, help="scenes per batch")
-    ap.add_argument("--rounds", type=int, default=3, help="batches per ratio (seeds differ per batch)")
-    ap.add_argument("--repeats", type=int, default=5)
-    ap.add_argument("--seed", type=int, default=7000)
     a = ap.parse_args()
 
-    names = [str(t) for t in a.tool]
-    labels = a.label + [Path(n).parent.parent.parent.name or n for n in names[len(a.label):]]
+    names, labels = tool_labels(a)
     results = {r: {n: ([], []) for n in names + ["poselib"]} for r in a.outliers}
     for rnd in range(a.rounds):
         for ratio in a.outliers:
@@ -148,11 +135,7 @@ def main():
                     "--outliers", ratio, "--threshold", a.threshold, "--trials", a.trials, "--seed", seed,
                     "--repeats", a.repeats, "--methods", "multiview_ransac"]
             per_tool, dumped = run_tools(names, args)
-            for name in names:
-                for t in per_tool[name]:
-                    m = t["methods"]["multiview_ransac"]
-                    results[ratio][name][0].append(m["time_us"] if m["ok"] else np.nan)
-                    results[ratio][name][1].append(m["rot_deg"] if m["ok"] else np.inf)
+            collect_method(results[ratio], per_tool, "multiview_ransac")
             for t in dumped:
                 us, rot = poselib_trial(t, a.repeats)
                 results[ratio]["poselib"][0].append(us)

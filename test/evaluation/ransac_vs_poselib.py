@@ -46,6 +46,41 @@ def run_tools(tools, args):
     return trials, dumped
 
 
+def comparison_arguments(description, outliers):
+    """The command line the side-by-side scripts share: the tools and their labels, the scenes and
+    how often each is timed."""
+    ap = argparse.ArgumentParser(description=description, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--tool", action="append", required=True, help="tripose_evaluate binary (repeatable)")
+    ap.add_argument("--label", action="append", default=[],
+                    help="column title of each --tool, in their order (default: the build folder's name)")
+    ap.add_argument("--points", type=int, default=100)
+    ap.add_argument("--lines", type=int, default=40)
+    ap.add_argument("--noise", type=float, default=1.0)
+    ap.add_argument("--threshold", type=float, default=4.0)
+    ap.add_argument("--outliers", type=float, nargs="*", default=outliers)
+    ap.add_argument("--trials", type=int, default=10, help="scenes per batch")
+    ap.add_argument("--rounds", type=int, default=3, help="batches per ratio (seeds differ per batch)")
+    ap.add_argument("--repeats", type=int, default=5)
+    ap.add_argument("--seed", type=int, default=7000)
+    return ap
+
+
+def tool_labels(a):
+    """Each --tool's column title: its --label, else the name of the build folder it sits in."""
+    names = [str(t) for t in a.tool]
+    return names, a.label + [Path(n).parent.parent.parent.name or n for n in names[len(a.label):]]
+
+
+def collect_method(results, per_tool, method):
+    """Appends each tool's time (us; NaN where the method failed) and rotation error (deg; inf where it
+    failed) of `method` to results[tool] = (times, errors)."""
+    for name, trials in per_tool.items():
+        for t in trials:
+            m = t["methods"][method]
+            results[name][0].append(m["time_us"] if m["ok"] else np.nan)
+            results[name][1].append(m["rot_deg"] if m["ok"] else np.inf)
+
+
 def poselib_trial(trial, repeats):
     inputs = trial["inputs"]
     R_gt = np.array(inputs["R_gt"], dtype=float)
@@ -57,23 +92,11 @@ def poselib_trial(trial, repeats):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--tool", action="append", required=True, help="tripose_evaluate binary (repeatable)")
-    ap.add_argument("--label", action="append", default=[],
-                    help="column title of each --tool, in their order (default: the build folder's name)")
-    ap.add_argument("--points", type=int, default=100)
-    ap.add_argument("--lines", type=int, default=40)
-    ap.add_argument("--noise", type=float, default=1.0)
-    ap.add_argument("--threshold", type=float, default=4.0)
-    ap.add_argument("--outliers", type=float, nargs="*", default=[0.0, 0.3, 0.5, 0.6])
-    ap.add_argument("--trials", type=int, default=10, help="scenes per batch")
-    ap.add_argument("--rounds", type=int, default=3, help="batches per ratio (seeds differ per batch)")
-    ap.add_argument("--repeats", type=int, default=5)
-    ap.add_argument("--seed", type=int, default=7000)
+    ap = comparison_arguments(__doc__, [0.0, 0.3, 0.5, 0.6])
     ap.add_argument("--motion", default="large")
     a = ap.parse_args()
 
-    names = [str(t) for t in a.tool]
+    names, labels = tool_labels(a)
     results = {r: {n: ([], []) for n in names + ["poselib-adaptive"]} for r in a.outliers}
     for rnd in range(a.rounds):
         for ratio in a.outliers:
@@ -82,11 +105,7 @@ def main():
                     "--threshold", a.threshold, "--trials", a.trials, "--seed", seed, "--repeats", a.repeats,
                     "--motion", a.motion, "--methods", "ransac"]
             per_tool, dumped = run_tools(names, args)
-            for name in names:
-                for t in per_tool[name]:
-                    m = t["methods"]["ransac"]
-                    results[ratio][name][0].append(m["time_us"] if m["ok"] else np.nan)
-                    results[ratio][name][1].append(m["rot_deg"] if m["ok"] else np.inf)
+            collect_method(results[ratio], per_tool, "ransac")
             for t in dumped:
                 us, rot = poselib_trial(t, a.repeats)
                 results[ratio]["poselib-adaptive"][0].append(us)
@@ -94,7 +113,6 @@ def main():
 
     print(f"{a.points}P+{a.lines}L, {a.noise} px noise, threshold {a.threshold} px, "
           f"{a.rounds * a.trials} scenes per ratio, median of {a.repeats} calls per scene")
-    labels = a.label + [Path(n).parent.parent.parent.name or n for n in names[len(a.label):]]
     header = "| outliers |" + "".join(f" {label} ms (x PoseLib) | rot deg |"
                                       for label in labels) + " PoseLib adaptive ms | rot deg |"
     print(header)

@@ -27,7 +27,6 @@ is faster), the median rotation error, tripose's slowest scene over its median, 
 which tripose is more than 0.5 degrees off while the refinement from the truth is within 0.1.
 """
 
-import argparse
 import sys
 import time
 from pathlib import Path
@@ -35,7 +34,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from ransac_vs_poselib import run_tools  # noqa: E402
+from ransac_vs_poselib import comparison_arguments, run_tools, tool_labels  # noqa: E402
 from run_evaluation import rotation_error_deg  # noqa: E402
 
 OFF_DEG = 0.5
@@ -109,22 +108,10 @@ def peer_trial(trial, repeats, threshold):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--tool", action="append", required=True, help="tripose_evaluate binary (repeatable)")
-    ap.add_argument("--label", action="append", default=[], help="column title of each --tool, in their order")
-    ap.add_argument("--points", type=int, default=100)
-    ap.add_argument("--lines", type=int, default=40)
-    ap.add_argument("--noise", type=float, default=1.0)
-    ap.add_argument("--threshold", type=float, default=4.0)
-    ap.add_argument("--outliers", type=float, nargs="*", default=[0.0, 0.5])
-    ap.add_argument("--trials", type=int, default=10, help="scenes per batch")
-    ap.add_argument("--rounds", type=int, default=3, help="batches per ratio (seeds differ per batch)")
-    ap.add_argument("--repeats", type=int, default=5)
-    ap.add_argument("--seed", type=int, default=7000)
+    ap = comparison_arguments(__doc__, [0.0, 0.5])
     a = ap.parse_args()
 
-    names = [str(t) for t in a.tool]
-    labels = a.label + [Path(n).parent.parent.parent.name or n for n in names[len(a.label):]]
+    names, labels = tool_labels(a)
     peers = ["poselib", "opencv"]
     results = {r: {n: {"time": [], "rot": [], "limit": []} for n in names + peers} for r in a.outliers}
     for rnd in range(a.rounds):

@@ -127,35 +127,49 @@ int rootsBetween(const double* c, int degree, const double* critical, int numCri
     return count;
 }
 
-} // namespace
-
-int solveNearlyRealPolynomialRoots(const double* coeffs, int degree, double* roots, double nearlyRealTolerance)
+/** Starts both root finders. The roots at zero and the vanishing leading coefficients come off:
+c[0..m] with c[0] and c[m] non-zero, so that the scaling by the geometric mean of the root magnitudes
+is defined. A root at zero, and the root of a linear remainder, go to @p roots (@p count of them).
+Only exact zeros lower the degree: a relative threshold would depend on the scale of the roots, and
+a leading coefficient that is merely tiny yields a huge root, which the caller rejects. False where
+a coefficient is not finite or every one is zero: no roots to report. */
+bool reduceToNonZeroRoots(const double* coeffs, int degree, double* roots, const double*& c, int& m, int& count)
 {
     TRIPOSE_ASSERT(degree >= 0 && degree <= kMaxDegree);
     double largest = 0;
     for (int i = 0; i <= degree; ++i)
     {
         if (!std::isfinite(coeffs[i]))
-            return 0;
+            return false;
         largest = std::max(largest, std::abs(coeffs[i]));
     }
     if (largest == 0)
-        return 0;
+        return false;
     int n = degree;
     while (n > 0 && coeffs[n] == 0)
         --n;
     int zeros = 0;
     while (zeros < n && coeffs[zeros] == 0)
         ++zeros;
-    const double* c = coeffs + zeros;
-    const int m = n - zeros;
-
-    int count = 0;
+    c = coeffs + zeros;
+    m = n - zeros;
+    count = 0;
     if (zeros > 0)
         roots[count++] = 0.0;
     if (m == 1)
         roots[count++] = -c[0] / c[1];
-    else if (m > 1)
+    return true;
+}
+
+} // namespace
+
+int solveNearlyRealPolynomialRoots(const double* coeffs, int degree, double* roots, double nearlyRealTolerance)
+{
+    const double* c;
+    int m, count;
+    if (!reduceToNonZeroRoots(coeffs, degree, roots, c, m, count))
+        return 0;
+    if (m > 1)
     {
         // The balanced monic polynomial in y = x / s, as for the companion matrix, and its derivatives:
         // d[k] holds the k-th derivative divided by k! ... scaled to be monic again (same roots).
@@ -218,34 +232,11 @@ int solveNearlyRealPolynomialRoots(const double* coeffs, int degree, double* roo
 
 int solveRealPolynomialRoots(const double* coeffs, int degree, double* roots, double imaginaryTolerance)
 {
-    TRIPOSE_ASSERT(degree >= 0 && degree <= kMaxDegree);
-    double largest = 0;
-    for (int i = 0; i <= degree; ++i)
-    {
-        if (!std::isfinite(coeffs[i]))
-            return 0;
-        largest = std::max(largest, std::abs(coeffs[i]));
-    }
-    if (largest == 0)
+    const double* c;
+    int m, count;
+    if (!reduceToNonZeroRoots(coeffs, degree, roots, c, m, count))
         return 0;
-    // Only exact zeros lower the degree: a relative threshold would depend on the scale of the
-    // roots. A leading coefficient that is merely tiny yields a huge root, which the caller rejects.
-    int n = degree;
-    while (n > 0 && coeffs[n] == 0)
-        --n;
-    // Roots at zero: factor them out so the scaling below is well defined.
-    int zeros = 0;
-    while (zeros < n && coeffs[zeros] == 0)
-        ++zeros;
-    const double* c = coeffs + zeros;
-    const int m = n - zeros;
-
-    int count = 0;
-    if (zeros > 0)
-        roots[count++] = 0.0;
-    if (m == 1)
-        roots[count++] = -c[0] / c[1];
-    else if (m > 1)
+    if (m > 1)
     {
         // x = s y with s the geometric mean of the root magnitudes balances the companion matrix.
         const double s = std::pow(std::abs(c[0] / c[m]), 1.0 / m);

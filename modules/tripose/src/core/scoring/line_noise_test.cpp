@@ -30,19 +30,12 @@ double chiSquareQuantile999(int k)
     return k * c * c * c;
 }
 
-int residualsOfPoint(const ViewSet& set, int i)
+//! How many residuals feature @p i has: two in each view that sees it (by @p sees, View::seesPoint or View::seesLine).
+int residualsOf(const ViewSet& set, int i, bool (View::*sees)(int) const)
 {
     int n = 0;
     for (const View& view : set.views)
-        n += view.seesPoint(i) ? 2 : 0;
-    return n;
-}
-
-int residualsOfLine(const ViewSet& set, int i)
-{
-    int n = 0;
-    for (const View& view : set.views)
-        n += view.seesLine(i) ? 2 : 0;
+        n += (view.*sees)(i) ? 2 : 0;
     return n;
 }
 
@@ -58,7 +51,7 @@ int rejectLinesAbovePointNoise(const ViewSet& set, double threshold, const std::
     {
         if (!pointMask[i])
             continue;
-        const int n = residualsOfPoint(set, (int)i);
+        const int n = residualsOf(set, (int)i, &View::seesPoint);
         if (n <= 3)
             continue;
         squares += pointResiduals[i] * pointResiduals[i] * n;
@@ -71,7 +64,7 @@ int rejectLinesAbovePointNoise(const ViewSet& set, double threshold, const std::
     {
         if (!lineMask[i])
             continue;
-        const int n = residualsOfLine(set, (int)i);
+        const int n = residualsOf(set, (int)i, &View::seesLine);
         if (n <= 4)
             continue;
         if (lineResiduals[i] * lineResiduals[i] * n > chiSquareQuantile999(n - 4) * variance)
