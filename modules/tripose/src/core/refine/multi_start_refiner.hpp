@@ -44,16 +44,25 @@ public:
     bool searchesSeveralBasins() const override { return severalBasins_; }
     bool searchesOtherStarts() const override { return searchStarts_; }
 
-    bool refine(const FeatureSubset& inliers, CameraPose& pose) const override
+    bool refine(const FeatureSubset& inliers, CameraPose& pose, int maxIterations = 0,
+                bool* stoppedAtCap = nullptr) const override
     {
+        if (stoppedAtCap)
+            *stoppedAtCap = false;
         // Fewer than three features leave the pose and structure under-determined.
         if (inliers.size() < 3)
             return false;
         if (!searchStarts_ || inliers.size() > kMaxMultiStartFeatures)
         {
             LocalMinimum single;
+            RefineOptions params = params_;
+            const bool capped = !searchStarts_ && maxIterations > 0 && maxIterations < params.maxIterations;
+            if (capped)
+                params.maxIterations = maxIterations;
             const RefinementSummary summary =
-                refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
+                refinePoseAndStructure(set_, pose, params, &inliers.points, &inliers.lines);
+            if (stoppedAtCap)
+                *stoppedAtCap = capped && summary.iterations >= maxIterations;
             single.pose = pose;
             single.rms = summary.finalRms;
             single.residuals = summary.residuals;
