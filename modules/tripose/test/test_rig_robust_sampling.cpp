@@ -7,7 +7,10 @@
 #include "tripose_support/synthetic_stereo_scene.hpp"
 
 #include "../src/opencv/argument_reading.hpp"
+#include "../src/core/geometry/rotation.hpp"
 #include "../src/core/linear/rig_pose_solver.hpp"
+#include "../src/core/refine/ml_refinement.hpp"
+#include "../src/core/refine/multi_start_refiner.hpp"
 #include "../src/core/robust/hybrid_pose_solver.hpp"
 #include "../src/core/scoring/pose_scorer.hpp"
 
@@ -186,6 +189,69 @@ TEST(Tripose_RigRobustSampling, sliding_scorer_is_exact_at_the_true_pose)
         EXPECT_EQ(0, score.behind) << "seed " << seed;
         EXPECT_LT(score.rms(), 1e-6) << "seed " << seed;
     }
+}
+
+// The settle of the rig's robust estimator refines a round at most kSettleRoundIterations before it
+// re-classifies the inliers; when they have settled, the refinement of the same features goes on
+// from the structure that round reached instead of re-triangulating it (robust_estimator.cpp,
+// multi_start_refiner.hpp). On the small sets whose refinement is slow (far lines on a short
+// baseline: the slowest of the seeded 10P+10L scenes of doc/speed.md, "Stereo rig"), refined from
+// a perturbed true pose, the continued refinement starts where the capped one stopped, takes no
+// more iterations than re-triangulating there, and ends where both that and (where it converged)
+// one uncapped refinement end.
+TEST(Tripose_RigRobustSampling, capped_refinement_continues_from_its_structure)
+{
+    const int cap = 12;
+    int slow = 0;
+    for (int seed : {9014, 9005, 8000, 8009, 11003, 9015})
+    {
+        const SyntheticStereoScene s = rigScene(10, 10, seed, 1.0, 0.0, 0.0);
+        const RigSetup setup(s);
+        CameraPose start = corePose(s.R, s.t);
+        start.R = ::tripose::rotateLeft(Eigen::Vector3d(0.02, -0.015, 0.01), start.R);
+        start.t += 0.05 * start.t.norm() * Eigen::Vector3d(1.0, -0.5, 0.3).normalized();
+        ::tripose::RefineOptions options;
+        CameraPose full = start;
+        const ::tripose::RefinementSummary uncapped = ::tripose::refinePoseAndStructure(setup.views, full, options);
+        ::tripose::RefineOptions capped = options;
+        capped.maxIterations = cap;
+        CameraPose pose = start;
+        ::tripose::RefinedStructure structure;
+        const ::tripose::RefinementSummary first =
+            ::tripose::refinePoseAndStructure(setup.views, pose, capped, nullptr, nullptr, &structure);
+        if (first.iterations < cap)
+            continue;
+        ++slow;
+        const ::tripose::RefinementSummary rest =
+            ::tripose::refinePoseAndStructure(setup.views, pose, options, nullptr, nullptr, nullptr, nullptr, &structure);
+        // Re-triangulated at the same pose, the structure lies nearer by its residuals but not along
+        // the valley the capped refinement was following: that refinement takes as long at least.
+        CameraPose again = pose;
+        const ::tripose::RefinementSummary retriangulated = ::tripose::refinePoseAndStructure(setup.views, again, options);
+        EXPECT_NEAR(first.finalRms, rest.initialRms, 1e-9) << "seed " << seed;
+        EXPECT_LE(rest.iterations, retriangulated.iterations) << "seed " << seed;
+        EXPECT_NEAR(retriangulated.finalRms, rest.finalRms, 1e-6) << "seed " << seed;
+        EXPECT_LT(rotationErrorDeg(again, pose), 1e-4) << "seed " << seed;
+        // Where one uncapped refinement converged, the two end where it does.
+        if (uncapped.iterations < options.maxIterations)
+        {
+            EXPECT_NEAR(uncapped.finalRms, rest.finalRms, 1e-6) << "seed " << seed;
+            EXPECT_LT(rotationErrorDeg(full, pose), 1e-4) << "seed " << seed;
+        }
+
+        // The robust estimator's refiner does the same when asked again on the features and from
+        // the pose of a call that stopped at its cap.
+        FeatureSubset all = FeatureSubset::all(setup.views.numPoints, setup.views.numLines);
+        const ::tripose::MultiStartRefiner refiner(setup.views, options, &setup.solver, true, false);
+        CameraPose viaRefiner = start;
+        bool stoppedAtCap = false;
+        ASSERT_TRUE(refiner.refine(all, viaRefiner, cap, &stoppedAtCap));
+        EXPECT_TRUE(stoppedAtCap) << "seed " << seed;
+        ASSERT_TRUE(refiner.refine(all, viaRefiner, 0, &stoppedAtCap));
+        EXPECT_FALSE(stoppedAtCap);
+        EXPECT_LT(rotationErrorDeg(pose, viaRefiner), 1e-9) << "seed " << seed;
+    }
+    EXPECT_GE(slow, 3);
 }
 
 } // namespace

@@ -70,8 +70,11 @@ class PoseRefiner
 {
 public:
     virtual ~PoseRefiner() {}
-    //! Refines @p pose on @p inliers; false (pose unchanged) when it could not.
-    virtual bool refine(const FeatureSubset& inliers, CameraPose& pose) const = 0;
+    /** Refines @p pose on @p inliers; false (pose unchanged) when it could not. @p maxIterations,
+    when positive, caps the iterations of a refiner that descends from the pose it is given
+    (!searchesOtherStarts()); @p stoppedAtCap, when given, receives whether it stopped there. */
+    virtual bool refine(const FeatureSubset& inliers, CameraPose& pose, int maxIterations = 0,
+                        bool* stoppedAtCap = nullptr) const = 0;
     /** True when the problem's cost has several basins (see scoring/known_structure.hpp), so that
     the estimator should also settle its final pose from all the features, not only from the
     hypothesis' inliers. */

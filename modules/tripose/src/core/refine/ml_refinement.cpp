@@ -90,7 +90,8 @@ public:
     }
 
     //! Refines @p poses in place; @p covariance (only for one pose) receives the uncertainty of the result.
-    RefinementSummary run(std::vector<CameraPose>& poses, RefinedStructure* structure, PoseCovariance* covariance)
+    RefinementSummary run(std::vector<CameraPose>& poses, RefinedStructure* structure, PoseCovariance* covariance,
+                          const RefinedStructure* start = nullptr)
     {
         if (covariance)
             *covariance = PoseCovariance();
@@ -101,7 +102,11 @@ public:
         for (const CameraPose& pose : poses)
             finitePose = finitePose && pose.allFinite();
         if (finitePose)
+        {
             initializeStructure(current);
+            if (start)
+                continueStructure(*start, current);
+        }
         else
         {
             current.points.assign(points_.size(), Eigen::Vector3d::Zero());
@@ -258,6 +263,31 @@ private:
                          lineObservation(views_[v], mountOf(e, v), fitted, view.lineEnds[2 * i], view.lineEnds[2 * i + 1], r);
             }
             lines_[k].used = imaged;
+        }
+    }
+
+    /** Takes the structure of the features that @p start used (an earlier refinement of the same
+    features, RefinedStructure) over the triangulation, where this refinement uses them too. */
+    void continueStructure(const RefinedStructure& start, Estimate& e) const
+    {
+        if (start.points.size() == points_.size() && start.pointUsed.size() == points_.size())
+            for (size_t k = 0; k < points_.size(); ++k)
+                if (points_[k].used && start.pointUsed[k] && start.points[k].allFinite())
+                    e.points[k] = start.points[k];
+        if (start.lineEnds.size() != 2 * lines_.size() || start.lineUsed.size() != lines_.size())
+            return;
+        for (size_t k = 0; k < lines_.size(); ++k)
+        {
+            if (!lines_[k].used || !start.lineUsed[k])
+                continue;
+            const Eigen::Vector3d& A = start.lineEnds[2 * k];
+            const Eigen::Vector3d& B = start.lineEnds[2 * k + 1];
+            PluckerLine L;
+            L.d = B - A;
+            L.m = A.cross(B);
+            OrthonormalLine line;
+            if (A.allFinite() && B.allFinite() && OrthonormalLine::fromPlucker(L, line))
+                e.lines[k] = line;
         }
     }
 
@@ -494,14 +524,15 @@ private:
 
 RefinementSummary refinePoseAndStructure(const ViewSet& set, CameraPose& pose, const RefineOptions& params,
                                          const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
-                                         RefinedStructure* structure, PoseCovariance* covariance)
+                                         RefinedStructure* structure, PoseCovariance* covariance,
+                                         const RefinedStructure* start)
 {
     std::vector<int> poseOfView(set.views.size());
     for (size_t v = 0; v < set.views.size(); ++v)
         poseOfView[v] = set.views[v].estimated ? 0 : -1;
     Refiner<6> refiner(set, poseOfView, 1, params, pointIndices, lineIndices);
     std::vector<CameraPose> poses(1, pose);
-    const RefinementSummary summary = refiner.run(poses, structure, covariance);
+    const RefinementSummary summary = refiner.run(poses, structure, covariance, start);
     pose = poses[0];
     return summary;
 }

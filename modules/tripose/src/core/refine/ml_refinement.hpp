@@ -70,13 +70,16 @@ normal equations with each feature's structure eliminated (refine/schur_system.h
 Jacobians (refine/observation_model.hpp), time linear in the number of features. @p params must be
 valid (see checkRefineParams()). Null index lists select every point / line. The pose is never
 replaced by non-finite values. @p covariance, when given, receives the uncertainty of the returned
-pose (linearised once more at it, which costs one iteration).
+pose (linearised once more at it, which costs one iteration). @p start, when given, is the
+structure an earlier refinement of the same features returned (@p structure of a call capped by
+params.maxIterations): the features it used continue from it instead of being re-triangulated.
 */
 RefinementSummary refinePoseAndStructure(const ViewSet& data, CameraPose& pose, const RefineOptions& params,
                                          const std::vector<int>* pointIndices = nullptr,
                                          const std::vector<int>* lineIndices = nullptr,
                                          RefinedStructure* structure = nullptr,
-                                         PoseCovariance* covariance = nullptr);
+                                         PoseCovariance* covariance = nullptr,
+                                         const RefinedStructure* start = nullptr);
 
 /** Maximum-likelihood refinement of several poses and the structure (a bundle adjustment with some
 views fixed), as refinePoseAndStructure() over every feature of @p set: view v moves with pose

@@ -44,16 +44,43 @@ public:
     bool searchesSeveralBasins() const override { return severalBasins_; }
     bool searchesOtherStarts() const override { return searchStarts_; }
 
-    bool refine(const FeatureSubset& inliers, CameraPose& pose) const override
+    bool refine(const FeatureSubset& inliers, CameraPose& pose, int maxIterations = 0,
+                bool* stoppedAtCap = nullptr) const override
     {
+        if (stoppedAtCap)
+            *stoppedAtCap = false;
         // Fewer than three features leave the pose and structure under-determined.
         if (inliers.size() < 3)
             return false;
         if (!searchStarts_ || inliers.size() > kMaxMultiStartFeatures)
         {
             LocalMinimum single;
-            const RefinementSummary summary =
-                refinePoseAndStructure(set_, pose, params_, &inliers.points, &inliers.lines);
+            RefineOptions params = params_;
+            const bool capped = !searchStarts_ && maxIterations > 0 && maxIterations < params.maxIterations;
+            if (capped)
+                params.maxIterations = maxIterations;
+            // A call on the features and from the pose that a capped call ended on continues from
+            // the structure it reached: re-triangulated, that structure would cost most of the cap
+            // again (a far line on a short baseline moves by metres).
+            const bool resumes = capped_.valid && inliers.points == capped_.inliers.points &&
+                                 inliers.lines == capped_.inliers.lines && pose.R == capped_.result.R &&
+                                 pose.t == capped_.result.t;
+            RefinedStructure* structure = capped ? &capped_.next : nullptr;
+            const RefinementSummary summary = refinePoseAndStructure(
+                set_, pose, params, &inliers.points, &inliers.lines, structure, nullptr,
+                resumes ? &capped_.structure : nullptr);
+            capped_.valid = capped && summary.iterations >= maxIterations;
+            if (capped_.valid)
+            {
+                capped_.inliers = inliers;
+                capped_.result = pose;
+                capped_.structure.points.swap(capped_.next.points);
+                capped_.structure.lineEnds.swap(capped_.next.lineEnds);
+                capped_.structure.pointUsed.swap(capped_.next.pointUsed);
+                capped_.structure.lineUsed.swap(capped_.next.lineUsed);
+            }
+            if (stoppedAtCap)
+                *stoppedAtCap = capped_.valid;
             single.pose = pose;
             single.rms = summary.finalRms;
             single.residuals = summary.residuals;
@@ -181,6 +208,16 @@ private:
     const PoseSolver* solver_;
     bool severalBasins_, searchStarts_;
     mutable LastRefinement last_;
+    //! The last refinement from the estimator's pose if it stopped at the cap it was given: its
+    //! features, result and structure (refine()); next: the structure of the call under way.
+    struct CappedRefinement
+    {
+        bool valid = false;
+        FeatureSubset inliers;
+        CameraPose result;
+        RefinedStructure structure, next;
+    };
+    mutable CappedRefinement capped_;
     mutable std::vector<Result> results_;
 };
 
