@@ -41,18 +41,6 @@ double polishRoot(const double* c, int degree, double x)
     return x;
 }
 
-//! p(y) and p'(y) by Horner's rule.
-void evaluateWithDerivative(const double* c, int degree, double y, double& value, double& derivative)
-{
-    value = c[degree];
-    derivative = 0;
-    for (int i = degree - 1; i >= 0; --i)
-    {
-        derivative = derivative * y + value;
-        value = value * y + c[i];
-    }
-}
-
 /** The root of @p c (degree @p degree), monotone on [lo, hi] with values @p flo, @p fhi of opposite
 signs there: Newton's method from the midpoint, a bisection step wherever Newton would leave the
 bracket or would not halve the step before last (Numerical Recipes' rtsafe), so that the bracket

@@ -5,6 +5,8 @@
 #ifndef OPENCV_TRIPOSE_POLYNOMIAL_ROOTS_HPP
 #define OPENCV_TRIPOSE_POLYNOMIAL_ROOTS_HPP
 
+#include "../support/horner.hpp"
+
 namespace tripose {
 
 /** Real roots of p(x) = sum_i coeffs[i] x^i (ascending powers, degree <= 16).
@@ -31,15 +33,6 @@ y, as the companion matrix's eigenvalues are judged). Roots are polished by Newt
 solveRealPolynomialRoots(). Returns the number of roots written to @p roots, in ascending order.
 */
 int solveNearlyRealPolynomialRoots(const double* coeffs, int degree, double* roots, double nearlyRealTolerance);
-
-//! p(x) by Horner's rule (ascending coefficients).
-inline double evaluatePolynomial(const double* coeffs, int degree, double x)
-{
-    double value = coeffs[degree];
-    for (int i = degree - 1; i >= 0; --i)
-        value = value * x + coeffs[i];
-    return value;
-}
 
 } // namespace tripose
 

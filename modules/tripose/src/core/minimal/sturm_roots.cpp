@@ -4,6 +4,8 @@
 
 #include "sturm_roots.hpp"
 
+#include "../support/horner.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,26 +19,6 @@ constexpr double kRemainderRounding = 1e-13;
 // Intervals narrower than this, relative to max(1, |x|), are not split further.
 constexpr double kNarrowInterval = 1e-13;
 constexpr int kMaxNewtonSteps = 50;
-
-double evaluate(const double* c, int degree, double x)
-{
-    double value = c[degree];
-    for (int i = degree - 1; i >= 0; --i)
-        value = value * x + c[i];
-    return value;
-}
-
-//! p and p' at x.
-void evaluateWithDerivative(const double* c, int degree, double x, double& value, double& derivative)
-{
-    value = c[degree];
-    derivative = 0;
-    for (int i = degree - 1; i >= 0; --i)
-    {
-        derivative = derivative * x + value;
-        value = value * x + c[i];
-    }
-}
 
 //! Divides by the largest magnitude (a positive factor: signs, hence sign changes, are kept).
 void normalise(double* c, int degree)
@@ -62,7 +44,7 @@ struct SturmSequence
         double previous = 0;
         for (int k = 0; k < length; ++k)
         {
-            const double v = evaluate(c[k], degree[k], x);
+            const double v = evaluatePolynomial(c[k], degree[k], x);
             if (v == 0)
                 continue;
             if (previous != 0 && (v > 0) != (previous > 0))
@@ -118,7 +100,7 @@ void buildSequence(const double* p, int n, SturmSequence& s)
 //! Newton on a polynomial of degree n shrinks the distance only by a factor (n - 1) / n).
 double refineBracketedRoot(const double* p, int n, double lo, double hi)
 {
-    const bool positiveAtLo = evaluate(p, n, lo) > 0;
+    const bool positiveAtLo = evaluatePolynomial(p, n, lo) > 0;
     double x = 0.5 * (lo + hi);
     double step = hi - lo, stepBefore = step;
     for (int iteration = 0; iteration < kMaxNewtonSteps; ++iteration)
@@ -202,7 +184,7 @@ int solveRealRootsSturm(const double* coeffs, int degree, double* roots)
             roots[count++] = mid;
             continue;
         }
-        if (inside == 1 && (evaluate(p, n, in.lo) > 0) != (evaluate(p, n, in.hi) > 0))
+        if (inside == 1 && (evaluatePolynomial(p, n, in.lo) > 0) != (evaluatePolynomial(p, n, in.hi) > 0))
         {
             roots[count++] = refineBracketedRoot(p, n, in.lo, in.hi);
             continue;
