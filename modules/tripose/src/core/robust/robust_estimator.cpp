@@ -249,7 +249,7 @@ private:
         {
             const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_, test);
             if (s.rejected)
-                test_.addRejected(s.tested, s.testedConsistent);
+                test->addRejected(s.tested, s.testedConsistent);
             if (s.cost < best_.cost)
             {
                 best_ = s;
