@@ -42,8 +42,9 @@ typedef testing::TestWithParam<Regime> Tripose_MlOptimum;
 TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
 {
     const Regime regime = GetParam();
+    const int scenes = scenesToRun(kScenes);
     int ransacReached = 0, linearReached = 0;
-    for (int seed = 0; seed < kScenes; ++seed)
+    for (int seed = 0; seed < scenes; ++seed)
     {
         SyntheticSceneParams params;
         params.numPoints = 10;
@@ -72,13 +73,13 @@ TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
             linearReached += refinedRms(s, R, t) <= reference + kRmsTolerance;
     }
     std::cout << regime.name << " 10P+10L 1 px: RMS at or below the optimum from the truth: RANSAC "
-              << ransacReached << "/" << kScenes << ", linear + refine " << linearReached << "/" << kScenes
+              << ransacReached << "/" << scenes << ", linear + refine " << linearReached << "/" << scenes
               << std::endl;
     // The target, 95 %: at most one scene of twenty. Linear + refinement falls short of it in the
     // narrowest and planar large-motion regimes (doc/accuracy.md): it is allowed one scene more, the
-    // gap documented rather than hidden.
-    EXPECT_GE(ransacReached, kScenes - 1);
-    EXPECT_GE(linearReached, kScenes - 2);
+    // gap documented rather than hidden. (Bounds on the misses: they hold on any prefix of the seeds.)
+    EXPECT_GE(ransacReached, scenes - 1);
+    EXPECT_GE(linearReached, scenes - 2);
 }
 
 INSTANTIATE_TEST_CASE_P(Regimes, Tripose_MlOptimum,

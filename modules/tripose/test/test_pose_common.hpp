@@ -5,6 +5,9 @@
 #ifndef OPENCV_TRIPOSE_TEST_POSE_COMMON_HPP
 #define OPENCV_TRIPOSE_TEST_POSE_COMMON_HPP
 
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -128,6 +131,19 @@ inline int solveScene(const cv::tripose::support::SyntheticScene& s, std::vector
     return cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
                                           s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
                                           cv::tripose::POSE_LINEAR, Rs, ts);
+}
+
+//! How many of a statistical test's @p full scenes to run: all of them, or the first
+//! TRIPOSE_TEST_SCENE_LIMIT when that is set (scripts/test_sanitizers.sh sets it: under the
+//! sanitizers a few scenes take the code paths the many repeat, at a 25th of the speed). Assertions
+//! made per scene hold on any prefix; a test whose aggregate bound does not says so where it uses this.
+inline int scenesToRun(int full)
+{
+    const char* limit = std::getenv("TRIPOSE_TEST_SCENE_LIMIT");
+    int n = 0;
+    if (!limit || !*limit || std::sscanf(limit, "%d", &n) != 1 || n <= 0)
+        return full;
+    return std::min(full, n);
 }
 
 } // namespace opencv_test
