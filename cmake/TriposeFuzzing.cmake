@@ -6,5 +6,5 @@ if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
                       "(e.g. -DCMAKE_CXX_COMPILER=clang++-14; Debian: clang-14 libclang-rt-14-dev)")
 endif()
 add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-                    -fno-omit-frame-pointer -g)
+                    -fno-omit-frame-pointer -gline-tables-only)
 add_link_options(-fsanitize=address,undefined)

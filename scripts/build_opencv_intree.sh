@@ -88,6 +88,8 @@ fi
 # Everything not needed is off: no media, GUI, codecs, accelerators, and no downloads at configure
 # time (IPP, ADE, ...: only the package registries are reachable). CPU_DISPATCH is emptied so that
 # no extra AVX2/AVX-512 copies of the kernels are compiled: the baseline build is enough for tests.
+# No ccache, which OpenCV would use if installed: the build folder is kept between runs, and on a
+# first build a cache only misses, at a cost.
 cmake_args=(
   -G Ninja
   -DCMAKE_BUILD_TYPE=Release
@@ -112,6 +114,7 @@ cmake_args=(
   -DWITH_JPEGXL=OFF -DWITH_OPENJPEG=OFF -DWITH_JASPER=OFF -DWITH_OPENEXR=OFF -DWITH_GDAL=OFF
   -DWITH_GDCM=OFF -DWITH_IMGCODEC_GIF=OFF -DWITH_QUIRC=OFF -DWITH_UNIFONT=OFF -DWITH_ONNXRUNTIME=OFF
   -DOPENCV_GENERATE_PKGCONFIG=OFF -DOPENCV_ENABLE_NONFREE=OFF
+  -DENABLE_CCACHE=OFF
 )
 
 log "configuring in $bld (modules: $modules)"

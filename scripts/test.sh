@@ -21,7 +21,12 @@ nice -n 19 bash scripts/build_opencv_intree.sh 4 > build/opencv-intree.log 2>&1 
 intree_build=$!
 trap 'kill "$intree_build" 2>/dev/null || true' EXIT
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$root/build/install" >/dev/null
+# The standalone build and the package's wheel compile the core from the same sources with the
+# same flags: through ccache (its cache in build/ccache) the wheel gets the standalone build's
+# objects instead of compiling them again. Both name the compiler alike, which ccache's key includes.
+export CCACHE_DIR="$root/build/ccache"
+CXX=/usr/bin/c++ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+  -DCMAKE_INSTALL_PREFIX="$root/build/install" >/dev/null
 cmake --build build
 cmake --install build >/dev/null
 
@@ -38,7 +43,7 @@ build/consumer/tripose_consumer
 # in a fresh virtual environment, its tests run against it) beside the sanitizer job: the
 # sanitizer run of the C++ suite is single-threaded for minutes, and the wheel's build uses the
 # core it leaves idle. The package's output follows once both have finished.
-bash scripts/test_python_package.sh > build/python-package.log 2>&1 &
+CXX=/usr/bin/c++ CMAKE_CXX_COMPILER_LAUNCHER=ccache bash scripts/test_python_package.sh > build/python-package.log 2>&1 &
 package_job=$!
 # Hardening: the C++ suite under ASan + UBSan, then the two fuzz targets side by side for 60 s
 # (figures in doc/hardening.md).
