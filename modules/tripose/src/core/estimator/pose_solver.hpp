@@ -72,7 +72,9 @@ public:
     virtual ~PoseRefiner() {}
     /** Refines @p pose on @p inliers; false (pose unchanged) when it could not. @p maxIterations,
     when positive, caps the iterations of a refiner that descends from the pose it is given
-    (!searchesOtherStarts()); @p stoppedAtCap, when given, receives whether it stopped there. */
+    (!searchesOtherStarts()); @p stoppedAtCap, when given, receives whether it stopped at its
+    iteration limit (that cap or its options'), not converged: a call on the same features from the
+    pose it returned continues where it stopped. */
     virtual bool refine(const FeatureSubset& inliers, CameraPose& pose, int maxIterations = 0,
                         bool* stoppedAtCap = nullptr) const = 0;
     /** True when the problem's cost has several basins (see scoring/known_structure.hpp), so that

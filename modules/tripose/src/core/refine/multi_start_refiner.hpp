@@ -59,17 +59,17 @@ public:
             const bool capped = !searchStarts_ && maxIterations > 0 && maxIterations < params.maxIterations;
             if (capped)
                 params.maxIterations = maxIterations;
-            // A call on the features and from the pose that a capped call ended on continues from
-            // the structure it reached: re-triangulated, that structure would cost most of the cap
-            // again (a far line on a short baseline moves by metres).
+            // A call on the features and from the pose that a call stopped at its iteration limit
+            // (the caller's cap or the options') ended on continues from the structure it reached:
+            // re-triangulated, that structure would cost most of the cap again (a far line on a
+            // short baseline moves by metres).
             const bool resumes = capped_.valid && inliers.points == capped_.inliers.points &&
                                  inliers.lines == capped_.inliers.lines && pose.R == capped_.result.R &&
                                  pose.t == capped_.result.t;
-            RefinedStructure* structure = capped ? &capped_.next : nullptr;
             const RefinementSummary summary = refinePoseAndStructure(
-                set_, pose, params, &inliers.points, &inliers.lines, structure, nullptr,
+                set_, pose, params, &inliers.points, &inliers.lines, &capped_.next, nullptr,
                 resumes ? &capped_.structure : nullptr);
-            capped_.valid = capped && summary.iterations >= maxIterations;
+            capped_.valid = summary.iterations >= params.maxIterations;
             if (capped_.valid)
             {
                 capped_.inliers = inliers;

@@ -177,7 +177,10 @@ private:
             // A round whose refinement the inlier test then changes only hands its pose to the next:
             // where the known depth slides (the stereo rig) and the refiner descends from its start,
             // it is capped there (kSettleRoundIterations) and refined to the end once the inliers
-            // settle, or in the last round. (The three-view estimators keep full rounds.)
+            // settle, or in the last round. (The three-view estimators keep full rounds.) A round on
+            // settled inliers that stopped at its iteration limit, capped or not, is continued once
+            // from where it stopped: in a long flat valley (the rig's depth on a short baseline) 30
+            // iterations left a 100P+40L rig scene 0.8 deg off its minimum, without wrong matches.
             const bool capRound = capSettleRounds_ && round + 1 < kSettleRounds;
             bool stoppedAtCap = false;
             refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers,
