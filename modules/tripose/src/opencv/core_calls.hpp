@@ -16,8 +16,8 @@ namespace detail {
 //! The algorithms' namespace, as the module's sources name it.
 namespace core = ::tripose;
 
-//! The cv::Exception code of a core error.
-inline int errorCodeFor(core::ErrorCode code)
+//! The cv::Exception code of a core error (an Error::Code: OpenCV 5's cv::error takes the enum, 4.x an int).
+inline Error::Code errorCodeFor(core::ErrorCode code)
 {
     switch (code)
     {

@@ -251,7 +251,7 @@ private:
         for (const CameraPose& pose : poses)
         {
             const PoseScore s = scorer_.score(pose, samplingThreshold_, best_.cost, &inliers_, test);
-            if (s.rejected)
+            if (s.rejected && test)
                 test->addRejected(s.tested, s.testedConsistent);
             if (s.cost < best_.cost)
             {
