@@ -4,7 +4,7 @@
 
 #include "perf_precomp.hpp"
 
-#include "opencv2/calib3d.hpp"
+#include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
 
 namespace opencv_test {
 namespace {

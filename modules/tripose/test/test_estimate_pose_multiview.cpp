@@ -11,7 +11,7 @@
 #include <functional>
 #include <limits>
 
-#include "opencv2/calib3d.hpp"
+#include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
 
 namespace opencv_test {
 namespace {
