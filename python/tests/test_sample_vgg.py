@@ -5,8 +5,9 @@ The sequence's cameras are themselves estimates (they reproject the structure wi
 of 0.1-0.7 px), so the error against them cannot be required to vanish: the maximum-likelihood fit
 of all 241 points and 295 lines (refinement from the sequence's camera, run to convergence) is
 0.0297 deg and 0.27 % of |t| from it. RANSAC with refinement must print the same errors as that
-fit to 0.003 deg and 0.03 % (a tenth of each; the sample prints them to 0.0001 deg and 0.01 %): a refinement stopped short of the optimum, as one capped at 30 iterations from the
-camera (0.0122 deg), fails, and a wrong reading of the data (a camera matrix, the frame of view 1, a
+fit to 0.003 deg and 0.03 % (a tenth of each; the sample prints them to 0.0001 deg and 0.01 %): a
+refinement stopped short of the optimum, as one capped at 30 iterations from the camera
+(0.0122 deg), fails, and a wrong reading of the data (a camera matrix, the frame of view 1, a
 swapped coordinate) gives errors of degrees. The C++ demo (scripts/demo.sh, tripose_demo_vgg: the
 linear estimate on all triplets) reports 0.0079 deg; the sample's linear estimate must print the
 same, which checks its numpy reader against the C++ one.

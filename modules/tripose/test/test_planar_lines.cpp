@@ -164,7 +164,8 @@ TEST(Tripose_PlanarLines, three_view_ransac_on_a_board_of_lines_is_never_turned_
     const std::vector<Mat> K(3, Mat(cameraMatrix()));
     const Mat noPoints(0, 2, CV_64F);
     double worst = 0;
-    for (int pair = 0; pair < scenesToRun(kPairs); ++pair)
+    const int pairs = scenesToRun(kPairs);
+    for (int pair = 0; pair < pairs; ++pair)
     {
         const BoardPair p = makeBoardPair(rng, kNoisePx);
         Mat R, t;
@@ -178,7 +179,7 @@ TEST(Tripose_PlanarLines, three_view_ransac_on_a_board_of_lines_is_never_turned_
         EXPECT_LT(e.rotationDeg, kMaxRotationDeg) << "pair " << pair << ", " << inliers << " inliers";
         worst = std::max(worst, e.rotationDeg);
     }
-    std::cout << "[ planar   ] board of 15 lines, three views, " << kNoisePx << " px, " << scenesToRun(kPairs)
+    std::cout << "[ planar   ] board of 15 lines, three views, " << kNoisePx << " px, " << pairs
               << " pairs: largest rotation error " << worst << " deg" << std::endl;
 }
 
@@ -187,7 +188,8 @@ TEST(Tripose_PlanarLines, stereo_ransac_on_a_board_of_lines_is_never_turned_over
     RNG rng(2025);
     const std::vector<Mat> K(4, Mat(cameraMatrix()));
     const Mat noPoints(0, 2, CV_64F);
-    for (int pair = 0; pair < scenesToRun(kPairs); ++pair)
+    const int pairs = scenesToRun(kPairs);
+    for (int pair = 0; pair < pairs; ++pair)
     {
         const BoardPair p = makeBoardPair(rng, kNoisePx);
         Mat R, t;

@@ -63,24 +63,24 @@ public:
             // (the caller's cap or the options') ended on continues from the structure it reached:
             // re-triangulated, that structure would cost most of the cap again (a far line on a
             // short baseline moves by metres).
-            const bool resumes = capped_.valid && inliers.points == capped_.inliers.points &&
-                                 inliers.lines == capped_.inliers.lines && pose.R == capped_.result.R &&
-                                 pose.t == capped_.result.t;
+            const bool resumes = stopped_.valid && inliers.points == stopped_.inliers.points &&
+                                 inliers.lines == stopped_.inliers.lines && pose.R == stopped_.result.R &&
+                                 pose.t == stopped_.result.t;
             const RefinementSummary summary = refinePoseAndStructure(
-                set_, pose, params, &inliers.points, &inliers.lines, &capped_.next, nullptr,
-                resumes ? &capped_.structure : nullptr);
-            capped_.valid = summary.iterations >= params.maxIterations;
-            if (capped_.valid)
+                set_, pose, params, &inliers.points, &inliers.lines, &stopped_.next, nullptr,
+                resumes ? &stopped_.structure : nullptr);
+            stopped_.valid = summary.iterations >= params.maxIterations;
+            if (stopped_.valid)
             {
-                capped_.inliers = inliers;
-                capped_.result = pose;
-                capped_.structure.points.swap(capped_.next.points);
-                capped_.structure.lineEnds.swap(capped_.next.lineEnds);
-                capped_.structure.pointUsed.swap(capped_.next.pointUsed);
-                capped_.structure.lineUsed.swap(capped_.next.lineUsed);
+                stopped_.inliers = inliers;
+                stopped_.result = pose;
+                stopped_.structure.points.swap(stopped_.next.points);
+                stopped_.structure.lineEnds.swap(stopped_.next.lineEnds);
+                stopped_.structure.pointUsed.swap(stopped_.next.pointUsed);
+                stopped_.structure.lineUsed.swap(stopped_.next.lineUsed);
             }
             if (stoppedAtCap)
-                *stoppedAtCap = capped_.valid;
+                *stoppedAtCap = stopped_.valid;
             single.pose = pose;
             single.rms = summary.finalRms;
             single.residuals = summary.residuals;
@@ -208,16 +208,16 @@ private:
     const PoseSolver* solver_;
     bool severalBasins_, searchStarts_;
     mutable LastRefinement last_;
-    //! The last refinement from the estimator's pose if it stopped at the cap it was given: its
+    //! The last refinement from the estimator's pose if it stopped at its iteration limit: its
     //! features, result and structure (refine()); next: the structure of the call under way.
-    struct CappedRefinement
+    struct StoppedRefinement
     {
         bool valid = false;
         FeatureSubset inliers;
         CameraPose result;
         RefinedStructure structure, next;
     };
-    mutable CappedRefinement capped_;
+    mutable StoppedRefinement stopped_;
     mutable std::vector<Result> results_;
 };
 
