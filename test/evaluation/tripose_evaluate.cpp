@@ -54,7 +54,8 @@
 // structure triangulated from views 1-2 (points and lines, with the time that took), which is
 // what the PoseLib peers of the Python driver consume (for stereo: view 3, the left image at B, against
 // the structure triangulated from the rig at A; the time-B right image is dumped too; "rig_inputs"
-// holds the same for every feature of the rig, NaN rows where a time-B view does not see one).
+// holds the same for every feature of the rig, NaN rows where a time-B view does not see one;
+// synthetic scenes add "true_point_matches" and "true_line_matches", 1 for a true match, 0 for a wrong one).
 
 #include <algorithm>
 #include <cmath>
@@ -655,8 +656,18 @@ std::string inputsJson(const Problem& p)
     s += ",\"lines1\":" + matrix(p.lines1) + ",\"lines2\":" + matrix(p.lines2) + ",\"lines3\":" + matrix(p.lines3);
     if (p.stereo())
         s += ",\"points4\":" + matrix(p.points4) + ",\"lines4\":" + matrix(p.lines4);
-    s += ",\"points3d_12\":" + matrix(X) + ",\"lines3d_12\":" + matrix(L) + ",\"triangulation_us\":" + num(triUs) + "}";
-    return s;
+    s += ",\"points3d_12\":" + matrix(X) + ",\"lines3d_12\":" + matrix(L) + ",\"triangulation_us\":" + num(triUs);
+    // Synthetic scenes: which rows are true matches (1) and which wrong ones (0).
+    const auto mask = [](const cv::Mat& m) {
+        cv::Mat row;
+        m.reshape(1, 1).convertTo(row, CV_64F);
+        return matrix(row);
+    };
+    if (!p.pointInliers.empty())
+        s += ",\"true_point_matches\":" + mask(p.pointInliers);
+    if (!p.lineInliers.empty())
+        s += ",\"true_line_matches\":" + mask(p.lineInliers);
+    return s + "}";
 }
 
 } // namespace
