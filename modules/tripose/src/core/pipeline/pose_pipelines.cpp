@@ -21,10 +21,6 @@ namespace tripose {
 
 namespace {
 
-// Refined candidates closer than this (rotation: Frobenius norm of the difference; translation
-// relative to its norm) are one local minimum reached twice.
-constexpr double kSameMinimum = 1e-7;
-
 std::vector<ScoredPose> scoredPoses(const std::vector<LocalMinimum>& minima)
 {
     std::vector<ScoredPose> out;

@@ -168,10 +168,6 @@ public:
     }
 
 private:
-    // Minima closer than this (rotation, Frobenius norm of the difference; translation relative to
-    // its norm) are one reached twice: refined to convergence (300 iterations), one minimum reached
-    // from several starts ends at most 4e-5 apart in the narrow scenes of test_narrow_minima.cpp.
-    static constexpr double kSameMinimum = 1e-3;
     //! The further refinement of the minima reported besides the returned pose.
     static constexpr int kPolishFactor = 10;
     static constexpr int kMaxReportedMinima = 3;
