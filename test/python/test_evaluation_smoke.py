@@ -17,6 +17,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from tripose_tools import REPO, build_tool, require_modules
@@ -171,3 +172,29 @@ def test_stereo_covers_every_method_and_the_right_image_helps(smoke):
         ours = methods["stereo_ransac"]["rot_deg"]["median"]
         assert ours <= 1.5 * limit, g["key"]
         assert ours < methods["three_view_ransac"]["rot_deg"]["median"], g["key"]
+
+
+def test_dumped_rig_scenes_mark_their_true_matches():
+    """--dump-inputs writes which matches are true: without noise a true point's view-3 observation is
+    the projection of its structure from the rig at time A, and a wrong one lies at least 20 px away."""
+    tool = build_tool("tripose_evaluate", folder="test/evaluation")
+    out = subprocess.run([str(tool), "stereo", "--points", "20", "--lines", "10", "--noise", "0", "--outliers", "0.5",
+                          "--trials", "3", "--methods", "stereo_ransac", "--dump-inputs"],
+                         check=True, capture_output=True, text=True, timeout=120).stdout
+    scenes = [json.loads(line)["rig_inputs"] for line in out.splitlines()]
+    assert len(scenes) == 3
+    for s in scenes:
+        true_points = np.array(s["true_point_matches"][0]) == 1
+        true_lines = np.array(s["true_line_matches"][0]) == 1
+        assert true_points.shape == (20,) and true_points.sum() == 10
+        assert true_lines.shape == (10,) and true_lines.sum() == 5
+        K = np.array(s["K"][2])
+        R, t = np.array(s["R_gt"]), np.array(s["t_gt"]).reshape(3)
+        X = np.array(s["points3d_12"])
+        x3 = np.array(s["points3"], dtype=float)
+        projected = (K @ (X @ R.T + t).T).T
+        error = np.linalg.norm(projected[:, :2] / projected[:, 2:] - x3, axis=1)
+        seen = np.isfinite(error)
+        assert seen.sum() >= 10
+        assert np.all(error[seen & true_points] < 1e-6)
+        assert np.all(error[seen & ~true_points] > 19.0)
