@@ -11,7 +11,7 @@
 #include "../support/error.hpp"
 
 #include "../scoring/candidate_ranking.hpp"
-#include "../scoring/line_noise_test.hpp"
+#include "../scoring/noise_test.hpp"
 #include "robust_estimator.hpp"
 #include "mixed_sampler.hpp"
 #include "sample_generator.hpp"
@@ -47,7 +47,7 @@ public:
                     const RansacOptions& params)
         : solver_(solver), scorer_(scorer), refiner_(refiner), params_(params),
           samplingThreshold_(kSamplingThresholdFactor * params.threshold),
-          linesAgainstPointNoise_(scorer.slidesKnownDepth()),
+          featuresAgainstNoise_(scorer.slidesKnownDepth()),
           capSettleRounds_(scorer.slidesKnownDepth() && refiner && !refiner->searchesOtherStarts())
     {
         const ViewSet& set = scorer.views();
@@ -205,7 +205,25 @@ private:
             if (settled)
                 break;
         }
+        if (refiner_ && featuresAgainstNoise_)
+            rejectPointsAboveNoiseAndRefine(estimate);
         return summarizeInliers(estimate);
+    }
+
+    /** The settled inliers' points judged against their noise (rejectPointsAboveNoise()); where some
+    fail, one more refinement without them (continued once where it stops at its iteration limit),
+    then the final inlier test with that one too. */
+    void rejectPointsAboveNoiseAndRefine(RobustEstimate& estimate)
+    {
+        if (rejectPointsAboveNoise(scorer_.views(), params_.threshold, pointResiduals_, estimate.pointInliers) == 0)
+            return;
+        bool stopped = false;
+        refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers, 0, &stopped);
+        if (stopped)
+            refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+        estimate.numInliers = inlierMasks(estimate.pose, estimate.pointInliers, estimate.lineInliers);
+        estimate.numInliers -= rejectPointsAboveNoise(scorer_.views(), params_.threshold, pointResiduals_,
+                                                      estimate.pointInliers);
     }
 
     /** Sets the estimate's inlier RMS from the residuals of the last inlierMasks(), which made its
@@ -318,7 +336,7 @@ private:
         lineMask.resize(lineResiduals_.size());
         for (size_t i = 0; i < lineResiduals_.size(); ++i)
             count += lineMask[i] = lineResiduals_[i] < params_.threshold;
-        if (linesAgainstPointNoise_)
+        if (featuresAgainstNoise_)
             count -= rejectLinesAbovePointNoise(scorer_.views(), params_.threshold, pointResiduals_, pointMask,
                                                 lineResiduals_, lineMask);
         return count;
@@ -357,10 +375,10 @@ private:
     const PoseRefiner* refiner_;
     const RansacOptions& params_;
     const double samplingThreshold_;
-    /** Whether the final inlier test also judges lines against the inlier points' noise
-    (scoring/line_noise_test.hpp): where the known depth slides, the stereo rig, whose wrong line
-    matches can be consistent between the images at each time and pass the threshold. */
-    const bool linesAgainstPointNoise_;
+    /** Whether the final inlier test also judges lines, and the settled inliers' points, against the
+    inlier points' noise (scoring/noise_test.hpp): where the known depth slides, the stereo rig, whose
+    wrong matches can be consistent between the images at each time and pass the threshold. */
+    const bool featuresAgainstNoise_;
     //! Whether settle rounds that re-classify the inliers are capped at kSettleRoundIterations.
     const bool capSettleRounds_;
     int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
