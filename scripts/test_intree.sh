@@ -34,8 +34,8 @@ if [ -n "$leaked$leaked_internal" ]; then
 fi
 echo "[intree] only cv::tripose's public API is exported ($(nm -D --defined-only "$library" | grep -c ' T ') functions)"
 
-echo "[intree] C++: opencv_test_tripose"
-"$OPENCV_INTREE_BUILD/bin/opencv_test_tripose" --gtest_color=no
+echo "[intree] C++: opencv_test_tripose (the reduced suite: the last stage of the test command)"
+(source "$repo/scripts/reduced_test_suite.sh" && "$OPENCV_INTREE_BUILD/bin/opencv_test_tripose" --gtest_color=no)
 
 echo "[intree] Python: test_tripose.py"
 # The runner reads opencv_python_tests.cfg from the current folder to find module test folders.

@@ -29,15 +29,8 @@ nice cmake --build "$build" -j2
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-# Under the sanitizers the suite runs single-threaded some 25 times slower. Statistical tests repeat
-# their code paths over many scenes: here they run their first three (TRIPOSE_TEST_SCENE_LIMIT; the
-# full counts run in the standalone ctest). Left out entirely are those whose assertions are
-# statistics that need every scene, on paths that the rest of the suite runs under the sanitizers:
-# the stereo RANSAC and refinement against the four-view limit; the narrow-baseline search's rate of
-# lowest minima (its starts and minima are listed by the test of several minima, which runs here);
-# the Monte-Carlo check of the pose covariance (the covariance's other tests run here).
-export TRIPOSE_TEST_SCENE_LIMIT=3
-export GTEST_FILTER="-Tripose_Stereo.ransac_reaches_the_four_view_limit_and_beats_the_alternatives:Regimes/Tripose_NarrowMinima.estimators_return_the_lowest_minimum/*:Tripose_PoseCovariance.consistent_with_monte_carlo"
+# Under the sanitizers the suite runs single-threaded some 25 times slower: the reduced suite.
+source "$root/scripts/reduced_test_suite.sh"
 log="$build/ctest.log"
 status=0
 # The suite as two GoogleTest shards side by side: under the sanitizers one process runs it for
