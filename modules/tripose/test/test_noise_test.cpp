@@ -13,7 +13,6 @@
 namespace opencv_test {
 namespace {
 
-using ::tripose::CameraPose;
 using ::tripose::PoseScorer;
 using ::tripose::ViewSet;
 using cv::tripose::support::SyntheticStereoScene;
