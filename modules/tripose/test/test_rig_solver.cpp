@@ -10,6 +10,7 @@
 // is given per mix; the ViewSet is read from the scene by the module's input function.
 
 #include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -225,7 +226,8 @@ typedef testing::TestWithParam<RigMix> Tripose_RigSolverExact;
 TEST_P(Tripose_RigSolverExact, true_pose_among_candidates_in_999_of_1000_scenes)
 {
     const RigMix& mix = GetParam();
-    const int scenes = 1000;
+    // At most one miss: 999 of 1000, and a bound that holds on any prefix of the seeds.
+    const int scenes = scenesToRun(1000);
     int found = 0, candidates = 0;
     double worstRotation = 0, worstTranslation = 0;
     std::vector<int> failures;
@@ -259,7 +261,7 @@ TEST_P(Tripose_RigSolverExact, true_pose_among_candidates_in_999_of_1000_scenes)
     std::cout << "[ rig mix  ] " << mix.name << ": " << found << "/" << scenes << " found, max errors "
               << worstRotation << " rad, " << worstTranslation << " relative, mean candidates "
               << (double)candidates / scenes << std::endl;
-    EXPECT_GE(found, 999) << "failed seeds: " << testing::PrintToString(failures);
+    EXPECT_GE(found, scenes - 1) << "failed seeds: " << testing::PrintToString(failures);
 }
 
 INSTANTIATE_TEST_CASE_P(/**/, Tripose_RigSolverExact, testing::ValuesIn(exactMixes()),
