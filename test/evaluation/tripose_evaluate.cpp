@@ -391,7 +391,13 @@ Problem multiViewProblem(const Options& o, int trial)
     p.pointInliers = cv::Mat(o.points, 1, CV_8U, cv::Scalar(1));
     p.lineInliers = cv::Mat(o.lines, 1, CV_8U, cv::Scalar(1));
     cv::RNG rng(0xC2B2AE3D27D4EB4Full ^ seed);
-    const auto randomPixel = [&rng]() { return cv::Point2d(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0)); };
+    // One draw per statement, as C++ leaves the order of arguments unspecified: y before x is the order
+    // the documented seeded trials were drawn in (GCC's, right to left).
+    const auto randomPixel = [&rng]() {
+        const double y = rng.uniform(0.0, 480.0);
+        const double x = rng.uniform(0.0, 640.0);
+        return cv::Point2d(x, y);
+    };
     const auto lineDistance = [](const cv::Point2d& x, const cv::Point2d& a, const cv::Point2d& b) {
         const cv::Point2d d = b - a;
         return std::abs(d.cross(x - a)) / std::max(cv::norm(d), 1e-12);

@@ -30,7 +30,12 @@ std::vector<double> randomInputs(int size, uint64 seed)
     cv::RNG rng(seed);
     std::vector<double> x((size_t)size * kInputs);
     for (double& e : x)
-        e = rng.uniform(0.5, 2.0) * (rng.uniform(0, 2) ? 1 : -1);
+    {
+        // One draw per statement, as C++ leaves the order of operands unspecified: the magnitude
+        // before the sign is the order the seeded inputs were drawn in so far (GCC's).
+        const double magnitude = rng.uniform(0.5, 2.0);
+        e = magnitude * (rng.uniform(0, 2) ? 1 : -1);
+    }
     return x;
 }
 

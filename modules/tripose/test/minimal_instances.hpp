@@ -33,18 +33,29 @@ using ::tripose::WorldLine;
 
 inline CameraPose randomPose(RNG& rng)
 {
+    // One draw per statement, as C++ leaves the order of arguments and operands unspecified: the last
+    // coordinate first (z before y before x, here and below) is the order the seeded instances were
+    // drawn in so far (GCC's, right to left).
+    const double qz = rng.gaussian(1.0);
+    const double qy = rng.gaussian(1.0);
+    const double qx = rng.gaussian(1.0);
+    const double qw = rng.gaussian(1.0);
+    const double tz = rng.uniform(-2.0, 2.0);
+    const double ty = rng.uniform(-2.0, 2.0);
+    const double tx = rng.uniform(-2.0, 2.0);
     CameraPose pose;
-    pose.R = Eigen::Quaterniond(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0))
-                 .normalized()
-                 .toRotationMatrix();
-    pose.t = Eigen::Vector3d(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
+    pose.R = Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
+    pose.t = Eigen::Vector3d(tx, ty, tz);
     return pose;
 }
 
 //! A point in the camera frame in a 90 degree field of view, at depth 2..10.
 inline Eigen::Vector3d randomPointInView(RNG& rng)
 {
-    return rng.uniform(2.0, 10.0) * Eigen::Vector3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 1.0);
+    const double y = rng.uniform(-1.0, 1.0);
+    const double x = rng.uniform(-1.0, 1.0);
+    const double depth = rng.uniform(2.0, 10.0);
+    return depth * Eigen::Vector3d(x, y, 1.0);
 }
 
 inline Eigen::Vector3d toWorld(const CameraPose& pose, const Eigen::Vector3d& Xc)
@@ -87,6 +98,14 @@ inline LineObservation observeLine(const CameraPose& pose, const Eigen::Vector3d
     return o;
 }
 
+//! A line of @p pose's view through two random points in view, the second end drawn first.
+inline LineObservation randomLine(RNG& rng, const CameraPose& pose)
+{
+    const Eigen::Vector3d Bc = randomPointInView(rng);
+    const Eigen::Vector3d Ac = randomPointInView(rng);
+    return observeLine(pose, Ac, Bc);
+}
+
 //! A camera-frame segment through @p Zc along @p dc, both end points at positive depth.
 inline void segmentThrough(RNG& rng, const Eigen::Vector3d& Zc, const Eigen::Vector3d& dc, Eigen::Vector3d& Ac,
                     Eigen::Vector3d& Bc)
@@ -99,7 +118,10 @@ inline void segmentThrough(RNG& rng, const Eigen::Vector3d& Zc, const Eigen::Vec
 
 inline Eigen::Vector3d randomDirection(RNG& rng)
 {
-    return Eigen::Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0)).normalized();
+    const double z = rng.gaussian(1.0);
+    const double y = rng.gaussian(1.0);
+    const double x = rng.gaussian(1.0);
+    return Eigen::Vector3d(x, y, z).normalized();
 }
 
 //! A line of @p pose's view through the camera-frame point @p Zc along @p dc.
@@ -115,7 +137,7 @@ inline CameraPose makeP2P1L(RNG& rng, std::vector<PointObservation>& points, std
     const CameraPose truth = randomPose(rng);
     for (int i = 0; i < 2; ++i)
         points.push_back(observePoint(truth, randomPointInView(rng)));
-    lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+    lines.push_back(randomLine(rng, truth));
     return truth;
 }
 
@@ -132,7 +154,7 @@ inline CameraPose makeP1P2L(RNG& rng, std::vector<PointObservation>& points, std
     const CameraPose truth = randomPose(rng);
     points.push_back(observePoint(truth, randomPointInView(rng)));
     for (int j = 0; j < 2; ++j)
-        lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+        lines.push_back(randomLine(rng, truth));
     return truth;
 }
 
@@ -148,7 +170,7 @@ inline CameraPose makeP3L(RNG& rng, std::vector<PointObservation>&, std::vector<
 {
     const CameraPose truth = randomPose(rng);
     for (int j = 0; j < 3; ++j)
-        lines.push_back(observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+        lines.push_back(randomLine(rng, truth));
     return truth;
 }
 

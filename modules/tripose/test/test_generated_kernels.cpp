@@ -457,7 +457,11 @@ TEST(Tripose_GeneratedKernels, betaN4_true_coefficients_solve_the_system_with_ex
     cv::RNG rng(111);
     for (int trial = 0; trial < 100; ++trial)
     {
-        const Vector12d vTrue = 1.7 * poseVector(randomRotation(rng), randomVector<3>(rng));
+        // One draw per statement, as C++ leaves the order of arguments unspecified: the translation
+        // before the rotation is the order the seeded inputs were drawn in so far (GCC's, right to left).
+        const Vector3d t = randomVector<3>(rng);
+        const Matrix3d R = randomRotation(rng);
+        const Vector12d vTrue = 1.7 * poseVector(R, t);
         const double b1 = normal(rng), b2 = normal(rng), b3 = normal(rng);
         Vector12d vs[4] = { randomVector<12>(rng), randomVector<12>(rng), randomVector<12>(rng), Vector12d() };
         vs[3] = vTrue - b1 * vs[0] - b2 * vs[1] - b3 * vs[2];

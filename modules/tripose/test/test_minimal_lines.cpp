@@ -198,7 +198,7 @@ TEST(Tripose_MinimalLines, p2p1l_degenerate_configurations_give_no_solution)
         const PointObservation p1 = observePoint(truth, X1c), p2 = observePoint(truth, X2c);
         const Eigen::Vector3d bearings[2] = { p1.bearing, p2.bearing };
         const Eigen::Vector3d worlds[2] = { p1.world, p2.world };
-        const LineObservation line = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+        const LineObservation line = randomLine(rng, truth);
 
         // The line through both points: its incidences repeat the points', the rotation about it is free.
         const LineObservation throughBoth = observeLine(truth, X1c, X2c);
@@ -212,7 +212,12 @@ TEST(Tripose_MinimalLines, p2p1l_degenerate_configurations_give_no_solution)
         }, "line through one point");
         // The line in the plane of the camera centre and both points: its image line passes through both
         // image points.
-        const Eigen::Vector3d inPlane = rng.uniform(0.2, 0.8) * X1c + rng.uniform(0.2, 0.8) * X2c;
+        // One draw per statement, as C++ leaves the order of operands and arguments unspecified: the
+        // right operand first (here and in addImageNoise) is the order the seeded instances were drawn
+        // in so far (GCC's, right to left).
+        const double w2 = rng.uniform(0.2, 0.8);
+        const double w1 = rng.uniform(0.2, 0.8);
+        const Eigen::Vector3d inPlane = w1 * X1c + w2 * X2c;
         const LineObservation coplanar = lineThrough(rng, truth, inPlane, X1c - 0.3 * X2c);
         expectNoSolution([&](std::vector<CameraPose>& p) {
             return solveP2P1L(bearings, worlds, coplanar.imageLine, coplanar.world, p);
@@ -245,7 +250,7 @@ TEST(Tripose_MinimalLines, p1p2l_degenerate_configurations_give_no_solution)
         const CameraPose truth = randomPose(rng);
         const Eigen::Vector3d Xc = randomPointInView(rng);
         const PointObservation point = observePoint(truth, Xc);
-        const LineObservation line = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+        const LineObservation line = randomLine(rng, truth);
         auto solveWith = [&](const LineObservation& a, const LineObservation& b) {
             return [&, a, b](std::vector<CameraPose>& p) {
                 const Eigen::Vector3d imageLines[2] = { a.imageLine, b.imageLine };
@@ -306,9 +311,7 @@ TEST(Tripose_MinimalLines, p3l_degenerate_configurations_give_no_solution)
                                                 lineThrough(rng, truth, Zc, randomDirection(rng)) };
         expectNoSolution(solveWith(concurrent), "three concurrent lines");
         // A line through the camera centre (image line l = 0).
-        LineObservation general[3] = { observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
-                                       observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
-                                       observeLine(truth, randomPointInView(rng), randomPointInView(rng)) };
+        LineObservation general[3] = { randomLine(rng, truth), randomLine(rng, truth), randomLine(rng, truth) };
         general[1].imageLine.setZero();
         general[1].world.point = truth.centre();
         expectNoSolution(solveWith(general), "line through the camera centre");
@@ -337,8 +340,7 @@ TEST(Tripose_MinimalLines, rounding_image_of_a_line_through_the_centre_gives_fin
         nonZero += rounding.norm() > 0;
         const PointObservation p1 = observePoint(truth, randomPointInView(rng)),
                                p2 = observePoint(truth, randomPointInView(rng));
-        const LineObservation l2 = observeLine(truth, randomPointInView(rng), randomPointInView(rng)),
-                              l3 = observeLine(truth, randomPointInView(rng), randomPointInView(rng));
+        const LineObservation l2 = randomLine(rng, truth), l3 = randomLine(rng, truth);
         std::vector<CameraPose> poses;
         const Eigen::Vector3d bearings[2] = { p1.bearing, p2.bearing }, worlds[2] = { p1.world, p2.world };
         solveP2P1L(bearings, worlds, rounding, throughCentre, poses);
@@ -416,7 +418,7 @@ makeP3LTwoParallel(int first, int second, double radians = 0)
         for (int j = 0; j < 3; ++j)
             lines.push_back(j == first    ? lineThrough(rng, truth, randomPointInView(rng), dc)
                             : j == second ? lineThrough(rng, truth, randomPointInView(rng), turned)
-                                          : observeLine(truth, randomPointInView(rng), randomPointInView(rng)));
+                                          : randomLine(rng, truth));
         return truth;
     };
 }
@@ -445,12 +447,18 @@ void addImageNoise(RNG& rng, double sigma, const CameraPose& truth, std::vector<
                    std::vector<LineObservation>& lines)
 {
     auto noisy = [&](const Eigen::Vector3d& Xc) {
-        return Eigen::Vector3d(Xc.x() / Xc.z() + rng.gaussian(sigma), Xc.y() / Xc.z() + rng.gaussian(sigma), 1.0);
+        const double dy = rng.gaussian(sigma);
+        const double dx = rng.gaussian(sigma);
+        return Eigen::Vector3d(Xc.x() / Xc.z() + dx, Xc.y() / Xc.z() + dy, 1.0);
     };
     for (PointObservation& o : points)
         o.bearing = noisy(truth.toCamera(o.world));
     for (LineObservation& o : lines)
-        o.imageLine = imageLineThrough(noisy(truth.toCamera(o.ends[0])), noisy(truth.toCamera(o.ends[1])));
+    {
+        const Eigen::Vector3d b = noisy(truth.toCamera(o.ends[1]));
+        const Eigen::Vector3d a = noisy(truth.toCamera(o.ends[0]));
+        o.imageLine = imageLineThrough(a, b);
+    }
 }
 
 struct NoiseResult

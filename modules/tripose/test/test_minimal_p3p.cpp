@@ -16,15 +16,23 @@ using ::tripose::solveP3P;
 
 Eigen::Vector3d randomVector(RNG& rng, double lo, double hi)
 {
-    return Eigen::Vector3d(rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi));
+    // One draw per statement, as C++ leaves the order of arguments unspecified: the last coordinate
+    // first (z before y before x, here and below) is the order the seeded instances were drawn in so
+    // far (GCC's, right to left).
+    const double z = rng.uniform(lo, hi);
+    const double y = rng.uniform(lo, hi);
+    const double x = rng.uniform(lo, hi);
+    return Eigen::Vector3d(x, y, z);
 }
 
 CameraPose randomPose(RNG& rng)
 {
+    const double qz = rng.gaussian(1.0);
+    const double qy = rng.gaussian(1.0);
+    const double qx = rng.gaussian(1.0);
+    const double qw = rng.gaussian(1.0);
     CameraPose pose;
-    pose.R = Eigen::Quaterniond(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0))
-                 .normalized()
-                 .toRotationMatrix();
+    pose.R = Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
     pose.t = randomVector(rng, -2.0, 2.0);
     return pose;
 }
@@ -34,7 +42,9 @@ void randomInstance(RNG& rng, const CameraPose& pose, Eigen::Vector3d bearings[3
 {
     for (int i = 0; i < 3; ++i)
     {
-        const Eigen::Vector3d inCamera(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 1.0);
+        const double y = rng.uniform(-1.0, 1.0);
+        const double x = rng.uniform(-1.0, 1.0);
+        const Eigen::Vector3d inCamera(x, y, 1.0);
         const Eigen::Vector3d Xc = rng.uniform(2.0, 10.0) * inCamera;
         points[i] = pose.R.transpose() * (Xc - pose.t);
         bearings[i] = Xc.normalized();

@@ -30,7 +30,30 @@ const double kTolerance = 1e-6;
 
 Eigen::Vector3d randomVector(RNG& rng, double scale)
 {
-    return Eigen::Vector3d(rng.uniform(-scale, scale), rng.uniform(-scale, scale), rng.uniform(-scale, scale));
+    // One draw per statement, as C++ leaves the order of arguments and operands unspecified: the last
+    // coordinate first (z before y before x, here and below) is the order the seeded scenarios were
+    // drawn in so far (GCC's, right to left).
+    const double z = rng.uniform(-scale, scale);
+    const double y = rng.uniform(-scale, scale);
+    const double x = rng.uniform(-scale, scale);
+    return Eigen::Vector3d(x, y, z);
+}
+
+//! A camera-frame point with x and y in [-2, 2] and depth in [minDepth, maxDepth].
+Eigen::Vector3d randomPointInFront(RNG& rng, double minDepth, double maxDepth)
+{
+    const double z = rng.uniform(minDepth, maxDepth);
+    const double y = rng.uniform(-2.0, 2.0);
+    const double x = rng.uniform(-2.0, 2.0);
+    return Eigen::Vector3d(x, y, z);
+}
+
+//! A pixel of a 640x480 image.
+Eigen::Vector2d randomPixel(RNG& rng)
+{
+    const double y = rng.uniform(0.0, 480.0);
+    const double x = rng.uniform(0.0, 640.0);
+    return Eigen::Vector2d(x, y);
 }
 
 Eigen::Matrix3d randomRotation(RNG& rng, double maxAngle)
@@ -118,13 +141,15 @@ Scenario makeScenario(RNG& rng, Role role)
         s.view.pose = randomPose(rng); // the rig offset
     const CameraPose pose = s.view.poseFor(s.estimated);
     // Structure 4-12 m in front of the view; observations a few pixels off the projections.
-    const Eigen::Vector3d Xc(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(4.0, 12.0));
+    const Eigen::Vector3d Xc = randomPointInFront(rng, 4.0, 12.0);
     s.X = pose.R.transpose() * (Xc - pose.t);
     const Eigen::Vector3d Bc = Xc + randomVector(rng, 2.0);
     const Eigen::Vector3d A = s.X, B = pose.R.transpose() * (Bc - pose.t);
     s.L.d = B - A;
     s.L.m = A.cross(s.L.d);
-    s.view.points.push_back(s.view.camera.project(Xc) + Eigen::Vector2d(rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)));
+    const double dy = rng.uniform(-3.0, 3.0);
+    const double dx = rng.uniform(-3.0, 3.0);
+    s.view.points.push_back(s.view.camera.project(Xc) + Eigen::Vector2d(dx, dy));
     s.view.lineEnds.push_back(s.view.camera.project(Xc) + Eigen::Vector2d(rng.uniform(-3.0, 3.0), 2.0));
     s.view.lineEnds.push_back(s.view.camera.project(Bc) + Eigen::Vector2d(-1.0, rng.uniform(-3.0, 3.0)));
     return s;
@@ -136,8 +161,8 @@ TEST(Tripose_ResidualJacobians, point_residual_matches_finite_differences)
     for (int trial = 0; trial < 100; ++trial)
     {
         const Intrinsics c = randomIntrinsics(rng);
-        const Eigen::Vector3d Xc(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(2.0, 20.0));
-        const Eigen::Vector2d observed(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
+        const Eigen::Vector3d Xc = randomPointInFront(rng, 2.0, 20.0);
+        const Eigen::Vector2d observed = randomPixel(rng);
         Eigen::Vector2d r;
         Matrix23d J;
         ASSERT_TRUE(pointResidual(c, Xc, observed, r, &J));
@@ -160,10 +185,10 @@ TEST(Tripose_ResidualJacobians, line_residual_matches_finite_differences)
     for (int trial = 0; trial < 100; ++trial)
     {
         const Intrinsics c = randomIntrinsics(rng);
-        const Eigen::Vector3d A(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(2.0, 20.0));
+        const Eigen::Vector3d A = randomPointInFront(rng, 2.0, 20.0);
         const Eigen::Vector3d moment = A.cross(A + randomVector(rng, 2.0));
-        const Eigen::Vector2d end0(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
-        const Eigen::Vector2d end1(rng.uniform(0.0, 640.0), rng.uniform(0.0, 480.0));
+        const Eigen::Vector2d end0 = randomPixel(rng);
+        const Eigen::Vector2d end1 = randomPixel(rng);
         Eigen::Vector2d r;
         Matrix23d J;
         ASSERT_TRUE(lineResidual(c, moment, end0, end1, r, &J));

@@ -45,7 +45,12 @@ std::vector<std::pair<Vec3d, Vec3d>> boardLines()
 //! out of the image plane and up to 30 degrees in it.
 void randomBoardPose(RNG& rng, Matx33d& R, Vec3d& t)
 {
-    Vec3d tilt(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), 0);
+    // One draw per statement, as C++ leaves the order of arguments unspecified: the last coordinate
+    // first (y before x here, z before y before x below) is the order the seeded boards were drawn in
+    // so far (GCC's, right to left).
+    const double tiltY = rng.uniform(-1.0, 1.0);
+    const double tiltX = rng.uniform(-1.0, 1.0);
+    Vec3d tilt(tiltX, tiltY, 0);
     tilt *= rng.uniform(0.0, 40.0) * CV_PI / 180.0 / std::max(1e-9, cv::norm(tilt));
     const Vec3d spin(0, 0, rng.uniform(-30.0, 30.0) * CV_PI / 180.0);
     Matx33d Rtilt, Rspin;
@@ -53,7 +58,10 @@ void randomBoardPose(RNG& rng, Matx33d& R, Vec3d& t)
     Rodrigues(spin, Rspin);
     R = Rtilt * Rspin;
     const Vec3d centre(0.5 * (kColumns - 1), 0.5 * (kRows - 1), 0);
-    t = Vec3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(12.0, 20.0)) - R * centre;
+    const double depth = rng.uniform(12.0, 20.0);
+    const double y = rng.uniform(-1.0, 1.0);
+    const double x = rng.uniform(-1.0, 1.0);
+    t = Vec3d(x, y, depth) - R * centre;
 }
 
 Mat projectSegments(const std::vector<std::pair<Vec3d, Vec3d>>& lines, const Matx33d& R, const Vec3d& t,

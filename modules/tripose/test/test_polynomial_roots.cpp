@@ -113,7 +113,14 @@ TEST(Tripose_PolynomialRoots, nearly_real_pairs_are_kept_by_both_finders)
         const double near = std::pow(10.0, rng.uniform(-5.0, -2.5)) * std::max(std::abs(a), scale);
         std::vector<Vec2d> pairs = { Vec2d(a, near) };
         for (int k = 0; k < 3; ++k)
-            pairs.push_back(Vec2d(rng.uniform(-3.0, 3.0) * scale, rng.uniform(0.3, 1.0) * 4 * scale));
+        {
+            // One draw per statement, as C++ leaves the order of arguments unspecified: the imaginary
+            // part before the real one is the order the seeded polynomials were drawn in so far (GCC's,
+            // right to left).
+            const double im = rng.uniform(0.3, 1.0) * 4 * scale;
+            const double re = rng.uniform(-3.0, 3.0) * scale;
+            pairs.push_back(Vec2d(re, im));
+        }
         const std::vector<double> c = polynomialFromRoots(real, pairs, rng.uniform(0.1, 10.0));
         double companion[11], bracketed[11];
         const int nc = solveRealPolynomialRoots(c.data(), 11, companion, 1e-2);

@@ -21,12 +21,20 @@ namespace opencv_test {
 //! by @p fraction of its norm in a random direction: a start for refinement tests.
 inline void perturbPose(const Mat& Rtrue, const Mat& ttrue, double degrees, double fraction, RNG& rng, Mat& R, Mat& t)
 {
-    Vec3d axis(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
+    // One draw per statement, as C++ leaves the order of arguments unspecified: z before y before x is
+    // the order the seeded starts were drawn in so far (GCC's, right to left).
+    const double axisZ = rng.gaussian(1);
+    const double axisY = rng.gaussian(1);
+    const double axisX = rng.gaussian(1);
+    Vec3d axis(axisX, axisY, axisZ);
     axis *= (degrees * CV_PI / 180.0) / cv::norm(axis);
     Mat dR;
     Rodrigues(Mat(axis), dR);
     R = dR * Rtrue;
-    Vec3d dt(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
+    const double dtZ = rng.gaussian(1);
+    const double dtY = rng.gaussian(1);
+    const double dtX = rng.gaussian(1);
+    Vec3d dt(dtX, dtY, dtZ);
     dt *= fraction * cv::norm(ttrue) / cv::norm(dt);
     t = ttrue + Mat(dt);
 }

@@ -20,7 +20,13 @@ using Eigen::Vector3d;
 
 Vector3d gaussian3(RNG& rng)
 {
-    return Vector3d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
+    // One draw per statement, as C++ leaves the order of arguments and operands unspecified: z before y
+    // before x, and the right factor before the left below, is the order the seeded inputs were drawn
+    // in so far (GCC's, right to left).
+    const double z = rng.gaussian(1.0);
+    const double y = rng.gaussian(1.0);
+    const double x = rng.gaussian(1.0);
+    return Vector3d(x, y, z);
 }
 
 //! |R^T R - I| and det R: a proper rotation has 0 and +1.
@@ -55,13 +61,19 @@ TEST(Tripose_NearestRotation, rank_deficient_matrices_give_proper_rotations)
     RNG rng(6);
     for (int trial = 0; trial < 20000; ++trial)
     {
-        const Matrix3d M = gaussian3(rng) * gaussian3(rng).transpose() + gaussian3(rng) * gaussian3(rng).transpose();
+        const Vector3d d = gaussian3(rng);
+        const Vector3d c = gaussian3(rng);
+        const Vector3d b = gaussian3(rng);
+        const Vector3d a = gaussian3(rng);
+        const Matrix3d M = a * b.transpose() + c * d.transpose();
         expectProperRotation(nearestRotation(M), trial);
         if (HasFailure())
             break;
     }
     // Rank 1 and 0.
-    expectProperRotation(nearestRotation(gaussian3(rng) * gaussian3(rng).transpose()), -1);
+    const Vector3d b = gaussian3(rng);
+    const Vector3d a = gaussian3(rng);
+    expectProperRotation(nearestRotation(a * b.transpose()), -1);
     expectProperRotation(nearestRotation(Matrix3d::Zero()), -2);
 }
 

@@ -75,8 +75,16 @@ TEST(Tripose_LineParameterization, chart_jacobian_matches_finite_differences)
     for (int trial = 0; trial < 100; ++trial)
     {
         // Lines a few metres to tens of metres from the origin, in any direction.
-        const Eigen::Vector3d X(rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0), rng.uniform(5.0, 30.0));
-        const Eigen::Vector3d d(rng.gaussian(1), rng.gaussian(1), rng.gaussian(1));
+        // One draw per statement, as C++ leaves the order of arguments unspecified: z before y before x
+        // is the order the seeded lines were drawn in so far (GCC's, right to left).
+        const double Xz = rng.uniform(5.0, 30.0);
+        const double Xy = rng.uniform(-10.0, 10.0);
+        const double Xx = rng.uniform(-10.0, 10.0);
+        const double dz = rng.gaussian(1);
+        const double dy = rng.gaussian(1);
+        const double dx = rng.gaussian(1);
+        const Eigen::Vector3d X(Xx, Xy, Xz);
+        const Eigen::Vector3d d(dx, dy, dz);
         PluckerLine L;
         L.d = d;
         L.m = X.cross(d);

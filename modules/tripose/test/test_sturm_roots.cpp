@@ -26,7 +26,14 @@ TEST(Tripose_SturmRoots, finds_the_real_roots_of_random_octics)
         std::sort(roots.begin(), roots.end());
         std::vector<Vec2d> pairs((8 - numReal) / 2);
         for (Vec2d& z : pairs)
-            z = Vec2d(rng.uniform(-3.0, 3.0), rng.uniform(0.05, 3.0));
+        {
+            // One draw per statement, as C++ leaves the order of arguments unspecified: the imaginary
+            // part before the real one is the order the seeded polynomials were drawn in so far (GCC's,
+            // right to left).
+            const double imaginary = rng.uniform(0.05, 3.0);
+            const double real = rng.uniform(-3.0, 3.0);
+            z = Vec2d(real, imaginary);
+        }
         const std::vector<double> c = polynomialFromRoots(roots, pairs, rng.uniform(0.1, 10.0));
         double found[8];
         const int n = solveRealRootsSturm(c.data(), 8, found);

@@ -42,8 +42,11 @@ Matx33d randomTurn(RNG& rng, double maxRadians)
 
 Point2d randomImagePoint(RNG& rng, const Size& size)
 {
-    return Point2d(rng.uniform(kImageMarginPx, size.width - 1 - kImageMarginPx),
-                   rng.uniform(kImageMarginPx, size.height - 1 - kImageMarginPx));
+    // One draw per statement: the order in which C++ evaluates a call's arguments is unspecified.
+    // y before x is the order the documented seeded scenes were drawn in (GCC's, right to left).
+    const double y = rng.uniform(kImageMarginPx, size.height - 1 - kImageMarginPx);
+    const double x = rng.uniform(kImageMarginPx, size.width - 1 - kImageMarginPx);
+    return Point2d(x, y);
 }
 
 double distanceToLine(const Point2d& x, const Point2d& a, const Point2d& b)

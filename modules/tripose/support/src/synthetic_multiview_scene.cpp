@@ -26,6 +26,17 @@ void lookAt(const Vec3d& centre, double roll, Matx33d& R, Vec3d& t)
     t = -(R * centre);
 }
 
+/** Uniform in the cube [-halfSize, halfSize]^3. One draw per statement: the order in which C++
+evaluates a call's arguments is unspecified; z before y before x is the order the documented seeded
+scenes were drawn in (GCC's, right to left). */
+Vec3d randomVector(RNG& rng, double halfSize)
+{
+    const double z = rng.uniform(-halfSize, halfSize);
+    const double y = rng.uniform(-halfSize, halfSize);
+    const double x = rng.uniform(-halfSize, halfSize);
+    return Vec3d(x, y, z);
+}
+
 } // namespace
 
 SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, int numLines, uint64 seed, int minSeen)
@@ -36,8 +47,9 @@ SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, in
     std::vector<Vec3d> tv(numKnown + 1);
     for (int v = 0; v <= numKnown; ++v)
     {
-        Vec3d c(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-        c = 20.0 * normalize(c) + Vec3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+        const Vec3d direction = randomVector(rng, 1.0);
+        const Vec3d offset = randomVector(rng, 1.0);
+        const Vec3d c = 20.0 * normalize(direction) + offset;
         lookAt(c, rng.uniform(0.0, 2 * CV_PI), Rv[v], tv[v]);
     }
     R = Rv[numKnown];
@@ -73,7 +85,7 @@ SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, in
         subset.push_back(numKnown);
         return subset;
     };
-    auto randomPoint = [&]() { return Vec3d(rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0)); };
+    auto randomPoint = [&]() { return randomVector(rng, 5.0); };
     for (int i = 0; i < numPoints; ++i)
     {
         const Vec3d X = randomPoint();

@@ -150,7 +150,14 @@ void placeCameras(const SyntheticSceneParams& p, const Matx33d K[3], ViewGeometr
         if (p.motion == MOTION_LARGE)
             centres[v] = p.cameraDistance * randomUnitVector(rng);
         else // uniform in the ball of radius smallMotionRadius around view 1
-            centres[v] = centres[0] + p.smallMotionRadius * std::cbrt(rng.uniform(0.0, 1.0)) * randomUnitVector(rng);
+        {
+            // One draw per statement, as C++ leaves the order of operands and arguments unspecified:
+            // the direction before the radius (and in randomStructurePoint v before u, z before y
+            // before x) is the order the documented seeded scenes were drawn in (GCC's, right to left).
+            const Vec3d direction = randomUnitVector(rng);
+            const double volumeFraction = rng.uniform(0.0, 1.0);
+            centres[v] = centres[0] + p.smallMotionRadius * std::cbrt(volumeFraction) * direction;
+        }
     }
     const double baseline = p.baseline12 > 0 ? p.baseline12 : p.baseline12Fraction * p.cameraDistance;
     if (baseline > 0)
@@ -217,8 +224,15 @@ Vec3d randomStructurePoint(RNG& rng, const StructureRegion& region)
 {
     const double h = region.halfSize;
     if (region.planar)
-        return region.centre + rng.uniform(-h, h) * region.u + rng.uniform(-h, h) * region.v;
-    const Vec3d Xw(rng.uniform(-h, h), rng.uniform(-h, h), rng.uniform(-h, h));
+    {
+        const double alongV = rng.uniform(-h, h);
+        const double alongU = rng.uniform(-h, h);
+        return region.centre + alongU * region.u + alongV * region.v;
+    }
+    const double z = rng.uniform(-h, h);
+    const double y = rng.uniform(-h, h);
+    const double x = rng.uniform(-h, h);
+    const Vec3d Xw(x, y, z);
     return region.R * Xw + region.t;
 }
 

@@ -118,10 +118,16 @@ void placeCameras(const SyntheticStereoParams& p, const Matx33d& K, ViewGeometry
 {
     RNG rng = makeStream(p.seed, STREAM_RIG);
     const double baseline = rng.uniform(p.baselineMin, p.baselineMax);
-    const Vec3d centre2 = baseline * Vec3d(1.0, kBaselineSlope * rng.gaussian(1.0), kBaselineSlope * rng.gaussian(1.0));
+    // One draw per statement: the order in which C++ evaluates operands and arguments is unspecified.
+    // z before y, and the direction before the distance, is the order the documented seeded scenes
+    // were drawn in (GCC's, right to left).
+    const double slopeZ = kBaselineSlope * rng.gaussian(1.0);
+    const double slopeY = kBaselineSlope * rng.gaussian(1.0);
+    const Vec3d centre2 = baseline * Vec3d(1.0, slopeY, slopeZ);
     const Matx33d rigR = randomTurn(rng, p.rigTiltDegrees * CV_PI / 180);
     const Vec3d rigT = -(rigR * centre2);
-    const Vec3d centre3 = rng.uniform(p.motionMin, p.motionMax) * randomUnitVector(rng);
+    const Vec3d direction = randomUnitVector(rng);
+    const Vec3d centre3 = rng.uniform(p.motionMin, p.motionMax) * direction;
     const Matx33d R = randomTurn(rng, p.rotationDegrees * CV_PI / 180);
     const Vec3d t = -(R * centre3);
     for (int v = 0; v < 4; ++v)
