@@ -4,12 +4,15 @@
 
 #include "perf_precomp.hpp"
 
+#include "tripose_support/random_draws.hpp"
+
 #include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
 
 namespace opencv_test {
 namespace {
 
 using cv::tripose::support::SyntheticMultiViewScene;
+using cv::tripose::support::uniformInCube;
 
 //! 1 px of Gaussian noise on every observation and, in the new view, a fraction @p outliers of the
 //! points moved 40 px away: a tracker's frame.
@@ -19,17 +22,6 @@ void perturb(SyntheticMultiViewScene& s, double outliers)
     Mat& newView = s.points.back();
     for (int i = 0; i < cvRound(outliers * newView.rows); ++i)
         newView.at<double>(i, 0) += 40.0;
-}
-
-//! Uniform in [-halfWidth, halfWidth]^3. One draw per statement, as C++ leaves the order of a
-//! call's arguments unspecified: z before y before x is the order the seeded starts were
-//! drawn in so far (GCC's, right to left).
-Vec3d uniformVector(RNG& rng, double halfWidth)
-{
-    const double z = rng.uniform(-halfWidth, halfWidth);
-    const double y = rng.uniform(-halfWidth, halfWidth);
-    const double x = rng.uniform(-halfWidth, halfWidth);
-    return Vec3d(x, y, z);
 }
 
 // (known views, points, lines): registration of a new view, as the tracker does per frame.
@@ -92,8 +84,8 @@ PERF_TEST_P(Tripose_RefinePosesMultiView, refine, testing::Values(MultiViewCount
         Mat t = v < fixed.rows - 1 ? s.ts[v].clone() : Mat(s.t).clone();
         if (v >= 2)
         {
-            rvec += Mat(uniformVector(rng, 0.02));
-            t += Mat(uniformVector(rng, 0.2));
+            rvec += Mat(uniformInCube(rng, 0.02));
+            t += Mat(uniformInCube(rng, 0.2));
         }
         Rs.push_back(rvec);
         ts.push_back(t);

@@ -8,6 +8,8 @@
 
 #include "test_precomp.hpp"
 
+#include "tripose_support/random_draws.hpp"
+
 #include <functional>
 #include <limits>
 
@@ -17,6 +19,7 @@ namespace opencv_test {
 namespace {
 
 using cv::tripose::support::poseError;
+using cv::tripose::support::uniformInCube;
 
 typedef cv::tripose::support::SyntheticMultiViewScene MultiViewScene;
 
@@ -24,17 +27,6 @@ typedef cv::tripose::support::SyntheticMultiViewScene MultiViewScene;
 // a few features (the three-view tests allow the same).
 const double kExactRotationDeg = 1e-6;
 const double kExactTranslation = 1e-6; // relative to |t|, about 20 m
-
-//! Uniform in [-halfWidth, halfWidth]^3. One draw per statement, as C++ leaves the order of a
-//! call's arguments unspecified: z before y before x is the order the seeded starts were
-//! drawn in so far (GCC's, right to left).
-Vec3d uniformVector(RNG& rng, double halfWidth)
-{
-    const double z = rng.uniform(-halfWidth, halfWidth);
-    const double y = rng.uniform(-halfWidth, halfWidth);
-    const double x = rng.uniform(-halfWidth, halfWidth);
-    return Vec3d(x, y, z);
-}
 
 struct MixCase
 {
@@ -305,8 +297,8 @@ TEST(Tripose_MultiView, several_poses_return_to_the_exact_poses)
         Mat t = truth.ts[v].clone();
         if (v >= 2)
         {
-            rvec += Mat(uniformVector(rng, 0.02));
-            t += Mat(uniformVector(rng, 0.3));
+            rvec += Mat(uniformInCube(rng, 0.02));
+            t += Mat(uniformInCube(rng, 0.3));
         }
         Rs.push_back(rvec);
         ts.push_back(t);

@@ -4,6 +4,8 @@
 
 #include "scene_sampling.hpp"
 
+#include "tripose_support/random_draws.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +14,15 @@
 namespace cv {
 namespace tripose {
 namespace support {
+
+Vec3d uniformInCube(RNG& rng, double halfSize)
+{
+    const double z = rng.uniform(-halfSize, halfSize);
+    const double y = rng.uniform(-halfSize, halfSize);
+    const double x = rng.uniform(-halfSize, halfSize);
+    return Vec3d(x, y, z);
+}
+
 namespace sampling {
 
 RNG makeStream(int seed, int stream)

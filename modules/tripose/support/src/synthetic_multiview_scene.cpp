@@ -4,6 +4,8 @@
 
 #include "tripose_support/synthetic_multiview_scene.hpp"
 
+#include "tripose_support/random_draws.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -26,17 +28,6 @@ void lookAt(const Vec3d& centre, double roll, Matx33d& R, Vec3d& t)
     t = -(R * centre);
 }
 
-/** Uniform in the cube [-halfSize, halfSize]^3. One draw per statement: the order in which C++
-evaluates a call's arguments is unspecified; z before y before x is the order the documented seeded
-scenes were drawn in (GCC's, right to left). */
-Vec3d randomVector(RNG& rng, double halfSize)
-{
-    const double z = rng.uniform(-halfSize, halfSize);
-    const double y = rng.uniform(-halfSize, halfSize);
-    const double x = rng.uniform(-halfSize, halfSize);
-    return Vec3d(x, y, z);
-}
-
 } // namespace
 
 SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, int numLines, uint64 seed, int minSeen)
@@ -47,8 +38,8 @@ SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, in
     std::vector<Vec3d> tv(numKnown + 1);
     for (int v = 0; v <= numKnown; ++v)
     {
-        const Vec3d direction = randomVector(rng, 1.0);
-        const Vec3d offset = randomVector(rng, 1.0);
+        const Vec3d direction = uniformInCube(rng, 1.0);
+        const Vec3d offset = uniformInCube(rng, 1.0);
         const Vec3d c = 20.0 * normalize(direction) + offset;
         lookAt(c, rng.uniform(0.0, 2 * CV_PI), Rv[v], tv[v]);
     }
@@ -85,7 +76,7 @@ SyntheticMultiViewScene::SyntheticMultiViewScene(int numKnown, int numPoints, in
         subset.push_back(numKnown);
         return subset;
     };
-    auto randomPoint = [&]() { return randomVector(rng, 5.0); };
+    auto randomPoint = [&]() { return uniformInCube(rng, 5.0); };
     for (int i = 0; i < numPoints; ++i)
     {
         const Vec3d X = randomPoint();

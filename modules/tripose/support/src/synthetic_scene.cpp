@@ -9,6 +9,7 @@
 #include "tripose_support/synthetic_scene.hpp"
 
 #include "scene_sampling.hpp"
+#include "tripose_support/random_draws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -152,8 +153,8 @@ void placeCameras(const SyntheticSceneParams& p, const Matx33d K[3], ViewGeometr
         else // uniform in the ball of radius smallMotionRadius around view 1
         {
             // One draw per statement, as C++ leaves the order of operands and arguments unspecified:
-            // the direction before the radius (and in randomStructurePoint v before u, z before y
-            // before x) is the order the documented seeded scenes were drawn in (GCC's, right to left).
+            // the direction before the radius (and in randomStructurePoint v before u) is the order
+            // the documented seeded scenes were drawn in (GCC's, right to left).
             const Vec3d direction = randomUnitVector(rng);
             const double volumeFraction = rng.uniform(0.0, 1.0);
             centres[v] = centres[0] + p.smallMotionRadius * std::cbrt(volumeFraction) * direction;
@@ -229,11 +230,7 @@ Vec3d randomStructurePoint(RNG& rng, const StructureRegion& region)
         const double alongU = rng.uniform(-h, h);
         return region.centre + alongU * region.u + alongV * region.v;
     }
-    const double z = rng.uniform(-h, h);
-    const double y = rng.uniform(-h, h);
-    const double x = rng.uniform(-h, h);
-    const Vec3d Xw(x, y, z);
-    return region.R * Xw + region.t;
+    return region.R * uniformInCube(rng, h) + region.t;
 }
 
 } // namespace
