@@ -91,8 +91,8 @@ fi
 # No ccache, which OpenCV would use if installed: the build folder is kept between runs, and on a
 # first build a cache only misses, at a cost.
 # -O1: this build is there to compile the module inside OpenCV and run its tests on OpenCV's ts, not
-# to be fast; without -ffast-math the optimisation level does not change floating-point results,
-# and -O1 compiles in less time (cv2's bindings 56 -> 33 s of CPU, imgproc's connected components
+# to be fast; GCC reorders no floating-point arithmetic without -ffast-math at any level (and the
+# baseline x86-64 target has no fused multiply-add), and -O1 compiles in less time (cv2's bindings 56 -> 33 s of CPU, imgproc's connected components
 # 20 -> 10 s, the module's refinement 51 -> 44 s). The perf tests, built on request, get -O3: their
 # timings are meant to be read (switching rebuilds everything).
 optimization=-O1
