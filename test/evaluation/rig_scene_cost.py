@@ -1,0 +1,77 @@
+# This file is part of OpenCV project.
+# It is subject to the license terms in the LICENSE file found in the top-level directory
+# of this distribution and at http://opencv.org/license.html.
+
+"""The work of the stereo rig's robust estimate per seeded scene, counted in instructions, and its
+slowest scene over the median: the ratio of the goal "worst-case time within 3 times the median
+over 100 seeded scenes" (doc/speed.md, Stereo rig), without the timing noise of a shared 2-core
+machine.
+
+    .venv/bin/python test/evaluation/rig_scene_cost.py --tool build/test/evaluation/tripose_evaluate \\
+        [--points 10 --lines 10] [--outliers 0] [--seeds 7000 8000 9000 10000 11000] [--trials 20]
+
+Each scene is a tripose_evaluate stereo trial (1 px noise, threshold 4 px: the scenes of
+rig_vs_peers.py). valgrind's callgrind counts the instructions executed inside
+estimatePoseLinePointStereoRansac only; a batch of seed S run to trial k and to trial k + 1 differ
+by trial k's count (the scenes of a batch come from one generator, so trial k cannot run alone).
+The count of a scene is the same on every run of the same binary, whatever else the machine does;
+the time ratios of repeated timed passes scatter around it (doc/speed.md).
+Needs valgrind (Debian package valgrind). Runs two valgrind processes at a time.
+"""
+
+import argparse
+import concurrent.futures
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+
+
+def instructions(tool, a, seed, trials):
+    """Instructions inside the rig's robust estimator over the first `trials` scenes of batch `seed`."""
+    cmd = ["valgrind", "--tool=callgrind", "--collect-atstart=no",
+           "--toggle-collect=*estimatePoseLinePointStereoRansac*", "--callgrind-out-file=/dev/null",
+           tool, "stereo", "--points", str(a.points), "--lines", str(a.lines), "--noise", "1",
+           "--outliers", str(a.outliers), "--trials", str(trials), "--seed", str(seed), "--repeats", "1",
+           "--threshold", "4", "--methods", "stereo_ransac"]
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    found = re.search(r"Collected : (\d+)", run.stderr)
+    if run.returncode != 0 or not found:
+        raise RuntimeError(f"{' '.join(cmd)} failed:\n{run.stderr[-2000:]}")
+    return int(found.group(1))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--tool", required=True, help="tripose_evaluate binary")
+    ap.add_argument("--points", type=int, default=10)
+    ap.add_argument("--lines", type=int, default=10)
+    ap.add_argument("--outliers", type=float, default=0.0)
+    ap.add_argument("--seeds", type=int, nargs="+", default=[7000, 8000, 9000, 10000, 11000])
+    ap.add_argument("--trials", type=int, default=20, help="scenes per seed")
+    ap.add_argument("--show", type=int, default=5, help="how many of the costliest scenes to list")
+    a = ap.parse_args()
+    if shutil.which("valgrind") is None:
+        sys.exit("rig_scene_cost.py: valgrind not found (apt-get install valgrind)")
+    if a.trials < 1:
+        sys.exit("rig_scene_cost.py: --trials must be >= 1")
+
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        runs = {(s, n): pool.submit(instructions, a.tool, a, s, n) for s in a.seeds for n in range(1, a.trials + 1)}
+        cumulative = {key: job.result() for key, job in runs.items()}
+    cost = {}
+    for s in a.seeds:
+        for n in range(1, a.trials + 1):
+            cost[(s, n - 1)] = cumulative[(s, n)] - (cumulative[(s, n - 1)] if n > 1 else 0)
+
+    median = statistics.median(cost.values())
+    ranked = sorted(cost.items(), key=lambda kv: -kv[1])
+    print(f"{a.points}P+{a.lines}L, {a.outliers:.0%} wrong matches, seeds {' '.join(map(str, a.seeds))}, "
+          f"{a.trials} scenes each: {len(cost)} scenes")
+    print(f"median {median / 1e6:.3f} M instructions, slowest / median {ranked[0][1] / median:.2f}")
+    print("costliest (seed, trial): " + ", ".join(f"({s}, {t}) {c / median:.2f}" for (s, t), c in ranked[:a.show]))
+
+
+if __name__ == "__main__":
+    main()
