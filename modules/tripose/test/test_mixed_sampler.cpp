@@ -169,6 +169,51 @@ TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
     EXPECT_TRUE(clean.confident(0.999));
 }
 
+// Where the best model's support lies in no pool a kind draws from (only its own sample's features
+// are there), its inlier counts cannot stop the search; it stops once every kind has been drawn so
+// often that any one of its samples would have been drawn with the confidence.
+TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
+{
+    MixedSampling points;
+    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0, 0 });
+    points.pools.resize(1);
+    for (int i = 0; i < 10; ++i)
+        points.pools[0].points.push_back(i);
+    const FeatureSubset own = firstOfPools(points, 3, 0);
+    MixedSampler sampler(points, 4);
+    sampler.setInliers(own, own);
+    const auto required = [](double samples) {
+        return (long)std::ceil(std::log(1 - 0.999) / std::log(1 - 1.0 / samples));
+    };
+    FeatureSubset sample;
+    long drawn = 0;
+    while (!sampler.confident(0.999))
+    {
+        ASSERT_TRUE(sampler.next(sample));
+        ++drawn;
+        ASSERT_LE(drawn, 100000);
+    }
+    EXPECT_EQ(required(120), drawn) << "C(10, 3) = 120 samples";
+
+    // Two kinds: both must be covered, P2P1L's 450 samples (C(10, 2) x 10) as well as P3P's 120.
+    MixedSampling two = points;
+    two.kinds.push_back(MixedSampling::Kind{ 2, 1, 1.0, 0 });
+    for (int i = 0; i < 10; ++i)
+        two.pools[0].lines.push_back(i);
+    MixedSampler both(two, 4);
+    both.setInliers(own, own);
+    drawn = 0;
+    while (!both.confident(0.999))
+    {
+        ASSERT_TRUE(both.next(sample));
+        ++drawn;
+        ASSERT_LE(drawn, 100000);
+    }
+    EXPECT_GE(both.samplesOfKind()[0], required(120));
+    EXPECT_EQ(required(450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
+    EXPECT_FALSE(both.covered(0.9999));
+}
+
 TEST(Tripose_MixedSampler, same_seed_same_samples)
 {
     const MixedSampling sampling = threeFeatureKinds(10, 60);

@@ -47,6 +47,15 @@ MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
         pools_[k].hasPoint = membership(sampling.pools[k].points);
         pools_[k].hasLine = membership(sampling.pools[k].lines);
     }
+    logMissOne_.resize(sampling.kinds.size());
+    for (size_t k = 0; k < sampling.kinds.size(); ++k)
+    {
+        const MixedSampling::Kind& kind = sampling.kinds[k];
+        const MixedSampling::Pool& pool = sampling.pools[kind.pool];
+        // The probability of drawing one given sample of this kind is 1 / (number of its samples).
+        logMissOne_[k] = std::log1p(-allGood(kind.points, (int)pool.points.size(), kind.points) *
+                                    allGood(kind.lines, (int)pool.lines.size(), kind.lines));
+    }
 }
 
 void MixedSampler::setInliers(const FeatureSubset& inliers, const FeatureSubset& sample)
@@ -170,7 +179,22 @@ bool MixedSampler::confident(double confidence) const
             return true;
         logAllFailed += drawn_[k] * std::log1p(-p);
     }
-    return logAllFailed <= std::log1p(-confidence);
+    return logAllFailed <= std::log1p(-confidence) || covered(confidence);
+}
+
+bool MixedSampler::covered(double confidence) const
+{
+    bool drawable = false;
+    for (size_t k = 0; k < drawn_.size(); ++k)
+    {
+        if (!canDraw((int)k))
+            continue;
+        drawable = true;
+        // A kind with a single sample is covered once drawn (log1p(-1) = -inf; not drawn: NaN, false).
+        if (!(drawn_[k] * logMissOne_[k] <= std::log1p(-confidence)))
+            return false;
+    }
+    return drawable;
 }
 
 } // namespace tripose

@@ -24,7 +24,14 @@ sample the model came from counts none there (they fit the model by construction
 with a pool of three points, the three of a wrong P3P model would otherwise make every later P3P
 sample look certain, and stop the search at that pose). Drawing stops when every sample drawn so far
 failing has probability at most 1 - confidence: the product over kinds of
-(1 - p_kind)^(samples of that kind); with one kind this is the usual adaptive RANSAC bound.
+(1 - p_kind)^(samples of that kind); with one kind this is the usual adaptive RANSAC bound. It also
+stops once every kind the pools can fill has been drawn so often that any one sample of it would
+have been drawn with that confidence (covered()): an all-inlier sample of any kind, if the pools
+hold one, is then among those drawn, whatever the best model's support. That bounds the search
+where the best model has no support beyond its sample in any pool the kinds draw from, which the
+rule above cannot (a 10P+10L rig scene with half its time-B matches wrong, its best model supported
+by lines and the sample's three points, drew all 10000 P3P samples; its pools of ten points are
+covered after about 830 per camera).
 
 A kind is chosen per sample with probability proportional to the same all-inlier probability with
 the model's own sample left out of the counts and the pools, so that where lines are the reliable
@@ -49,6 +56,10 @@ public:
 
     //! True when an all-inlier sample is among those drawn with at least @p confidence.
     bool confident(double confidence) const;
+
+    /** True when every kind that the pools can fill was drawn so often that the probability of
+    any one of its samples never having been drawn is at most 1 - @p confidence. */
+    bool covered(double confidence) const;
 
     //! Samples drawn of each kind, in the order of MixedSampling::kinds.
     const std::vector<int>& samplesOfKind() const { return drawn_; }
@@ -81,6 +92,9 @@ private:
     std::vector<PoolState> pools_;
     std::vector<int> drawn_;
     std::vector<double> weights_;
+    //! Per kind, log(1 - 1 / its number of distinct samples): the log of the probability that a
+    //! draw misses one given sample (covered()).
+    std::vector<double> logMissOne_;
 };
 
 } // namespace tripose
