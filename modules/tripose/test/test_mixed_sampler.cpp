@@ -39,6 +39,30 @@ FeatureSubset firstOfPools(const MixedSampling& sampling, int points, int lines)
     return subset;
 }
 
+//! A kind of @p points points from one pool of @p size points (features 0 .. size - 1).
+MixedSampling pointKind(int points, int size)
+{
+    MixedSampling sampling;
+    sampling.kinds.push_back(MixedSampling::Kind{ points, 0, 1.0, 0 });
+    sampling.pools.resize(1);
+    for (int i = 0; i < size; ++i)
+        sampling.pools[0].points.push_back(i);
+    return sampling;
+}
+
+//! Draws from @p sampler until it is confident at 0.999; the number of draws, or -1 past 100000.
+long drawsUntilConfident(MixedSampler& sampler)
+{
+    FeatureSubset sample;
+    long drawn = 0;
+    while (!sampler.confident(0.999))
+    {
+        if (!sampler.next(sample) || ++drawn > 100000)
+            return -1;
+    }
+    return drawn;
+}
+
 // Samples are one kind's distinct features from its pools; without a model every kind is drawn.
 TEST(Tripose_MixedSampler, samples_are_distinct_pool_features_of_one_kind)
 {
@@ -141,30 +165,19 @@ TEST(Tripose_MixedSampler, the_model_s_own_sample_is_no_support)
 // sample drawn without replacement); with several, the samples of every kind count.
 TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
 {
-    MixedSampling points;
-    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0, 0 });
-    points.pools.resize(1);
-    for (int i = 0; i < 100; ++i)
-        points.pools[0].points.push_back(i);
+    const MixedSampling points = pointKind(3, 100);
     MixedSampler sampler(points, 1);
     sampler.setInliers(firstOfPools(points, 50, 0), FeatureSubset());
     const double p = 50.0 / 100 * 49.0 / 99 * 48.0 / 98;
     const long required = (long)std::ceil(std::log(1 - 0.999) / std::log(1 - p));
-    FeatureSubset sample;
-    long drawn = 0;
-    while (!sampler.confident(0.999))
-    {
-        ASSERT_TRUE(sampler.next(sample));
-        ++drawn;
-        ASSERT_LE(drawn, 100000);
-    }
-    EXPECT_EQ(required, drawn);
+    EXPECT_EQ(required, drawsUntilConfident(sampler));
 
     // All pool features inliers: one sample of a kind is enough.
     const MixedSampling mixed = threeFeatureKinds(10, 100);
     MixedSampler clean(mixed, 1);
     clean.setInliers(firstOfPools(mixed, 10, 100), FeatureSubset());
     EXPECT_FALSE(clean.confident(0.999));
+    FeatureSubset sample;
     ASSERT_TRUE(clean.next(sample));
     EXPECT_TRUE(clean.confident(0.999));
 }
@@ -174,26 +187,14 @@ TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
 // often that any one of its samples would have been drawn with the confidence.
 TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
 {
-    MixedSampling points;
-    points.kinds.push_back(MixedSampling::Kind{ 3, 0, 1.0, 0 });
-    points.pools.resize(1);
-    for (int i = 0; i < 10; ++i)
-        points.pools[0].points.push_back(i);
+    const MixedSampling points = pointKind(3, 10);
     const FeatureSubset own = firstOfPools(points, 3, 0);
     MixedSampler sampler(points, 4);
     sampler.setInliers(own, own);
     const auto required = [](double samples) {
         return (long)std::ceil(std::log(1 - 0.999) / std::log(1 - 1.0 / samples));
     };
-    FeatureSubset sample;
-    long drawn = 0;
-    while (!sampler.confident(0.999))
-    {
-        ASSERT_TRUE(sampler.next(sample));
-        ++drawn;
-        ASSERT_LE(drawn, 100000);
-    }
-    EXPECT_EQ(required(120), drawn) << "C(10, 3) = 120 samples";
+    EXPECT_EQ(required(120), drawsUntilConfident(sampler)) << "C(10, 3) = 120 samples";
 
     // Two kinds: both must be covered, P2P1L's 450 samples (C(10, 2) x 10) as well as P3P's 120.
     MixedSampling two = points;
@@ -202,13 +203,7 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
         two.pools[0].lines.push_back(i);
     MixedSampler both(two, 4);
     both.setInliers(own, own);
-    drawn = 0;
-    while (!both.confident(0.999))
-    {
-        ASSERT_TRUE(both.next(sample));
-        ++drawn;
-        ASSERT_LE(drawn, 100000);
-    }
+    ASSERT_GT(drawsUntilConfident(both), 0);
     EXPECT_GE(both.samplesOfKind()[0], required(120));
     EXPECT_EQ(required(450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
     EXPECT_FALSE(both.covered(0.9999));
