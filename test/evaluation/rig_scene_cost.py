@@ -13,7 +13,10 @@ machine.
 Each scene is a tripose_evaluate stereo trial (1 px noise, threshold 4 px: the scenes of
 rig_vs_peers.py). valgrind's callgrind counts the instructions executed inside
 estimatePoseLinePointStereoRansac only; a batch of seed S run to trial k and to trial k + 1 differ
-by trial k's count (the scenes of a batch come from one generator, so trial k cannot run alone).
+by trial k's count. (Trial k's scene is drawn from seed S + k, but its RANSAC seed is the batch's S:
+run alone as --seed S + k, the sampler would draw other samples.) A batch of T scenes therefore
+costs T (T + 1) / 2 scene runs. The first call of a process costs 0.6 % more than a second call on
+the same scene (seed 8000, trial 0), so trial 0 is counted as the others.
 The count of a scene is the same on every run of the same binary, whatever else the machine does;
 the time ratios of repeated timed passes scatter around it (doc/speed.md).
 Needs valgrind (Debian package valgrind). Runs two valgrind processes at a time.
@@ -21,6 +24,7 @@ Needs valgrind (Debian package valgrind). Runs two valgrind processes at a time.
 
 import argparse
 import concurrent.futures
+import os
 import re
 import shutil
 import statistics
@@ -54,20 +58,31 @@ def main():
     a = ap.parse_args()
     if shutil.which("valgrind") is None:
         sys.exit("rig_scene_cost.py: valgrind not found (apt-get install valgrind)")
-    if a.trials < 1:
-        sys.exit("rig_scene_cost.py: --trials must be >= 1")
+    if not (os.path.isfile(a.tool) and os.access(a.tool, os.X_OK)):
+        sys.exit(f"rig_scene_cost.py: argument --tool: {a.tool} is not an executable file")
+    if a.trials < 1 or a.show < 1:
+        sys.exit("rig_scene_cost.py: arguments --trials and --show must be >= 1")
+    if not 0.0 <= a.outliers < 1.0:
+        sys.exit("rig_scene_cost.py: argument --outliers must be in [0, 1)")
+    seeds = list(dict.fromkeys(a.seeds))
 
-    with concurrent.futures.ThreadPoolExecutor(2) as pool:
-        runs = {(s, n): pool.submit(instructions, a.tool, a, s, n) for s in a.seeds for n in range(1, a.trials + 1)}
+    pool = concurrent.futures.ThreadPoolExecutor(2)
+    try:
+        runs = {(s, n): pool.submit(instructions, a.tool, a, s, n) for s in seeds for n in range(1, a.trials + 1)}
         cumulative = {key: job.result() for key, job in runs.items()}
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
     cost = {}
-    for s in a.seeds:
+    for s in seeds:
         for n in range(1, a.trials + 1):
             cost[(s, n - 1)] = cumulative[(s, n)] - (cumulative[(s, n - 1)] if n > 1 else 0)
+    if min(cost.values()) <= 0:
+        sys.exit("rig_scene_cost.py: a scene counted no instructions inside estimatePoseLinePointStereoRansac "
+                 "(a binary without symbols, or one that does not call it)")
 
     median = statistics.median(cost.values())
     ranked = sorted(cost.items(), key=lambda kv: -kv[1])
-    print(f"{a.points}P+{a.lines}L, {a.outliers:.0%} wrong matches, seeds {' '.join(map(str, a.seeds))}, "
+    print(f"{a.points}P+{a.lines}L, {a.outliers:.0%} wrong matches, seeds {' '.join(map(str, seeds))}, "
           f"{a.trials} scenes each: {len(cost)} scenes")
     print(f"median {median / 1e6:.3f} M instructions, slowest / median {ranked[0][1] / median:.2f}")
     print("costliest (seed, trial): " + ", ".join(f"({s}, {t}) {c / median:.2f}" for (s, t), c in ranked[:a.show]))

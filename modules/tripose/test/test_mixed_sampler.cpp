@@ -206,6 +206,14 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     ASSERT_GT(drawsUntilConfident(both), 0);
     EXPECT_GE(both.samplesOfKind()[0], required(120));
     EXPECT_EQ(required(450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
+
+    // A kind with a single sample (three points of a pool of three) is covered once it is drawn.
+    const MixedSampling three = pointKind(3, 3);
+    const FeatureSubset all = firstOfPools(three, 3, 0);
+    MixedSampler once(three, 4);
+    once.setInliers(all, all);
+    EXPECT_FALSE(once.confident(0.999));
+    EXPECT_EQ(1, drawsUntilConfident(once));
     EXPECT_FALSE(both.covered(0.9999));
 }
 

@@ -28,10 +28,9 @@ failing has probability at most 1 - confidence: the product over kinds of
 stops once every kind the pools can fill has been drawn so often that any one sample of it would
 have been drawn with that confidence (covered()): an all-inlier sample of any kind, if the pools
 hold one, is then among those drawn, whatever the best model's support. That bounds the search
-where the best model has no support beyond its sample in any pool the kinds draw from, which the
-rule above cannot (a 10P+10L rig scene with half its time-B matches wrong, its best model supported
-by lines and the sample's three points, drew all 10000 P3P samples; its pools of ten points are
-covered after about 830 per camera).
+where the best model has no support beyond its sample in any pool the kinds draw from (its support
+lies in features no kind draws), where the rule above would draw to the iteration limit; small
+pools are covered after a few hundred samples per kind, large ones never before the limit.
 
 A kind is chosen per sample with probability proportional to the same all-inlier probability with
 the model's own sample left out of the counts and the pools, so that where lines are the reliable
@@ -54,7 +53,8 @@ public:
     and the sample it was estimated from. */
     void setInliers(const FeatureSubset& inliers, const FeatureSubset& sample);
 
-    //! True when an all-inlier sample is among those drawn with at least @p confidence.
+    /** True when an all-inlier sample is among those drawn with at least @p confidence, by the
+    best model's support or because every kind is covered(). */
     bool confident(double confidence) const;
 
     /** True when every kind that the pools can fill was drawn so often that the probability of

@@ -127,7 +127,8 @@ private:
     }
 
     //! Samples of the solver's kinds (MixedSampler), until one all-inlier sample is drawn with the
-    //! requested confidence; @p samplesOfKind receives how many of each kind were drawn.
+    //! requested confidence (by the best model's support, or every kind covered: MixedSampler::
+    //! confident()); @p samplesOfKind receives how many of each kind were drawn.
     int sampleMixed(const MixedSampling& sampling, std::vector<int>& samplesOfKind)
     {
         MixedSampler samples(sampling, params_.seed);
