@@ -50,6 +50,12 @@ MixedSampling pointKind(int points, int size)
     return sampling;
 }
 
+//! Samples needed to draw, with confidence 0.999, one that succeeds with probability @p p.
+long samplesForConfidence(double p)
+{
+    return (long)std::ceil(std::log(1 - 0.999) / std::log(1 - p));
+}
+
 //! Draws from @p sampler until it is confident at 0.999; the number of draws, or -1 past 100000.
 long drawsUntilConfident(MixedSampler& sampler)
 {
@@ -168,9 +174,7 @@ TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
     const MixedSampling points = pointKind(3, 100);
     MixedSampler sampler(points, 1);
     sampler.setInliers(firstOfPools(points, 50, 0), FeatureSubset());
-    const double p = 50.0 / 100 * 49.0 / 99 * 48.0 / 98;
-    const long required = (long)std::ceil(std::log(1 - 0.999) / std::log(1 - p));
-    EXPECT_EQ(required, drawsUntilConfident(sampler));
+    EXPECT_EQ(samplesForConfidence(50.0 / 100 * 49.0 / 99 * 48.0 / 98), drawsUntilConfident(sampler));
 
     // All pool features inliers: one sample of a kind is enough.
     const MixedSampling mixed = threeFeatureKinds(10, 100);
@@ -191,10 +195,7 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     const FeatureSubset own = firstOfPools(points, 3, 0);
     MixedSampler sampler(points, 4);
     sampler.setInliers(own, own);
-    const auto required = [](double samples) {
-        return (long)std::ceil(std::log(1 - 0.999) / std::log(1 - 1.0 / samples));
-    };
-    EXPECT_EQ(required(120), drawsUntilConfident(sampler)) << "C(10, 3) = 120 samples";
+    EXPECT_EQ(samplesForConfidence(1.0 / 120), drawsUntilConfident(sampler)) << "C(10, 3) = 120 samples";
 
     // Two kinds: both must be covered, P2P1L's 450 samples (C(10, 2) x 10) as well as P3P's 120.
     MixedSampling two = points;
@@ -204,8 +205,9 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     MixedSampler both(two, 4);
     both.setInliers(own, own);
     ASSERT_GT(drawsUntilConfident(both), 0);
-    EXPECT_GE(both.samplesOfKind()[0], required(120));
-    EXPECT_EQ(required(450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
+    EXPECT_GE(both.samplesOfKind()[0], samplesForConfidence(1.0 / 120));
+    EXPECT_EQ(samplesForConfidence(1.0 / 450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
+    EXPECT_FALSE(both.covered(0.9999));
 
     // A kind with a single sample (three points of a pool of three) is covered once it is drawn.
     const MixedSampling three = pointKind(3, 3);
@@ -214,7 +216,6 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     once.setInliers(all, all);
     EXPECT_FALSE(once.confident(0.999));
     EXPECT_EQ(1, drawsUntilConfident(once));
-    EXPECT_FALSE(both.covered(0.9999));
 }
 
 TEST(Tripose_MixedSampler, same_seed_same_samples)

@@ -179,10 +179,16 @@ bool MixedSampler::confident(double confidence) const
             return true;
         logAllFailed += drawn_[k] * std::log1p(-p);
     }
-    return logAllFailed <= std::log1p(-confidence) || covered(confidence);
+    const double logMissed = std::log1p(-confidence);
+    return logAllFailed <= logMissed || coveredTo(logMissed);
 }
 
 bool MixedSampler::covered(double confidence) const
+{
+    return coveredTo(std::log1p(-confidence));
+}
+
+bool MixedSampler::coveredTo(double logMissed) const
 {
     bool drawable = false;
     for (size_t k = 0; k < drawn_.size(); ++k)
@@ -191,7 +197,7 @@ bool MixedSampler::covered(double confidence) const
             continue;
         drawable = true;
         // A kind with a single sample is covered once drawn (log1p(-1) = -inf; not drawn: NaN, false).
-        if (!(drawn_[k] * logMissOne_[k] <= std::log1p(-confidence)))
+        if (!(drawn_[k] * logMissOne_[k] <= logMissed))
             return false;
     }
     return drawable;

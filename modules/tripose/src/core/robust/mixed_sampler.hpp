@@ -70,6 +70,8 @@ private:
     //! The same without the best model's own sample (the choice of a kind).
     double choiceWeight(int k) const;
     bool canDraw(int k) const;
+    //! covered() with log(1 - confidence) given: confident() asks once per sample.
+    bool coveredTo(double logMissed) const;
     int chooseKind();
     void drawDistinct(const std::vector<int>& pool, int count, std::vector<int>& out);
 
