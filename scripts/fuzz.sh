@@ -1,27 +1,22 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of test/fuzz with clang (ASan + UBSan, in build-fuzz/) and runs each
-# for a while: first over the checked-in regression inputs (test/fuzz/regressions/<target>/, each a
-# bug once found and fixed), then fuzzing from the seed corpus (test/fuzz/corpus/<target>/).
+# Runs each libFuzzer target of test/fuzz (clang, ASan + UBSan; built with the C++ suite by
+# scripts/build_sanitizers.sh in build-sanitizers/) for a while: first over the checked-in
+# regression inputs (test/fuzz/regressions/<target>/, each a bug once found and fixed), then fuzzing
+# from the seed corpus (test/fuzz/corpus/<target>/).
 #
 #   bash scripts/fuzz.sh            # 60 s per target (what the test command runs)
 #   bash scripts/fuzz.sh 3600       # an hour per target
 #
-# New inputs go to build-fuzz/corpus/<target>/ (the checked-in seeds are only read); a crash, a
-# sanitizer report, a timeout or running out of memory leaves its input in build-fuzz/artifacts/ and
-# fails the script. The two targets fuzz side by side.
+# New inputs go to build-sanitizers/corpus/<target>/ (the checked-in seeds are only read); a crash,
+# a sanitizer report, a timeout or running out of memory leaves its input in
+# build-sanitizers/artifacts/ and fails the script. The two targets fuzz side by side.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=${1:-60}
-build="$root/build-fuzz"
+build="$root/build-sanitizers"
 
-bash scripts/install_dependencies.sh
-
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DTRIPOSE_BUILD_FUZZERS=ON \
-  -DTRIPOSE_BUILD_TESTS=OFF -DTRIPOSE_BUILD_PERF_TESTS=OFF -DTRIPOSE_BUILD_SAMPLES=OFF \
-  -DTRIPOSE_BUILD_BENCHMARKS=OFF -DTRIPOSE_BUILD_EVALUATION=OFF >/dev/null
-nice cmake --build "$build" -j2 --target fuzz_estimate_pose fuzz_problem_reader
+bash scripts/build_sanitizers.sh
 
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

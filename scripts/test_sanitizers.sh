@@ -1,31 +1,16 @@
 #!/usr/bin/env bash
-# Builds the module and its tests with AddressSanitizer + UndefinedBehaviorSanitizer (gcc) in
-# build-asan/ and runs the C++ suite there, in two shards side by side. Fails on any sanitizer
-# report: UB aborts the test (-fno-sanitize-recover), ASan/LSan exit non-zero, and the log is also searched for reports
-# in case a child process swallowed the exit status.
+# Runs the C++ suite under AddressSanitizer + UndefinedBehaviorSanitizer (clang, the instrumented
+# build of scripts/build_sanitizers.sh in build-sanitizers/), in two shards side by side. Fails on
+# any sanitizer report: UB aborts the test (-fno-sanitize-recover), ASan/LSan exit non-zero, and the
+# log is also searched for reports in case a child process swallowed the exit status.
 #
 #   bash scripts/test_sanitizers.sh
-#
-# Only the library and opencv_test_tripose are built (no perf tests, samples, benchmarks or
-# evaluation): the samples' file reader is covered by the fuzzers (scripts/fuzz.sh). OpenCV itself
-# is Debian's uninstrumented build; only tripose's own code is checked.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-build="$root/build-asan"
+build="$root/build-sanitizers"
 
-bash scripts/install_dependencies.sh
-
-# float-cast-overflow: not part of gcc's "undefined" group (it is of clang's); out-of-range
-# double-to-integer conversions are undefined behaviour all the same.
-flags="-fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=undefined,float-cast-overflow"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined,float-cast-overflow" \
-  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined,float-cast-overflow" \
-  -DTRIPOSE_BUILD_TESTS=ON -DTRIPOSE_BUILD_PERF_TESTS=OFF -DTRIPOSE_BUILD_SAMPLES=OFF \
-  -DTRIPOSE_BUILD_BENCHMARKS=OFF -DTRIPOSE_BUILD_EVALUATION=OFF >/dev/null
-nice cmake --build "$build" -j2
+bash scripts/build_sanitizers.sh
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
