@@ -212,8 +212,11 @@ TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
     for (int i = 1; i < n; ++i)
         EXPECT_LE(errors.at<double>(i - 1), errors.at<double>(i));
 
+    // Under TRIPOSE_TEST_SCENE_LIMIT (3 in the reduced suite) the first scenes run for their code
+    // paths only: the order of the medians needs all 100 (on the first 3 the linear one is lower).
+    const int scenes = scenesToRun(100);
     std::vector<double> linear, refined;
-    for (int seed = 0; seed < 100; ++seed)
+    for (int seed = 0; seed < scenes; ++seed)
     {
         const cv::tripose::support::SyntheticScene s = makeScene({ 5, 5 }, cv::tripose::support::MOTION_SMALL, 1.0, 300 + seed);
         for (int method : { (int)cv::tripose::POSE_LINEAR, (int)cv::tripose::POSE_LINEAR_REFINE })
@@ -226,6 +229,8 @@ TEST(Tripose_LinearRefine, refines_and_ranks_the_candidates)
             (method == cv::tripose::POSE_LINEAR ? linear : refined).push_back(error);
         }
     }
+    if (scenes < 100)
+        return;
     std::nth_element(linear.begin(), linear.begin() + 50, linear.end());
     std::nth_element(refined.begin(), refined.begin() + 50, refined.end());
     std::cout << "5P5L small 1 px: median rotation error linear " << linear[50] << " deg, refined " << refined[50]
