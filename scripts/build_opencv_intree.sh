@@ -19,7 +19,7 @@
 # With --run, COMMAND runs after the build while the lock is still held, so that another checkout
 # sharing the cache cannot relink the libraries under the tests.
 # Environment: TRIPOSE_OPENCV_JOBS (default 2), TRIPOSE_OPENCV_NICE (default 15), TRIPOSE_INTREE_PERF
-# (1: build the perf tests too, and everything at -O3 instead of -O1).
+# (1: build the perf tests too, and everything at -O3).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -90,17 +90,22 @@ fi
 # no extra AVX2/AVX-512 copies of the kernels are compiled: the baseline build is enough for tests.
 # No ccache, which OpenCV would use if installed: the build folder is kept between runs, and on a
 # first build a cache only misses, at a cost.
-# -O1: this build is there to compile the module inside OpenCV and run its tests on OpenCV's ts, not
-# to be fast; GCC reorders no floating-point arithmetic without -ffast-math at any level (and the
-# baseline x86-64 target has no fused multiply-add), and -O1 compiles in less time (cv2's bindings 56 -> 33 s of CPU, imgproc's connected components
-# 20 -> 10 s, the module's refinement 51 -> 44 s). The perf tests, built on request, get -O3: their
-# timings are meant to be read (switching rebuilds everything).
-optimization=-O1
-if [ "${TRIPOSE_INTREE_PERF:-0}" = 1 ]; then optimization=-O3; fi
+# This build is there to compile the module inside OpenCV and run its tests on OpenCV's ts, not to
+# be fast. OpenCV's own modules are compiled without optimization (-O0), tripose's library and tests
+# at -O1 (scripts/opencv/tripose_optimization.cmake), so that its suite runs at a useful speed.
+# GCC reorders no floating-point arithmetic without -ffast-math at any level (and the baseline
+# x86-64 target has no fused multiply-add), so the level does not change the results. Compile times
+# are in doc/test_time.md. The perf tests, built on request, get -O3 everywhere: their timings are
+# meant to be read (switching rebuilds everything).
+optimization=-O0
+tripose_optimization=-O1
+if [ "${TRIPOSE_INTREE_PERF:-0}" = 1 ]; then optimization=-O3; tripose_optimization=-O3; fi
 cmake_args=(
   -G Ninja
   -DCMAKE_BUILD_TYPE=Release
   -DCMAKE_CXX_FLAGS_RELEASE="$optimization" -DCMAKE_C_FLAGS_RELEASE="$optimization"
+  -DCMAKE_PROJECT_OpenCV_INCLUDE="$repo/scripts/opencv/tripose_optimization.cmake"
+  -DTRIPOSE_INTREE_OPTIMIZATION="$tripose_optimization"
   -DOPENCV_EXTRA_MODULES_PATH="$repo/modules"
   -DBUILD_LIST="$modules"
   -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON
