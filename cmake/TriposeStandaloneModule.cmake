@@ -66,6 +66,9 @@ function(tripose_add_support_library support_dir)
 endfunction()
 
 function(tripose_link_ts_shim target)
+  if(TRIPOSE_UNITY_TESTS)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+  endif()
   # Tests reach private headers by relative paths ("../src/..."), as they must inside OpenCV.
   target_include_directories(${target} PRIVATE "${TRIPOSE_TS_SHIM_DIR}")
   target_link_libraries(${target} PRIVATE opencv_tripose tripose_support opencv_core opencv_calib3d

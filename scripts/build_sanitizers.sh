@@ -19,6 +19,6 @@ bash scripts/install_dependencies.sh
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DTRIPOSE_BUILD_FUZZERS=ON \
-  -DTRIPOSE_BUILD_TESTS=ON -DTRIPOSE_BUILD_PERF_TESTS=OFF -DTRIPOSE_BUILD_SAMPLES=OFF \
+  -DTRIPOSE_BUILD_TESTS=ON -DTRIPOSE_UNITY_TESTS=ON -DTRIPOSE_BUILD_PERF_TESTS=OFF -DTRIPOSE_BUILD_SAMPLES=OFF \
   -DTRIPOSE_BUILD_BENCHMARKS=OFF -DTRIPOSE_BUILD_EVALUATION=OFF >/dev/null
 nice cmake --build "$build" -j2 --target opencv_test_tripose fuzz_estimate_pose fuzz_problem_reader

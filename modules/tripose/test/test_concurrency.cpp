@@ -33,11 +33,6 @@ Results runAll(const cv::tripose::support::SyntheticScene& s)
     return r;
 }
 
-bool identical(const Mat& a, const Mat& b)
-{
-    return a.size() == b.size() && a.type() == b.type() && (a.empty() || cv::norm(a, b, NORM_INF) == 0);
-}
-
 // Many threads on shared inputs: bit-identical to the single-threaded results (no hidden shared
 // state, no dependence on scheduling), and the robust estimator is reproducible for a fixed seed.
 TEST(Tripose_Concurrency, threads_on_shared_inputs_give_bit_identical_results)

@@ -42,17 +42,17 @@ Mat project(const Views& v, const Mat& R, const Mat& t, const std::vector<Vec3d>
 }
 
 //! Observations of world points and segments (pairs of world points) in the three views.
-struct Problem
+struct DegenerateProblem
 {
     Mat p[3], l[3];
 };
 
-Problem observe(const Views& v, const std::vector<Vec3d>& points, const std::vector<Vec3d>& segmentEnds)
+DegenerateProblem observe(const Views& v, const std::vector<Vec3d>& points, const std::vector<Vec3d>& segmentEnds)
 {
     const Mat I = Mat::eye(3, 3, CV_64F), zero = Mat::zeros(3, 1, CV_64F);
     const Mat* Rs[3] = { &I, &v.R12, &v.R3 };
     const Mat* ts[3] = { &zero, &v.t12, &v.t3 };
-    Problem pr;
+    DegenerateProblem pr;
     for (int k = 0; k < 3; ++k)
     {
         pr.p[k] = points.empty() ? Mat() : project(v, *Rs[k], *ts[k], points);
@@ -69,7 +69,7 @@ struct Solution
     Mat errors;
 };
 
-Solution solve(const Views& v, const Problem& pr, const std::string& what)
+Solution solve(const Views& v, const DegenerateProblem& pr, const std::string& what)
 {
     Solution s;
     Mat R, t;
@@ -87,7 +87,7 @@ Solution solve(const Views& v, const Problem& pr, const std::string& what)
 }
 
 //! Features that do not fix the pose: no candidate at all.
-void expectNoSolution(const Views& v, const Problem& pr, const std::string& what)
+void expectNoSolution(const Views& v, const DegenerateProblem& pr, const std::string& what)
 {
     EXPECT_EQ(solve(v, pr, what).n, 0) << what;
 }
@@ -175,7 +175,7 @@ TEST(Tripose_DegenerateGeometry, identical_observations_in_all_views)
     // Views 2 and 3 see exactly what view 1 sees (no parallax anywhere).
     const Views v = makeViews();
     std::vector<Vec3d> X = { Vec3d(0, 0, 10), Vec3d(1, 0.5, 12), Vec3d(-1, 0.2, 9), Vec3d(0.5, -0.7, 11), Vec3d(-0.4, 0.9, 13) };
-    Problem pr = observe(v, X, {});
+    DegenerateProblem pr = observe(v, X, {});
     pr.p[1] = pr.p[0].clone();
     pr.p[2] = pr.p[0].clone();
     // No pose of view 3 explains this with the known, translated view 2. The system of five points

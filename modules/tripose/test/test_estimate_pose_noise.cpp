@@ -49,12 +49,6 @@ const NoiseReference kReferences[] = {
     { { 10, 10 }, cv::tripose::support::MOTION_SMALL, 2.0, 0.878, 0.0943, 296 },
 };
 
-double median(std::vector<double> v)
-{
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 typedef testing::TestWithParam<NoiseReference> Tripose_LinearNoise;
 
 TEST_P(Tripose_LinearNoise, median_errors_stay_at_the_measured_level)

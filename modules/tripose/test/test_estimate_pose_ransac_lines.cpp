@@ -146,13 +146,6 @@ Mat everyMatchWrong(const Mat& m)
     return estimate;
 }
 
-//! The median of @p values.
-int median(std::vector<int> values)
-{
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-}
-
 // The kind of each sample follows the matches that hold. 100 points and 100 lines, half of each kind
 // wrong, then every match of one kind wrong: once a model has support, the samples are nearly all of
 // the other kind (three points, or three lines), and their number stays near the three-feature bound

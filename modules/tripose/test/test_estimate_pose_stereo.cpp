@@ -57,13 +57,6 @@ bool isExact(const Mat& R, const Mat& t, const SyntheticStereoScene& s)
     return e.rotationDeg < degrees(kExactRadians) && e.relativeTranslation < kExactRelative;
 }
 
-double median(std::vector<double> v)
-{
-    CV_Assert(!v.empty());
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 //! A feature mix of the rig: counts and which time-B views see each feature.
 struct StereoMix
 {

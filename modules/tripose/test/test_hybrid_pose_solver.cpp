@@ -3,6 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_pose_common.hpp"
+#include "test_scene_views.hpp"
 
 #include "../src/opencv/argument_reading.hpp"
 #include "../src/core/linear/linear_pose_solver.hpp"
@@ -31,12 +32,6 @@ cv::tripose::support::SyntheticScene scene(int points, int lines, int motion, do
     params.noiseSigma = 0.0;
     params.seed = seed;
     return cv::tripose::support::generateSyntheticScene(params);
-}
-
-ViewSet readScene(const cv::tripose::support::SyntheticScene& s)
-{
-    return cv::tripose::detail::readThreeViewInput(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
-                                               s.cameraMatrices, noArray(), s.R12, s.t12);
 }
 
 //! A scene read as the estimator reads it, with the hybrid sample solver over its linear solver.

@@ -186,7 +186,7 @@ void expectNoSolution(Solve solve, const char* what)
     EXPECT_TRUE(poses.empty()) << what;
 }
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kNaNCoordinate = std::numeric_limits<double>::quiet_NaN();
 
 TEST(Tripose_MinimalLines, p2p1l_degenerate_configurations_give_no_solution)
 {
@@ -235,7 +235,7 @@ TEST(Tripose_MinimalLines, p2p1l_degenerate_configurations_give_no_solution)
             return solveP2P1L(sameRay, samePoint, line.imageLine, line.world, p);
         }, "coincident points");
         // Non-finite input.
-        const Eigen::Vector3d nanPoints[2] = { p1.world, Eigen::Vector3d::Constant(kNaN) };
+        const Eigen::Vector3d nanPoints[2] = { p1.world, Eigen::Vector3d::Constant(kNaNCoordinate) };
         expectNoSolution([&](std::vector<CameraPose>& p) {
             return solveP2P1L(bearings, nanPoints, line.imageLine, line.world, p);
         }, "NaN point");
@@ -280,7 +280,7 @@ TEST(Tripose_MinimalLines, p1p2l_degenerate_configurations_give_no_solution)
         expectNoSolution(solveWith(throughCentre, parallel), "line through the camera centre");
         // Non-finite input.
         LineObservation nanLine = line;
-        nanLine.world.direction(1) = kNaN;
+        nanLine.world.direction(1) = kNaNCoordinate;
         expectNoSolution(solveWith(nanLine, parallel), "NaN direction");
     }
 }
@@ -315,7 +315,7 @@ TEST(Tripose_MinimalLines, p3l_degenerate_configurations_give_no_solution)
         general[1].imageLine.setZero();
         general[1].world.point = truth.centre();
         expectNoSolution(solveWith(general), "line through the camera centre");
-        general[1].imageLine = Eigen::Vector3d(kNaN, 0, 1);
+        general[1].imageLine = Eigen::Vector3d(kNaNCoordinate, 0, 1);
         expectNoSolution(solveWith(general), "NaN image line");
     }
 }

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "../src/core/minimal/p3p.hpp"
+#include "minimal_instances.hpp"
 
 namespace opencv_test {
 namespace {
@@ -14,28 +15,7 @@ namespace {
 using ::tripose::CameraPose;
 using ::tripose::solveP3P;
 
-Eigen::Vector3d randomVector(RNG& rng, double lo, double hi)
-{
-    // One draw per statement, as C++ leaves the order of arguments unspecified: the last coordinate
-    // first (z before y before x, here and below) is the order the seeded instances were drawn in so
-    // far (GCC's, right to left).
-    const double z = rng.uniform(lo, hi);
-    const double y = rng.uniform(lo, hi);
-    const double x = rng.uniform(lo, hi);
-    return Eigen::Vector3d(x, y, z);
-}
-
-CameraPose randomPose(RNG& rng)
-{
-    const double qz = rng.gaussian(1.0);
-    const double qy = rng.gaussian(1.0);
-    const double qx = rng.gaussian(1.0);
-    const double qw = rng.gaussian(1.0);
-    CameraPose pose;
-    pose.R = Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
-    pose.t = randomVector(rng, -2.0, 2.0);
-    return pose;
-}
+using minimal_instances::randomPose;
 
 //! Three world points in front of @p pose (depths 2..10), with their bearings in its frame.
 void randomInstance(RNG& rng, const CameraPose& pose, Eigen::Vector3d bearings[3], Eigen::Vector3d points[3])

@@ -29,7 +29,7 @@ double refinedRms(const SyntheticScene& s, Mat& R, Mat& t)
                                         s.cameraMatrices, noArray(), s.R12, s.t12, R, t);
 }
 
-struct Regime
+struct OptimumRegime
 {
     const char* name;
     int motion;
@@ -37,11 +37,11 @@ struct Regime
     bool planar;
 };
 
-typedef testing::TestWithParam<Regime> Tripose_MlOptimum;
+typedef testing::TestWithParam<OptimumRegime> Tripose_MlOptimum;
 
 TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
 {
-    const Regime regime = GetParam();
+    const OptimumRegime regime = GetParam();
     const int scenes = scenesToRun(kScenes);
     int ransacReached = 0, linearReached = 0;
     for (int seed = 0; seed < scenes; ++seed)
@@ -83,10 +83,10 @@ TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
 }
 
 INSTANTIATE_TEST_CASE_P(Regimes, Tripose_MlOptimum,
-                        testing::Values(Regime{ "narrow 1 %", cv::tripose::support::MOTION_SMALL, 0.01, false },
-                                        Regime{ "narrow 0.5 %", cv::tripose::support::MOTION_SMALL, 0.005, false },
-                                        Regime{ "planar large", cv::tripose::support::MOTION_LARGE, 0.0, true },
-                                        Regime{ "planar small", cv::tripose::support::MOTION_SMALL, 0.0, true }));
+    testing::Values(OptimumRegime{ "narrow 1 %", cv::tripose::support::MOTION_SMALL, 0.01, false },
+                    OptimumRegime{ "narrow 0.5 %", cv::tripose::support::MOTION_SMALL, 0.005, false },
+                    OptimumRegime{ "planar large", cv::tripose::support::MOTION_LARGE, 0.0, true },
+                    OptimumRegime{ "planar small", cv::tripose::support::MOTION_SMALL, 0.0, true }));
 
 TEST(Tripose_SyntheticRegimes, narrow_baseline_and_planar_structure)
 {

@@ -26,8 +26,8 @@
 #include <Eigen/Geometry>
 
 #include "test_pose_common.hpp"
+#include "test_scene_views.hpp"
 
-#include "../src/opencv/argument_reading.hpp"
 #include "../src/core/linear/linear_pose_solver.hpp"
 #include "../src/core/pipeline/pose_pipelines.hpp"
 #include "../src/core/refine/distinct_minima.hpp"
@@ -54,7 +54,7 @@ in radians times 1.4) are one minimum reached twice, as in the estimators' repor
 the spread of one minimum reached from several starts and the distance of distinct ones). */
 const double kDistinctRotation = 1e-3;
 
-struct Regime
+struct NarrowRegime
 {
     const char* name;
     double baselineFraction;
@@ -63,15 +63,9 @@ struct Regime
     std::vector<int> ciSeeds;
 };
 
-void PrintTo(const Regime& r, std::ostream* os)
+void PrintTo(const NarrowRegime& r, std::ostream* os)
 {
     *os << r.name << " " << r.points << "P+" << r.lines << "L";
-}
-
-ViewSet readScene(const ts::SyntheticScene& s)
-{
-    return cv::tripose::detail::readThreeViewInput(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
-                                                   s.cameraMatrices, noArray(), s.R12, s.t12);
 }
 
 ::tripose::RefineOptions referenceOptions()
@@ -149,11 +143,11 @@ int firstSeed()
     return first ? std::atoi(first) : 0;
 }
 
-typedef testing::TestWithParam<Regime> Tripose_NarrowMinima;
+typedef testing::TestWithParam<NarrowRegime> Tripose_NarrowMinima;
 
 TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
 {
-    Regime regime = GetParam();
+    NarrowRegime regime = GetParam();
     // TRIPOSE_NARROW_MIX="P L" studies another mix of points and lines at the regime's baseline.
     if (const char* mix = std::getenv("TRIPOSE_NARROW_MIX"))
         if (std::sscanf(mix, "%d %d", &regime.points, &regime.lines) != 2)
@@ -288,15 +282,14 @@ TEST_P(Tripose_NarrowMinima, estimators_return_the_lowest_minimum)
 }
 
 INSTANTIATE_TEST_CASE_P(Regimes, Tripose_NarrowMinima,
-                        // Missed before (seeds 0-99): at 1 %, 20 and 80 (linear + refine: a minimum
-                        // below the lowest at 30 iterations, one that drops a line when refined
-                        // further) and 67 (RANSAC); at 0.5 %, 16 (both: a line behind a view), 29
-                        // and 55 (RANSAC: the choice between its two settlings, the starts around
-                        // its pose alone), 44 (linear + refine: no candidate), 61 (both: the lowest
-                        // stopped at 3.2 times the best cost at 30 iterations).
-                        testing::Values(Regime{ "narrow 1 %", 0.01, 4, 4, { 0, 1, 2, 3, 4, 20, 67, 80 } },
-                                        Regime{ "narrow 0.5 %", 0.005, 4, 4, { 0, 1, 2, 3, 4, 16, 29, 44, 55, 61 } },
-                                        Regime{ "narrow 1 %", 0.01, 10, 10, { 0, 1, 2, 3, 4 } }));
+    // Missed before (seeds 0-99): at 1 %, 20 and 80 (linear + refine: a minimum below the lowest at 30
+    // iterations, one that drops a line when refined further) and 67 (RANSAC); at 0.5 %, 16 (both: a
+    // line behind a view), 29 and 55 (RANSAC: the choice between its two settlings, the starts around
+    // its pose alone), 44 (linear + refine: no candidate), 61 (both: the lowest stopped at 3.2 times
+    // the best cost at 30 iterations).
+    testing::Values(NarrowRegime{ "narrow 1 %", 0.01, 4, 4, { 0, 1, 2, 3, 4, 20, 67, 80 } },
+                    NarrowRegime{ "narrow 0.5 %", 0.005, 4, 4, { 0, 1, 2, 3, 4, 16, 29, 44, 55, 61 } },
+                    NarrowRegime{ "narrow 1 %", 0.01, 10, 10, { 0, 1, 2, 3, 4 } }));
 
 /** The report of several minima. Where the reference search finds a second distinct minimum
 clearly within the noise of the lowest (its cost gap below half the bound of

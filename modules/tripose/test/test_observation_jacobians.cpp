@@ -26,7 +26,7 @@ typedef Eigen::Matrix<double, 6, 1> Vector6d; // a left increment (omega, dt) of
 // derivative and a rounding error of about 1e-16 / step relative to the residuals (hundreds of px):
 // a relative agreement of 1e-6 separates a right Jacobian from a wrong one by orders of magnitude.
 const double kStep = 1e-6;
-const double kTolerance = 1e-6;
+const double kRelativeTolerance = 1e-6;
 
 Eigen::Vector3d randomVector(RNG& rng, double scale)
 {
@@ -62,7 +62,7 @@ Eigen::Matrix3d randomRotation(RNG& rng, double maxAngle)
     return Eigen::AngleAxisd(rng.uniform(-maxAngle, maxAngle), axis).toRotationMatrix();
 }
 
-CameraPose randomPose(RNG& rng)
+CameraPose randomSmallPose(RNG& rng)
 {
     CameraPose p;
     p.R = randomRotation(rng, 0.3);
@@ -133,12 +133,12 @@ Scenario makeScenario(RNG& rng, Role role)
 {
     Scenario s;
     s.view.camera = randomIntrinsics(rng);
-    s.estimated = randomPose(rng);
+    s.estimated = randomSmallPose(rng);
     s.view.estimated = role != KnownView;
     if (role == KnownView)
-        s.view.pose = randomPose(rng);
+        s.view.pose = randomSmallPose(rng);
     else if (role == MountedCamera)
-        s.view.pose = randomPose(rng); // the rig offset
+        s.view.pose = randomSmallPose(rng); // the rig offset
     const CameraPose pose = s.view.poseFor(s.estimated);
     // Structure 4-12 m in front of the view; observations a few pixels off the projections.
     const Eigen::Vector3d Xc = randomPointInFront(rng, 4.0, 12.0);
@@ -175,7 +175,7 @@ TEST(Tripose_ResidualJacobians, point_residual_matches_finite_differences)
             ASSERT_TRUE(pointResidual(c, Xc - h * Eigen::Vector3d::Unit(k), observed, minus));
             numeric.col(k) = (plus - minus) / (2 * h);
         }
-        EXPECT_LT(relativeError(J, numeric), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(J, numeric), kRelativeTolerance) << "trial " << trial;
     }
 }
 
@@ -201,7 +201,7 @@ TEST(Tripose_ResidualJacobians, line_residual_matches_finite_differences)
             ASSERT_TRUE(lineResidual(c, moment - h * Eigen::Vector3d::Unit(k), end0, end1, minus));
             numeric.col(k) = (plus - minus) / (2 * h);
         }
-        EXPECT_LT(relativeError(J, numeric), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(J, numeric), kRelativeTolerance) << "trial " << trial;
     }
 }
 
@@ -232,7 +232,7 @@ TEST_P(Tripose_ObservationJacobians, point_matches_finite_differences)
             ASSERT_TRUE(pointObservation(v, s.estimated, s.X - h, s.view.points[0], 0.0, minus));
             numericX.col(k) = (plus - minus) / (2 * kStep);
         }
-        EXPECT_LT(relativeError(dX, numericX), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(dX, numericX), kRelativeTolerance) << "trial " << trial;
 
         if (role == KnownView)
         {
@@ -243,7 +243,7 @@ TEST_P(Tripose_ObservationJacobians, point_matches_finite_differences)
             numericPoseJacobian(s.view, s.estimated, [&](const ViewAtPose& v, const CameraPose& pose, Eigen::Vector2d& r) {
                 return pointObservation(v, pose, s.X, s.view.points[0], 0.0, r);
             });
-        EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(dPose, numericPose), kRelativeTolerance) << "trial " << trial;
     }
 }
 
@@ -275,7 +275,7 @@ TEST_P(Tripose_ObservationJacobians, line_matches_finite_differences)
             ASSERT_TRUE(lineObservation(v, s.estimated, line.plus(-h).plucker(), end0, end1, minus));
             numericLine.col(k) = (plus - minus) / (2 * kStep);
         }
-        EXPECT_LT(relativeError(dLine, numericLine), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(dLine, numericLine), kRelativeTolerance) << "trial " << trial;
 
         if (role == KnownView)
         {
@@ -286,7 +286,7 @@ TEST_P(Tripose_ObservationJacobians, line_matches_finite_differences)
             numericPoseJacobian(s.view, s.estimated, [&](const ViewAtPose& v, const CameraPose& pose, Eigen::Vector2d& r) {
                 return lineObservation(v, pose, L, end0, end1, r);
             });
-        EXPECT_LT(relativeError(dPose, numericPose), kTolerance) << "trial " << trial;
+        EXPECT_LT(relativeError(dPose, numericPose), kRelativeTolerance) << "trial " << trial;
     }
 }
 

@@ -141,6 +141,21 @@ inline int solveScene(const cv::tripose::support::SyntheticScene& s, std::vector
                                           cv::tripose::POSE_LINEAR, Rs, ts);
 }
 
+//! Whether @p a and @p b have the same size, type and elements (a NaN element makes them differ).
+inline bool identical(const Mat& a, const Mat& b)
+{
+    return a.size() == b.size() && a.type() == b.type() && (a.empty() || cv::norm(a, b, NORM_INF) == 0);
+}
+
+//! The upper median of @p values (the middle element of an odd count), which must not be empty.
+template <typename T>
+T median(std::vector<T> values)
+{
+    CV_Assert(!values.empty());
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
 //! How many of a statistical test's @p full scenes to run: all of them, or the first
 //! TRIPOSE_TEST_SCENE_LIMIT when that is set (scripts/test_sanitizers.sh sets it: under the
 //! sanitizers a few scenes take the code paths the many repeat, at a 25th of the speed). Assertions

@@ -37,7 +37,7 @@ const double kChiSquare6At95 = 12.591587243743977;
 const double kNeesVariance = 12.0, kCoverageVariance = 0.95 * 0.05;
 
 //! A noise-free problem of the three-view or stereo-rig functions with its ground truth.
-struct Problem
+struct CovarianceProblem
 {
     bool stereo = false;
     std::vector<Mat> points, lines; //!< Per view: Nx2, Mx4 (NaN rows where a view does not see a feature).
@@ -45,7 +45,7 @@ struct Problem
     Mat R12, t12, R, t;
 };
 
-struct Regime
+struct CovarianceRegime
 {
     const char* name;
     bool stereo;
@@ -56,9 +56,9 @@ struct Regime
     bool meetsTarget;         //!< Whether the study asserts the NEES and coverage targets.
 };
 
-Problem makeProblem(const Regime& regime, int seed)
+CovarianceProblem makeProblem(const CovarianceRegime& regime, int seed)
 {
-    Problem p;
+    CovarianceProblem p;
     p.stereo = regime.stereo;
     if (regime.stereo)
     {
@@ -89,9 +89,9 @@ Problem makeProblem(const Regime& regime, int seed)
 }
 
 //! @p p with Gaussian noise of @p sigma px on every observed coordinate of every view.
-Problem addNoise(const Problem& p, RNG& rng, double sigma = 1.0)
+CovarianceProblem addNoise(const CovarianceProblem& p, RNG& rng, double sigma = 1.0)
 {
-    Problem noisy = p;
+    CovarianceProblem noisy = p;
     for (std::vector<Mat>* observations : { &noisy.points, &noisy.lines })
         for (Mat& m : *observations)
         {
@@ -104,7 +104,7 @@ Problem addNoise(const Problem& p, RNG& rng, double sigma = 1.0)
 }
 
 //! Refines from (R, t) in place; returns the RMS and fills the uncertainty outputs.
-double refine(const Problem& p, Mat& R, Mat& t, OutputArray covariance, OutputArray noiseVariance)
+double refine(const CovarianceProblem& p, Mat& R, Mat& t, OutputArray covariance, OutputArray noiseVariance)
 {
     if (p.stereo)
         return cv::tripose::refinePoseLinePointStereo(
@@ -117,7 +117,7 @@ double refine(const Problem& p, Mat& R, Mat& t, OutputArray covariance, OutputAr
 }
 
 //! The error of (R, t) in the order and sense of the covariance: [d; t - t_true], R = exp([d]x) R_true.
-Vec6d poseErrorVector(const Mat& R, const Mat& t, const Problem& truth)
+Vec6d poseErrorVector(const Mat& R, const Mat& t, const CovarianceProblem& truth)
 {
     // The logarithm of the rotation, accurate at any small angle: cv::Rodrigues returns a zero
     // vector below 1e-5 rad, which would erase the rotation error of the finite differences.
@@ -142,18 +142,18 @@ struct Consistency
 @p draws noise draws of sigma px on each of @p scenes scenes: the estimate is refinement from the
 truth (the maximum-likelihood fit where the cost is near quadratic around it), Sigma the covariance
 it reports times sigma^2. */
-Consistency measureConsistency(const Regime& regime, int scenes, int draws)
+Consistency measureConsistency(const CovarianceRegime& regime, int scenes, int draws)
 {
     Consistency c;
     std::vector<double> nees;
     const double variance = regime.sigma * regime.sigma;
     for (int scene = 0; scene < scenes; ++scene)
     {
-        const Problem p = makeProblem(regime, scene);
+        const CovarianceProblem p = makeProblem(regime, scene);
         RNG rng(77 + scene);
         for (int draw = 0; draw < draws; ++draw)
         {
-            const Problem noisy = addNoise(p, rng, regime.sigma);
+            const CovarianceProblem noisy = addNoise(p, rng, regime.sigma);
             Mat R = p.R.clone(), t = p.t.clone(), covariance, noiseVariance;
             refine(noisy, R, t, covariance, noiseVariance);
             if (covariance.empty())
@@ -207,7 +207,7 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
     // first-order theory applies, it must meet them like the other regimes. A rare 1 px draw there
     // may also end with a line whose structure block is singular to rounding (its eigenvalues
     // spanning 1e20): the refinement then reports no covariance, as documented, and the row counts it.
-    const Regime regimes[] = {
+    const CovarianceRegime regimes[] = {
         { "large", false, ts::MOTION_LARGE, 0.0, 10, 10, 1.0, true },
         { "large", false, ts::MOTION_LARGE, 0.0, 4, 4, 1.0, true },
         { "small", false, ts::MOTION_SMALL, 0.0, 10, 10, 1.0, true },
@@ -227,7 +227,7 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
               << "| regime | features | noise (px) | mean NEES | median NEES | 95 % coverage | mean s^2 / sigma^2 "
                  "| no covariance | targets |\n"
               << "|---|---|---|---|---|---|---|---|---|\n";
-    for (Regime regime : regimes)
+    for (CovarianceRegime regime : regimes)
     {
         if (regime.sigma == 1.0)
             regime.sigma = sigma;
@@ -270,12 +270,12 @@ TEST(Tripose_PoseCovarianceCheck, equals_first_order_error_propagation)
     // differences of the refinement itself, without the normal equations.
     // The narrow regime too: its Monte-Carlo misses at 1 px (the estimate is not linear in the
     // noise there), but its first-order covariance is right.
-    const Regime regimes[] = { { "large", false, ts::MOTION_LARGE, 0.0, 5, 5 },
+    const CovarianceRegime regimes[] = { { "large", false, ts::MOTION_LARGE, 0.0, 5, 5 },
                                { "narrow 1 %", false, ts::MOTION_SMALL, 0.01, 5, 5 },
                                { "stereo", true, 0, 0.0, 5, 5 } };
-    for (const Regime& regime : regimes)
+    for (const CovarianceRegime& regime : regimes)
     {
-        const Problem p = makeProblem(regime, 3);
+        const CovarianceProblem p = makeProblem(regime, 3);
         Mat R = p.R.clone(), t = p.t.clone(), covariance;
         refine(p, R, t, covariance, noArray());
         ASSERT_EQ(covariance.size(), Size(6, 6));
@@ -294,7 +294,7 @@ TEST(Tripose_PoseCovarianceCheck, equals_first_order_error_propagation)
                     Vec6d sides[2];
                     for (int side = 0; side < 2; ++side)
                     {
-                        Problem moved = p;
+                        CovarianceProblem moved = p;
                         Mat& m = kind == 0 ? moved.points[v] : moved.lines[v];
                         m = m.clone();
                         m.ptr<double>()[i] += side == 0 ? h : -h;
@@ -329,9 +329,9 @@ void expectSymmetricPositiveDefinite(const Mat& covariance, const char* what)
 
 TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
 {
-    const Regime regime = { "large", false, ts::MOTION_LARGE, 0.0, 8, 8 };
+    const CovarianceRegime regime = { "large", false, ts::MOTION_LARGE, 0.0, 8, 8 };
     RNG rng(5);
-    const Problem p = addNoise(makeProblem(regime, 1), rng);
+    const CovarianceProblem p = addNoise(makeProblem(regime, 1), rng);
     const std::vector<Mat>& x = p.points;
     const std::vector<Mat>& l = p.lines;
 
@@ -395,8 +395,8 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
     EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
 
     // The stereo rig's functions.
-    const Regime rig = { "stereo", true, 0, 0.0, 8, 8 };
-    const Problem s = addNoise(makeProblem(rig, 2), rng);
+    const CovarianceRegime rig = { "stereo", true, 0, 0.0, 8, 8 };
+    const CovarianceProblem s = addNoise(makeProblem(rig, 2), rng);
     Mat Rs0 = s.R.clone(), ts0 = s.t.clone(), rigReference;
     refine(s, Rs0, ts0, rigReference, noArray());
     expectSymmetricPositiveDefinite(rigReference, "refinePoseLinePointStereo");
@@ -415,8 +415,8 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
 
 TEST(Tripose_PoseCovarianceCheck, undetermined_pose_gives_no_covariance)
 {
-    const Regime regime = { "large", false, ts::MOTION_LARGE, 0.0, 4, 0 };
-    const Problem p = makeProblem(regime, 4);
+    const CovarianceRegime regime = { "large", false, ts::MOTION_LARGE, 0.0, 4, 0 };
+    const CovarianceProblem p = makeProblem(regime, 4);
     const ::tripose::ViewSet views = cv::tripose::detail::readThreeViewInput(
         p.points[0], p.points[1], p.points[2], p.lines[0], p.lines[1], p.lines[2], p.K, noArray(), p.R12, p.t12, 3);
     ::tripose::CameraPose pose;

@@ -94,7 +94,7 @@ TEST(Tripose_PoseError, shapes_and_types_of_either_pose_do_not_matter)
                 reference.relativeTranslation, 1e-15);
 }
 
-void expectNamed(const std::function<void()>& call, const std::string& argument)
+void expectArgumentNamed(const std::function<void()>& call, const std::string& argument)
 {
     try
     {
@@ -114,12 +114,12 @@ TEST(Tripose_PoseError, bad_input_throws_naming_the_argument)
     nanT.at<double>(1) = std::numeric_limits<double>::quiet_NaN();
     Mat infR = R.clone();
     infR.at<double>(2, 2) = std::numeric_limits<double>::infinity();
-    expectNamed([&] { poseError(Mat::eye(2, 2, CV_64F), t, R, t); }, "R");
-    expectNamed([&] { poseError(R, Mat::ones(4, 1, CV_64F), R, t); }, "t");
-    expectNamed([&] { poseError(R, t, Mat::eye(3, 3, CV_32S), t); }, "Rref");
-    expectNamed([&] { poseError(R, t, R, nanT); }, "tref");
-    expectNamed([&] { poseError(infR, t, R, t); }, "R");
-    expectNamed([&] { poseError(Mat(), t, R, t); }, "R");
+    expectArgumentNamed([&] { poseError(Mat::eye(2, 2, CV_64F), t, R, t); }, "R");
+    expectArgumentNamed([&] { poseError(R, Mat::ones(4, 1, CV_64F), R, t); }, "t");
+    expectArgumentNamed([&] { poseError(R, t, Mat::eye(3, 3, CV_32S), t); }, "Rref");
+    expectArgumentNamed([&] { poseError(R, t, R, nanT); }, "tref");
+    expectArgumentNamed([&] { poseError(infR, t, R, t); }, "R");
+    expectArgumentNamed([&] { poseError(Mat(), t, R, t); }, "R");
 }
 
 }} // namespace opencv_test::namespace

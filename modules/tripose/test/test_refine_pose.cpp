@@ -29,13 +29,6 @@ void appendErrors(const Mat& R, const Mat& t, const Mat& Rref, const Mat& tref, 
     translation.push_back(e.relativeTranslation);
 }
 
-double median(std::vector<double> v)
-{
-    CV_Assert(!v.empty());
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 double refineScene(const SyntheticScene& s, Mat& R, Mat& t, const RefineParams& params = RefineParams(),
                    OutputArray points3d = noArray(), OutputArray lines3d = noArray())
 {

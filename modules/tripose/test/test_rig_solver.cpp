@@ -36,7 +36,7 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 //! A success: rotation within 1e-6 rad and translation within 1e-6 of its length.
-const double kTolerance = 1e-6;
+const double kExactTolerance = 1e-6;
 
 enum Kind
 {
@@ -151,7 +151,7 @@ Error2 poseErrorOf(const CameraPose& truth, const CameraPose& pose)
 bool isTruePose(const CameraPose& truth, const CameraPose& pose)
 {
     const Error2 e = poseErrorOf(truth, pose);
-    return e.rotation < kTolerance && e.translation < kTolerance;
+    return e.rotation < kExactTolerance && e.translation < kExactTolerance;
 }
 
 std::vector<FeatureSpec> repeat(const FeatureSpec& f, int n)
@@ -306,8 +306,8 @@ TEST(Tripose_RigSolver, translation_units_do_not_matter)
     scaled.set.views[kRigView4].pose.t *= 1000;
     std::vector<CameraPose> poses;
     ASSERT_EQ(rigPoseCandidates(scaled.set, poses), 1);
-    EXPECT_LT(poseErrorOf(scene.truth, poses[0]).rotation, kTolerance);
-    EXPECT_LT((poses[0].t / 1000 - scene.truth.t).norm() / scene.truth.t.norm(), kTolerance);
+    EXPECT_LT(poseErrorOf(scene.truth, poses[0]).rotation, kExactTolerance);
+    EXPECT_LT((poses[0].t / 1000 - scene.truth.t).norm() / scene.truth.t.norm(), kExactTolerance);
 }
 
 TEST(Tripose_RigSolver, features_that_do_not_fix_the_pose_give_no_candidate)

@@ -3,10 +3,10 @@
 // of this distribution and at http://opencv.org/license.html.
 
 #include "test_pose_common.hpp"
+#include "test_scene_views.hpp"
 
 #include <cmath>
 
-#include "../src/opencv/argument_reading.hpp"
 #include "../src/core/linear/linear_pose_solver.hpp"
 #include "../src/core/pipeline/pose_pipelines.hpp"
 #include "../src/core/robust/robust_estimator.hpp"
@@ -21,12 +21,6 @@ using ::tripose::PoseScore;
 using ::tripose::PoseScorer;
 using ::tripose::SequentialTest;
 using ::tripose::ViewSet;
-
-ViewSet readScene(const cv::tripose::support::SyntheticScene& s)
-{
-    return cv::tripose::detail::readThreeViewInput(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
-                                                   s.cameraMatrices, noArray(), s.R12, s.t12);
-}
 
 //! Observations of one kind until the test rejects, all consistent or all not; -1 if it never does.
 int observationsToReject(const SequentialTest& test, int kind, bool consistent, int limit = 1000)

@@ -67,11 +67,6 @@ double maxReprojectionError(const SyntheticScene& s)
     return worst;
 }
 
-bool identical(const Mat& a, const Mat& b)
-{
-    return a.size() == b.size() && a.type() == b.type() && (a.empty() || cv::norm(a, b, NORM_INF) == 0);
-}
-
 bool identicalScenes(const SyntheticScene& a, const SyntheticScene& b)
 {
     bool same = identical(a.points1, b.points1) && identical(a.points2, b.points2) && identical(a.points3, b.points3) &&

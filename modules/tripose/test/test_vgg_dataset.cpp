@@ -81,13 +81,6 @@ int countSeenInAll(const std::vector<std::vector<std::string>>& nview, const int
     return count;
 }
 
-double median(std::vector<double> v)
-{
-    CV_Assert(!v.empty());
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 //! Reprojection of the triplet's 3D structure with its decomposed cameras.
 struct Reprojection
 {
