@@ -19,7 +19,8 @@
 # With --run, COMMAND runs after the build while the lock is still held, so that another checkout
 # sharing the cache cannot relink the libraries under the tests.
 # Environment: TRIPOSE_OPENCV_JOBS (default 2), TRIPOSE_OPENCV_NICE (default 15), TRIPOSE_INTREE_PERF
-# (1: build the perf tests too, and everything at -O3).
+# (1: build the perf tests too, and everything at -O3), TRIPOSE_INTREE_CPP_TESTS (0: neither ts nor
+# the modules only it needs, nor opencv_test_tripose: the module and cv2 alone, for the Python tests).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -79,11 +80,13 @@ t_unpacked=$(seconds)
 #    python_tests (no code) writes opencv_python_tests.cfg, from which OpenCV's Python test runner
 #    finds modules/tripose/misc/python/test. BUILD_LIST expands to the required dependencies by
 #    itself; they are listed for the reader.
+cpp_tests=${TRIPOSE_INTREE_CPP_TESTS:-1}
 if [ -d "$opencv_src/modules/calib3d" ]; then
-  modules=core,imgproc,calib3d,features2d,flann,ts,imgcodecs,videoio,highgui,python3,python_tests,tripose
+  modules=core,imgproc,calib3d,features2d,flann,python3,python_tests,tripose
 else
-  modules=core,imgproc,geometry,flann,ts,imgcodecs,videoio,highgui,python3,python_tests,tripose
+  modules=core,imgproc,geometry,flann,python3,python_tests,tripose
 fi
+if [ "$cpp_tests" = 1 ]; then modules+=,ts,imgcodecs,videoio,highgui; fi
 
 # Everything not needed is off: no media, GUI, codecs, accelerators, and no downloads at configure
 # time (IPP, ADE, ...: only the package registries are reachable). CPU_DISPATCH is emptied so that
@@ -139,7 +142,9 @@ if ! nice -n "$niceness" cmake -S "$opencv_src" -B "$bld" "${cmake_args[@]}" > "
 fi
 # A module that OpenCV silently disabled (missing Eigen, a dependency it could not resolve) would
 # only show up later as a missing target: say it now.
-for m in tripose python3 ts; do
+required=(tripose python3)
+if [ "$cpp_tests" = 1 ]; then required+=(ts); fi
+for m in "${required[@]}"; do
   if ! grep -q "To be built:.* $m\b" "$bld/configure.log"; then
     grep -E "To be built|Disabled|Unavailable" "$bld/configure.log" >&2 || true
     log "module $m is not built in this configuration; see $bld/configure.log"
@@ -150,7 +155,8 @@ t_configured=$(seconds)
 
 # The perf tests are compiled by the standalone build already (the same sources on the ts shim);
 # here they are built only on request (TRIPOSE_INTREE_PERF=1), to run them on OpenCV's own ts.
-targets=(opencv_test_tripose opencv_python3)
+targets=(opencv_python3)
+if [ "$cpp_tests" = 1 ]; then targets+=(opencv_test_tripose); fi
 if [ "${TRIPOSE_INTREE_PERF:-0}" = 1 ]; then targets+=(opencv_perf_tripose); fi
 log "building ${targets[*]} (-j$jobs, nice $niceness)"
 nice -n "$niceness" cmake --build "$bld" -j "$jobs" --target "${targets[@]}"
