@@ -41,7 +41,7 @@ function(tripose_add_module_targets)
   if(TRIPOSE_BUILD_TESTS)
     file(GLOB test_sources CONFIGURE_DEPENDS "${module_dir}/test/*.cpp")
     add_executable(opencv_test_tripose ${test_sources})
-    tripose_link_ts_shim(opencv_test_tripose)
+    tripose_add_test_target(opencv_test_tripose)
     add_test(NAME opencv_test_tripose COMMAND opencv_test_tripose)
     set_tests_properties(opencv_test_tripose PROPERTIES
       ENVIRONMENT "OPENCV_TEST_DATA_PATH=${PROJECT_SOURCE_DIR}/test/data")
@@ -50,7 +50,7 @@ function(tripose_add_module_targets)
   if(TRIPOSE_BUILD_PERF_TESTS)
     file(GLOB perf_sources CONFIGURE_DEPENDS "${module_dir}/perf/*.cpp")
     add_executable(opencv_perf_tripose ${perf_sources})
-    tripose_link_ts_shim(opencv_perf_tripose)
+    tripose_add_test_target(opencv_perf_tripose)
   endif()
 endfunction()
 
@@ -65,10 +65,16 @@ function(tripose_add_support_library support_dir)
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
 endfunction()
 
-function(tripose_link_ts_shim target)
+# The accuracy and perf tests: the ts shim, the module, its support library and, with
+# TRIPOSE_UNITY_TESTS, their files compiled eight to a batch.
+function(tripose_add_test_target target)
   if(TRIPOSE_UNITY_TESTS)
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   endif()
+  tripose_link_ts_shim(${target})
+endfunction()
+
+function(tripose_link_ts_shim target)
   # Tests reach private headers by relative paths ("../src/..."), as they must inside OpenCV.
   target_include_directories(${target} PRIVATE "${TRIPOSE_TS_SHIM_DIR}")
   target_link_libraries(${target} PRIVATE opencv_tripose tripose_support opencv_core opencv_calib3d
