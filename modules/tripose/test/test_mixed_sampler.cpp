@@ -5,6 +5,7 @@
 #include "test_precomp.hpp"
 
 #include <cmath>
+#include <set>
 
 #include "../src/core/robust/mixed_sampler.hpp"
 
@@ -94,8 +95,10 @@ TEST(Tripose_MixedSampler, samples_are_distinct_pool_features_of_one_kind)
             }
         }
     }
-    for (int count : sampler.samplesOfKind())
-        EXPECT_GT(count, 400) << "2000 draws of four kinds, uniform while no model has inliers";
+    // Uniform while no model has inliers, until the 120 P3P samples (C(10, 3)) are all drawn, once each.
+    EXPECT_EQ(120, sampler.samplesOfKind()[0]);
+    for (int k = 1; k < 4; ++k)
+        EXPECT_GT(sampler.samplesOfKind()[k], 500) << "2000 draws of four kinds";
 }
 
 // The kinds follow the inlier ratios, but for a tenth of the samples chosen uniformly: no point
@@ -115,8 +118,10 @@ TEST(Tripose_MixedSampler, kinds_follow_the_inlier_ratios)
     for (int k = 0; k < 3; ++k)
         EXPECT_LT(linesOnly.samplesOfKind()[k], 50);
 
-    MixedSampler pointsFirst(sampling, 5);
-    pointsFirst.setInliers(firstOfPools(sampling, 10, 10), noSample);
+    // Forty points (C(40, 3) = 9880 P3P samples, more than are drawn here).
+    const MixedSampling morePoints = threeFeatureKinds(40, 100);
+    MixedSampler pointsFirst(morePoints, 5);
+    pointsFirst.setInliers(firstOfPools(morePoints, 40, 10), noSample);
     for (int draw = 0; draw < 1000; ++draw)
         ASSERT_TRUE(pointsFirst.next(sample));
     // Success probabilities 1, 0.1, 0.0091, 0.00073: P3P about 84 % of the samples, P3L 2.6 %.
@@ -149,8 +154,10 @@ TEST(Tripose_MixedSampler, the_model_s_own_sample_is_no_support)
     for (int draw = 0; draw < 400; ++draw)
         ASSERT_TRUE(sampler.next(sample));
     EXPECT_FALSE(sampler.confident(0.999));
-    for (int count : sampler.samplesOfKind())
-        EXPECT_GT(count, 50) << "no support beyond the sample: every kind alike";
+    // No support beyond the sample: every kind alike (the single P3P sample of three points drawn once).
+    EXPECT_EQ(1, sampler.samplesOfKind()[0]);
+    for (int k = 1; k < 4; ++k)
+        EXPECT_GT(sampler.samplesOfKind()[k], 80);
 
     // The same three points as inliers of a model from three lines are support.
     FeatureSubset lines = firstOfPools(sampling, 0, 3);
@@ -186,16 +193,24 @@ TEST(Tripose_MixedSampler, stops_at_the_requested_confidence)
     EXPECT_TRUE(clean.confident(0.999));
 }
 
+//! Draws needed to cover, at 0.999, a kind of @p samples distinct samples drawn without replacement.
+long drawsToCover(long samples)
+{
+    return (long)std::ceil(0.999 * samples);
+}
+
 // Where the best model's support lies in no pool a kind draws from (only its own sample's features
 // are there), its inlier counts cannot stop the search; it stops once every kind has been drawn so
 // often that any one of its samples would have been drawn with the confidence.
 TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
 {
+    // Few distinct samples: drawn without replacement, covered once a share 0.999 of them is drawn
+    // (drawn with replacement it took samplesForConfidence(1.0 / 120) = 826 draws).
     const MixedSampling points = pointKind(3, 10);
     const FeatureSubset own = firstOfPools(points, 3, 0);
     MixedSampler sampler(points, 4);
     sampler.setInliers(own, own);
-    EXPECT_EQ(samplesForConfidence(1.0 / 120), drawsUntilConfident(sampler)) << "C(10, 3) = 120 samples";
+    EXPECT_EQ(drawsToCover(120), drawsUntilConfident(sampler)) << "C(10, 3) = 120 samples";
 
     // Two kinds: both must be covered, P2P1L's 450 samples (C(10, 2) x 10) as well as P3P's 120.
     MixedSampling two = points;
@@ -205,9 +220,25 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     MixedSampler both(two, 4);
     both.setInliers(own, own);
     ASSERT_GT(drawsUntilConfident(both), 0);
-    EXPECT_GE(both.samplesOfKind()[0], samplesForConfidence(1.0 / 120));
-    EXPECT_EQ(samplesForConfidence(1.0 / 450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
-    EXPECT_FALSE(both.covered(0.9999));
+    EXPECT_GE(both.samplesOfKind()[0], drawsToCover(120));
+    EXPECT_LE(both.samplesOfKind()[0], 120) << "no P3P sample drawn twice";
+    EXPECT_EQ(drawsToCover(450), both.samplesOfKind()[1]) << "the last kind to be covered ends the search";
+    EXPECT_TRUE(both.covered(0.9999)) << "all samples of both kinds drawn";
+
+    // Many distinct samples (C(40, 3) = 9880 P3P and C(40, 2) x 40 = 31200 P2P1L): the P2P1L kind is
+    // drawn with replacement and covered by the probability of missing a sample.
+    MixedSampling many = pointKind(3, 40);
+    many.kinds.push_back(MixedSampling::Kind{ 2, 1, 1.0, 0 });
+    for (int i = 0; i < 40; ++i)
+        many.pools[0].lines.push_back(i);
+    MixedSampler large(many, 4);
+    large.setInliers(firstOfPools(many, 3, 0), firstOfPools(many, 3, 0));
+    FeatureSubset sample;
+    for (int draw = 0; draw < 25000; ++draw)
+        ASSERT_TRUE(large.next(sample));
+    EXPECT_EQ(9880, large.samplesOfKind()[0]) << "every P3P sample drawn, none twice";
+    EXPECT_EQ(25000 - 9880, large.samplesOfKind()[1]);
+    EXPECT_FALSE(large.covered(0.999));
 
     // A kind with a single sample (three points of a pool of three) is covered once it is drawn.
     const MixedSampling three = pointKind(3, 3);
@@ -216,6 +247,39 @@ TEST(Tripose_MixedSampler, stops_once_every_kind_is_covered)
     once.setInliers(all, all);
     EXPECT_FALSE(once.confident(0.999));
     EXPECT_EQ(1, drawsUntilConfident(once));
+}
+
+// A kind of few samples is drawn without replacement: every sample once, each one of the kind's
+// distinct feature sets, and then the kind is not drawn again.
+TEST(Tripose_MixedSampler, few_samples_are_each_drawn_once)
+{
+    MixedSampling sampling;
+    sampling.kinds.push_back(MixedSampling::Kind{ 1, 2, 1.0, 0 });
+    sampling.pools.resize(1);
+    for (int i = 0; i < 6; ++i)
+        sampling.pools[0].points.push_back(5 * i);
+    for (int i = 0; i < 7; ++i)
+        sampling.pools[0].lines.push_back(5 * i + 2);
+    MixedSampler sampler(sampling, 11);
+    std::set<std::vector<int>> seen;
+    FeatureSubset sample;
+    const int distinct = 6 * 21; // C(6, 1) x C(7, 2)
+    for (int draw = 0; draw < distinct; ++draw)
+    {
+        ASSERT_TRUE(sampler.next(sample));
+        ASSERT_EQ(1u, sample.points.size());
+        ASSERT_EQ(2u, sample.lines.size());
+        ASSERT_EQ(0, sample.points[0] % 5);
+        ASSERT_NE(sample.lines[0], sample.lines[1]);
+        for (int line : sample.lines)
+            ASSERT_EQ(2, line % 5);
+        std::vector<int> key = { sample.points[0], std::min(sample.lines[0], sample.lines[1]),
+                                 std::max(sample.lines[0], sample.lines[1]) };
+        EXPECT_TRUE(seen.insert(key).second) << "drawn twice at draw " << draw;
+    }
+    EXPECT_EQ((size_t)distinct, seen.size());
+    EXPECT_TRUE(sampler.covered(0.999999));
+    EXPECT_FALSE(sampler.next(sample)) << "nothing left to draw";
 }
 
 TEST(Tripose_MixedSampler, same_seed_same_samples)

@@ -15,6 +15,36 @@ namespace {
 // The share of the samples whose kind is chosen uniformly (MixedSampler's description says why).
 constexpr double kExplorationShare = 0.1;
 
+// Kinds with at most this many distinct samples are drawn without replacement: the estimators'
+// default iteration limit, so that such a kind can be drawn to the end within it (drawn with
+// replacement, a kind of more than about 1450 samples is never covered within 10000 draws).
+constexpr double kMaxEnumeratedSamples = 10000;
+
+//! Number of combinations of @p count items of @p size.
+double combinations(int size, int count)
+{
+    double c = 1;
+    for (int j = 0; j < count; ++j)
+        c = c * (size - j) / (j + 1);
+    return size >= count ? c : 0.0;
+}
+
+/** The combination of @p count positions among @p size with rank @p index (0 <= index <
+C(size, count)) in the combinatorial number system: positions c_count > ... > c_1 with
+index = sum C(c_j, j); appended to @p out as pool[c_j]. */
+void appendCombination(long index, int size, int count, const std::vector<int>& pool, std::vector<int>& out)
+{
+    for (int j = count; j >= 1; --j)
+    {
+        int c = j == 1 ? (int)index : j - 1; // C(c, 1) = c
+        while (j > 1 && c + 1 < size && combinations(c + 1, j) <= (double)index)
+            ++c;
+        index -= (long)combinations(c, j);
+        out.push_back(pool[c]);
+        size = c;
+    }
+}
+
 //! Probability that @p count draws without replacement from @p size items, @p good of them good,
 //! are all good.
 double allGood(int good, int size, int count)
@@ -47,14 +77,21 @@ MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
         pools_[k].hasPoint = membership(sampling.pools[k].points);
         pools_[k].hasLine = membership(sampling.pools[k].lines);
     }
-    logMissOne_.resize(sampling.kinds.size());
-    for (size_t k = 0; k < sampling.kinds.size(); ++k)
+    const size_t kinds = sampling.kinds.size();
+    logMissOne_.resize(kinds);
+    distinct_.resize(kinds);
+    enumerated_.resize(kinds);
+    unseen_.resize(kinds);
+    for (size_t k = 0; k < kinds; ++k)
     {
         const MixedSampling::Kind& kind = sampling.kinds[k];
         const MixedSampling::Pool& pool = sampling.pools[kind.pool];
         // The probability of drawing one given sample of this kind is 1 / (number of its samples).
         logMissOne_[k] = std::log1p(-allGood(kind.points, (int)pool.points.size(), kind.points) *
                                     allGood(kind.lines, (int)pool.lines.size(), kind.lines));
+        distinct_[k] = combinations((int)pool.points.size(), kind.points) *
+                       combinations((int)pool.lines.size(), kind.lines);
+        enumerated_[k] = distinct_[k] >= 1 && distinct_[k] <= kMaxEnumeratedSamples;
     }
 }
 
@@ -105,6 +142,11 @@ bool MixedSampler::canDraw(int k) const
     return kind.points <= (int)pool.points.size() && kind.lines <= (int)pool.lines.size();
 }
 
+bool MixedSampler::available(int k) const
+{
+    return canDraw(k) && !(enumerated_[k] && drawn_[k] >= distinct_[k]);
+}
+
 int MixedSampler::chooseKind()
 {
     const int kinds = (int)sampling_.kinds.size();
@@ -114,7 +156,7 @@ int MixedSampler::chooseKind()
     {
         weights_[k] = choiceWeight(k) / sampling_.kinds[k].cost;
         supported += weights_[k];
-        drawable += canDraw(k);
+        drawable += available(k);
     }
     if (drawable == 0)
         return -1;
@@ -122,7 +164,7 @@ int MixedSampler::chooseKind()
     // support beyond its sample) and its share of the choice weights.
     const double uniform = supported > 0 ? kExplorationShare : 1.0;
     for (int k = 0; k < kinds; ++k)
-        weights_[k] = canDraw(k) ? uniform / drawable + (1 - uniform) * (supported > 0 ? weights_[k] / supported : 0.0)
+        weights_[k] = available(k) ? uniform / drawable + (1 - uniform) * (supported > 0 ? weights_[k] / supported : 0.0)
                                  : 0.0;
     // 32 random bits in [0, 1): the weights sum to 1.
     const double u = rng_.next() / 4294967296.0;
@@ -153,14 +195,42 @@ void MixedSampler::drawDistinct(const std::vector<int>& pool, int count, std::ve
     }
 }
 
+void MixedSampler::drawUnseen(int k, FeatureSubset& sample)
+{
+    const MixedSampling::Kind& kind = sampling_.kinds[k];
+    const MixedSampling::Pool& pool = sampling_.pools[kind.pool];
+    std::vector<int>& unseen = unseen_[k];
+    if (drawn_[k] == 0)
+    {
+        unseen.resize((size_t)distinct_[k]);
+        for (size_t i = 0; i < unseen.size(); ++i)
+            unseen[i] = (int)i;
+    }
+    // One of the samples not drawn yet, uniformly; the last takes its place.
+    const int at = rng_.uniform(0, (int)unseen.size());
+    const int index = unseen[at];
+    unseen[at] = unseen.back();
+    unseen.pop_back();
+    const long lineCombinations = (long)combinations((int)pool.lines.size(), kind.lines);
+    sample.points.clear();
+    sample.lines.clear();
+    appendCombination(index / lineCombinations, (int)pool.points.size(), kind.points, pool.points, sample.points);
+    appendCombination(index % lineCombinations, (int)pool.lines.size(), kind.lines, pool.lines, sample.lines);
+}
+
 bool MixedSampler::next(FeatureSubset& sample)
 {
     const int k = chooseKind();
     if (k < 0)
         return false;
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    drawDistinct(sampling_.pools[kind.pool].points, kind.points, sample.points);
-    drawDistinct(sampling_.pools[kind.pool].lines, kind.lines, sample.lines);
+    if (enumerated_[k])
+        drawUnseen(k, sample);
+    else
+    {
+        drawDistinct(sampling_.pools[kind.pool].points, kind.points, sample.points);
+        drawDistinct(sampling_.pools[kind.pool].lines, kind.lines, sample.lines);
+    }
     ++drawn_[k];
     return true;
 }
@@ -196,6 +266,14 @@ bool MixedSampler::coveredTo(double logMissed) const
         if (!canDraw((int)k))
             continue;
         drawable = true;
+        if (enumerated_[k])
+        {
+            // Drawn without replacement: a given sample is missed with probability 1 - drawn / N
+            // (log1p(-1) = -inf once all are drawn).
+            if (!(std::log1p(-std::min(1.0, drawn_[k] / distinct_[k])) <= logMissed))
+                return false;
+            continue;
+        }
         // A kind with a single sample is covered once drawn (log1p(-1) = -inf; not drawn: NaN, false).
         if (!(drawn_[k] * logMissOne_[k] <= logMissed))
             return false;

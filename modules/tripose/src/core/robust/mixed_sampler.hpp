@@ -32,6 +32,11 @@ where the best model has no support beyond its sample in any pool the kinds draw
 lies in features no kind draws), where the rule above would draw to the iteration limit; small
 pools are covered after a few hundred samples per kind, large ones never before the limit.
 
+A kind with few distinct samples (at most kMaxEnumeratedSamples) is drawn without replacement: each of
+its samples at most once, in random order, so that it is covered once a share `confidence` of them
+has been drawn (C(10, 3) = 120 P3P samples for a pool of ten points, where drawing with replacement
+needs about 830 to cover them at 0.999) and is not drawn again once all have been.
+
 A kind is chosen per sample with probability proportional to the same all-inlier probability with
 the model's own sample left out of the counts and the pools, so that where lines are the reliable
 matches the samples are mostly lines, and a wrong model's own sample does not steer the choice to
@@ -69,7 +74,12 @@ private:
     double successProbability(int k) const;
     //! The same without the best model's own sample (the choice of a kind).
     double choiceWeight(int k) const;
+    //! The pools hold enough features for a sample of kind @p k.
     bool canDraw(int k) const;
+    //! canDraw(), and a kind drawn without replacement has samples left.
+    bool available(int k) const;
+    //! Draws a sample of a kind drawn without replacement (enumerated_[k]).
+    void drawUnseen(int k, FeatureSubset& sample);
     //! covered() with log(1 - confidence) given: confident() asks once per sample.
     bool coveredTo(double logMissed) const;
     int chooseKind();
@@ -97,6 +107,13 @@ private:
     //! Per kind, log(1 - 1 / its number of distinct samples): the log of the probability that a
     //! draw misses one given sample (covered()).
     std::vector<double> logMissOne_;
+    //! Per kind: its number of distinct samples, and whether it is drawn without replacement.
+    std::vector<double> distinct_;
+    std::vector<unsigned char> enumerated_;
+    //! Per kind drawn without replacement, the indices of its samples not drawn yet (filled at its
+    //! first draw; a sample's index numbers its point combination times the number of line
+    //! combinations plus its line combination).
+    std::vector<std::vector<int>> unseen_;
 };
 
 } // namespace tripose
