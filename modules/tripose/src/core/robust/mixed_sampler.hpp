@@ -32,10 +32,13 @@ where the best model has no support beyond its sample in any pool the kinds draw
 lies in features no kind draws), where the rule above would draw to the iteration limit; small
 pools are covered after a few hundred samples per kind, large ones never before the limit.
 
-A kind with few distinct samples (at most kMaxEnumeratedSamples) is drawn without replacement: each of
-its samples at most once, in random order, so that it is covered once a share `confidence` of them
-has been drawn (C(10, 3) = 120 P3P samples for a pool of ten points, where drawing with replacement
-needs about 830 to cover them at 0.999) and is not drawn again once all have been.
+A kind with few distinct samples (at most 10000, the default iteration limit) is drawn without
+replacement, as SampleGenerator draws the linear samples of small sets: each of its samples at most
+once, in random order, so that it is covered once a share `confidence` of them has been drawn
+(C(10, 3) = 120 P3P samples for a pool of ten points, where drawing with replacement needs about
+830 to cover them at 0.999) and is not drawn again once all have been. A kind's samples are the
+products of a point and a line combination, so they are numbered and decoded when drawn rather
+than listed in advance.
 
 A kind is chosen per sample with probability proportional to the same all-inlier probability with
 the model's own sample left out of the counts and the pools, so that where lines are the reliable
