@@ -84,6 +84,9 @@ public:
     /** True when refine() also searches other starts than the given pose (several basins), so that
     two calls on the same features from different poses may end in different minima. */
     virtual bool searchesOtherStarts() const { return false; }
+    /** True when refine() searches the basin of sets of any size (a narrow known pair), so that the
+    estimator's samples need only find the inliers, not the basin. */
+    virtual bool searchesBasinOfLargeSets() const { return false; }
 };
 
 } // namespace tripose

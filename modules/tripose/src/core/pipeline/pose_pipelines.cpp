@@ -104,7 +104,8 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     // costs one refinement, stays.
     const bool severalBasins =
         solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
-    const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth());
+    const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth(),
+                                    severalBasins && knownPairIsNarrow(views, scorer));
     estimate.minima.clear();
     if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
     {

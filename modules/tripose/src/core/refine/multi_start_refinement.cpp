@@ -230,4 +230,16 @@ LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& sta
     return best;
 }
 
+LocalMinimum searchFromStarts(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
+                              const std::vector<int>* pointIndices, const std::vector<int>* lineIndices,
+                              std::vector<LocalMinimum>* minima)
+{
+    std::vector<LocalMinimum> reached;
+    refineFromStarts(set, starts, params, pointIndices, lineIndices, &reached);
+    const LocalMinimum best = settleMinima(set, reached, params, pointIndices, lineIndices);
+    if (minima)
+        minima->insert(minima->end(), reached.begin(), reached.end());
+    return best;
+}
+
 } // namespace tripose

@@ -48,12 +48,23 @@ their errors as they are (doc/accuracy.md has the figures). */
 constexpr double kModerateTriangulationAngleDeg = 15.0;
 constexpr double kNoisyPlanarThickness = 0.35;
 
+//! True where the known pair's rays meet at a weak angle (kWeakTriangulationAngleDeg: a narrow baseline).
+inline bool knownPairIsNarrow(double medianAngleDeg)
+{
+    return medianAngleDeg < kWeakTriangulationAngleDeg;
+}
+
+inline bool knownPairIsNarrow(const ViewSet& set, const PoseScorer& scorer)
+{
+    return knownPairIsNarrow(medianTriangulationAngleDeg(set, scorer));
+}
+
 //! True for the regimes of the structure with several basins: a weak triangulation angle or planar
 //! structure.
 inline bool structureHasSeveralBasins(const ViewSet& set, const PoseScorer& scorer)
 {
     const double angle = medianTriangulationAngleDeg(set, scorer);
-    if (angle < kWeakTriangulationAngleDeg)
+    if (knownPairIsNarrow(angle))
         return true;
     const double thickness = structureThickness(set, scorer);
     return thickness < kPlanarThickness || (angle < kModerateTriangulationAngleDeg && thickness < kNoisyPlanarThickness);
