@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../support/combinations.hpp"
 #include "../support/random.hpp"
 #include "hypothesis_starts.hpp"
 #include "ml_refinement.hpp"
@@ -24,34 +25,6 @@ struct Hypothesis
     double rms;
     int residuals;
 };
-
-//! Number of k-subsets of n, or more than @p cap when it exceeds it.
-long subsetCount(int n, int k, long cap)
-{
-    long c = 1;
-    for (int i = 0; i < k; ++i)
-    {
-        c = c * (n - i) / (i + 1);
-        if (c > cap)
-            return cap + 1;
-    }
-    return c;
-}
-
-//! Advances @p idx to the next k-subset of [0, n) in lexicographic order; false after the last.
-bool nextSubset(std::vector<int>& idx, int n)
-{
-    const int k = (int)idx.size();
-    int i = k - 1;
-    while (i >= 0 && idx[i] == n - k + i)
-        --i;
-    if (i < 0)
-        return false;
-    ++idx[i];
-    for (int j = i + 1; j < k; ++j)
-        idx[j] = idx[j - 1] + 1;
-    return true;
-}
 
 } // namespace
 
@@ -94,13 +67,13 @@ void appendHypothesisStarts(const ViewSet& set, const PoseSolver& solver, const 
         }
     };
     std::vector<int> idx(k);
-    if (subsetCount(n, k, kMaxHypothesisSamples) <= kMaxHypothesisSamples)
+    if (combinationCount(n, k, kMaxHypothesisSamples) <= kMaxHypothesisSamples)
     {
         for (int i = 0; i < k; ++i)
             idx[i] = i;
         do
             solve(idx);
-        while (nextSubset(idx, n));
+        while (nextCombination(idx, n));
     }
     else
     {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../support/combinations.hpp"
 #include "mixed_sampler.hpp"
 
 namespace tripose {
@@ -18,16 +19,7 @@ constexpr double kExplorationShare = 0.1;
 // Kinds with at most this many distinct samples are drawn without replacement: the estimators'
 // default iteration limit, so that such a kind can be drawn to the end within it (drawn with
 // replacement, a kind of more than about 1450 samples is never covered within 10000 draws).
-constexpr double kMaxEnumeratedSamples = 10000;
-
-//! Number of combinations of @p count items of @p size.
-double combinations(int size, int count)
-{
-    double c = 1;
-    for (int j = 0; j < count; ++j)
-        c = c * (size - j) / (j + 1);
-    return size >= count ? c : 0.0;
-}
+constexpr long kMaxEnumeratedSamples = 10000;
 
 /** The combination of @p count positions among @p size with rank @p index (0 <= index <
 C(size, count)) in the combinatorial number system: positions c_count > ... > c_1 with
@@ -37,9 +29,9 @@ void appendCombination(long index, int size, int count, const std::vector<int>& 
     for (int j = count; j >= 1; --j)
     {
         int c = j == 1 ? (int)index : j - 1; // C(c, 1) = c
-        while (j > 1 && c + 1 < size && combinations(c + 1, j) <= (double)index)
+        while (j > 1 && c + 1 < size && combinationCount(c + 1, j, index) <= index)
             ++c;
-        index -= (long)combinations(c, j);
+        index -= combinationCount(c, j, index);
         out.push_back(pool[c]);
         size = c;
     }
@@ -79,8 +71,7 @@ MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
     }
     const size_t kinds = sampling.kinds.size();
     logMissOne_.resize(kinds);
-    distinct_.resize(kinds);
-    enumerated_.resize(kinds);
+    enumeratedSamples_.assign(kinds, 0);
     unseen_.resize(kinds);
     for (size_t k = 0; k < kinds; ++k)
     {
@@ -89,9 +80,10 @@ MixedSampler::MixedSampler(const MixedSampling& sampling, uint64_t seed)
         // The probability of drawing one given sample of this kind is 1 / (number of its samples).
         logMissOne_[k] = std::log1p(-allGood(kind.points, (int)pool.points.size(), kind.points) *
                                     allGood(kind.lines, (int)pool.lines.size(), kind.lines));
-        distinct_[k] = combinations((int)pool.points.size(), kind.points) *
-                       combinations((int)pool.lines.size(), kind.lines);
-        enumerated_[k] = distinct_[k] >= 1 && distinct_[k] <= kMaxEnumeratedSamples;
+        const long distinct = combinationCount((int)pool.points.size(), kind.points, kMaxEnumeratedSamples) *
+                              combinationCount((int)pool.lines.size(), kind.lines, kMaxEnumeratedSamples);
+        if (distinct <= kMaxEnumeratedSamples)
+            enumeratedSamples_[k] = distinct;
     }
 }
 
@@ -144,7 +136,7 @@ bool MixedSampler::canDraw(int k) const
 
 bool MixedSampler::available(int k) const
 {
-    return canDraw(k) && !(enumerated_[k] && drawn_[k] >= distinct_[k]);
+    return canDraw(k) && !(enumeratedSamples_[k] > 0 && drawn_[k] >= enumeratedSamples_[k]);
 }
 
 int MixedSampler::chooseKind()
@@ -202,7 +194,7 @@ void MixedSampler::drawUnseen(int k, FeatureSubset& sample)
     std::vector<int>& unseen = unseen_[k];
     if (drawn_[k] == 0)
     {
-        unseen.resize((size_t)distinct_[k]);
+        unseen.resize((size_t)enumeratedSamples_[k]);
         for (size_t i = 0; i < unseen.size(); ++i)
             unseen[i] = (int)i;
     }
@@ -211,7 +203,7 @@ void MixedSampler::drawUnseen(int k, FeatureSubset& sample)
     const int index = unseen[at];
     unseen[at] = unseen.back();
     unseen.pop_back();
-    const long lineCombinations = (long)combinations((int)pool.lines.size(), kind.lines);
+    const long lineCombinations = combinationCount((int)pool.lines.size(), kind.lines, kMaxEnumeratedSamples);
     sample.points.clear();
     sample.lines.clear();
     appendCombination(index / lineCombinations, (int)pool.points.size(), kind.points, pool.points, sample.points);
@@ -224,7 +216,7 @@ bool MixedSampler::next(FeatureSubset& sample)
     if (k < 0)
         return false;
     const MixedSampling::Kind& kind = sampling_.kinds[k];
-    if (enumerated_[k])
+    if (enumeratedSamples_[k] > 0)
         drawUnseen(k, sample);
     else
     {
@@ -266,11 +258,11 @@ bool MixedSampler::coveredTo(double logMissed) const
         if (!canDraw((int)k))
             continue;
         drawable = true;
-        if (enumerated_[k])
+        if (enumeratedSamples_[k] > 0)
         {
             // Drawn without replacement: a given sample is missed with probability 1 - drawn / N
             // (log1p(-1) = -inf once all are drawn).
-            if (!(std::log1p(-std::min(1.0, drawn_[k] / distinct_[k])) <= logMissed))
+            if (!(std::log1p(-std::min(1.0, double(drawn_[k]) / enumeratedSamples_[k])) <= logMissed))
                 return false;
             continue;
         }

@@ -81,7 +81,7 @@ private:
     bool canDraw(int k) const;
     //! canDraw(), and a kind drawn without replacement has samples left.
     bool available(int k) const;
-    //! Draws a sample of a kind drawn without replacement (enumerated_[k]).
+    //! Draws a sample of a kind drawn without replacement (enumeratedSamples_[k] > 0).
     void drawUnseen(int k, FeatureSubset& sample);
     //! covered() with log(1 - confidence) given: confident() asks once per sample.
     bool coveredTo(double logMissed) const;
@@ -110,9 +110,8 @@ private:
     //! Per kind, log(1 - 1 / its number of distinct samples): the log of the probability that a
     //! draw misses one given sample (covered()).
     std::vector<double> logMissOne_;
-    //! Per kind: its number of distinct samples, and whether it is drawn without replacement.
-    std::vector<double> distinct_;
-    std::vector<unsigned char> enumerated_;
+    //! Per kind drawn without replacement, its number of distinct samples; 0 for the other kinds.
+    std::vector<long> enumeratedSamples_;
     //! Per kind drawn without replacement, the indices of its samples not drawn yet (filled at its
     //! first draw; a sample's index numbers its point combination times the number of line
     //! combinations plus its line combination).

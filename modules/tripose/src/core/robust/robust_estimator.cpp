@@ -53,6 +53,7 @@ public:
         const ViewSet& set = scorer.views();
         numPoints_ = set.numPoints;
         numFeatures_ = set.numFeatures();
+        stopsByRefitInliers_ = refiner && refiner->searchesBasinOfLargeSets() && numFeatures_ > kMaxSettleFromAll;
     }
 
     bool run(RobustEstimate& estimate)
@@ -311,19 +312,27 @@ private:
         }
     }
 
+    //! The features whose mask entries are set.
+    static FeatureSubset subsetOfMasks(const std::vector<unsigned char>& pointMask,
+                                       const std::vector<unsigned char>& lineMask)
+    {
+        FeatureSubset subset;
+        for (int i = 0; i < (int)pointMask.size(); ++i)
+            if (pointMask[i])
+                subset.points.push_back(i);
+        for (int i = 0; i < (int)lineMask.size(); ++i)
+            if (lineMask[i])
+                subset.lines.push_back(i);
+        return subset;
+    }
+
     void refineOnInliers(CameraPose& pose, const std::vector<unsigned char>& pointMask,
                          const std::vector<unsigned char>& lineMask, int maxIterations = 0,
                          bool* stoppedAtCap = nullptr) const
     {
-        FeatureSubset inliers;
-        for (int i = 0; i < (int)pointMask.size(); ++i)
-            if (pointMask[i])
-                inliers.points.push_back(i);
-        for (int i = 0; i < (int)lineMask.size(); ++i)
-            if (lineMask[i])
-                inliers.lines.push_back(i);
         CameraPose refined = pose;
-        if (refiner_->refine(inliers, refined, maxIterations, stoppedAtCap) && refined.allFinite())
+        if (refiner_->refine(subsetOfMasks(pointMask, lineMask), refined, maxIterations, stoppedAtCap) &&
+            refined.allFinite())
             pose = refined;
     }
 
@@ -343,37 +352,28 @@ private:
         return count;
     }
 
-    //! Inlier features of the best model among those samples are drawn from (features, not
-    //! observations: a feature seen by both cameras of a rig counts once).
-    int inliersInPool() const
+    //! Features of @p inliers among those samples are drawn from (features, not observations: a
+    //! feature seen by both cameras of a rig counts once).
+    int inliersInPool(const FeatureSubset& inliers) const
     {
         int count = 0;
-        for (int i : bestInliers_.points)
+        for (int i : inliers.points)
             count += i < pool_;
-        for (int i : bestInliers_.lines)
+        for (int i : inliers.lines)
             count += numPoints_ + i < pool_;
         return count;
     }
 
-    /** The inliers that the stopping rule counts: those of the best model's score (inliersInPool()),
-    except where the refiner searches the basin of sets of any size (a narrow known pair) and the
-    set is larger than those settled from all features. There the known pair triangulates the
-    structure poorly: the score against it leaves true inliers out and asked for thousands of
-    samples (0.1-0.4 s at 100P+40L), which served as a search for the basin. With the refiner
-    searching it, the samples need only find the inliers, counted with every feature
-    re-triangulated from all views as the final inlier test counts them. */
+    /** The inliers that the stopping rule counts: those of the best model's score, or
+    (stopsByRefitInliers_) those of its pose with every feature re-triangulated from all views, as
+    the final inlier test counts them. */
     int stoppingInliers()
     {
-        if (!(refiner_ && refiner_->searchesBasinOfLargeSets() && numFeatures_ > kMaxSettleFromAll))
-            return inliersInPool();
+        if (!stopsByRefitInliers_)
+            return inliersInPool(bestInliers_);
         std::vector<unsigned char> points, lines;
         inlierMasks(bestPose_, points, lines);
-        int count = 0;
-        for (int i = 0; i < (int)points.size(); ++i)
-            count += points[i] && i < pool_;
-        for (int i = 0; i < (int)lines.size(); ++i)
-            count += lines[i] && numPoints_ + i < pool_;
-        return count;
+        return inliersInPool(subsetOfMasks(points, lines));
     }
 
     //! Samples needed to draw one all-inlier sample with the requested confidence.
@@ -404,6 +404,13 @@ private:
     //! Whether settle rounds that re-classify the inliers are capped at kSettleRoundIterations.
     const bool capSettleRounds_;
     int numPoints_ = 0, numFeatures_ = 0, pool_ = 0;
+    /** Whether the stopping rule counts the best pose's inliers re-triangulated from all views
+    (stoppingInliers()): where the refiner searches the basin of sets of any size (a narrow known
+    pair) and the set is larger than those settled from all features. There the known pair
+    triangulates the structure poorly: the score against it leaves true inliers out and asked for
+    thousands of samples (0.1-0.4 s at 100P+40L), which served as a search for the basin. With the
+    refiner searching it, the samples need only find the inliers. */
+    bool stopsByRefitInliers_ = false;
     bool sampledPose_ = false; //!< Some minimal sample gave a pose.
     std::vector<double> pointResiduals_, lineResiduals_;
     std::vector<CameraPose> candidates_;

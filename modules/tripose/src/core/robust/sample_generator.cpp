@@ -8,39 +8,19 @@
 #include <limits>
 #include <vector>
 
+#include "../support/combinations.hpp"
 #include "../support/error.hpp"
 
 #include "sample_generator.hpp"
 
-#include <algorithm>
-
 namespace tripose {
-
-namespace {
-
-//! n choose k, or limit + 1 once it exceeds limit.
-long countSamples(int n, int k, long limit)
-{
-    if (k > n)
-        return 0;
-    long count = 1;
-    for (int i = 1; i <= k; ++i)
-    {
-        count = count * (n - k + i) / i; // exact: a product of i consecutive integers is divisible by i!
-        if (count > limit)
-            return limit + 1;
-    }
-    return count;
-}
-
-} // namespace
 
 SampleGenerator::SampleGenerator(int numFeatures, int sampleSize, long maxDraws, uint64_t seed)
     : numFeatures_(numFeatures), sampleSize_(sampleSize), rng_(seed)
 {
     TRIPOSE_ASSERT(sampleSize > 0 && numFeatures >= sampleSize);
     const long limit = std::min<long>(kEnumerationLimit, maxDraws);
-    const long distinct = countSamples(numFeatures, sampleSize, limit);
+    const long distinct = combinationCount(numFeatures, sampleSize, limit);
     if (distinct > limit)
         return;
     // All combinations in lexicographic order, then a Fisher-Yates shuffle of whole samples.
@@ -48,18 +28,9 @@ SampleGenerator::SampleGenerator(int numFeatures, int sampleSize, long maxDraws,
     std::vector<int> c(sampleSize);
     for (int i = 0; i < sampleSize; ++i)
         c[i] = i;
-    for (;;)
-    {
+    do
         samples_.insert(samples_.end(), c.begin(), c.end());
-        int i = sampleSize - 1;
-        while (i >= 0 && c[i] == numFeatures - sampleSize + i)
-            --i;
-        if (i < 0)
-            break;
-        ++c[i];
-        for (int j = i + 1; j < sampleSize; ++j)
-            c[j] = c[j - 1] + 1;
-    }
+    while (nextCombination(c, numFeatures));
     for (long s = distinct - 1; s > 0; --s)
     {
         const int r = rng_.uniform(0, (int)s + 1);
