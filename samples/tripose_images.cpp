@@ -2,10 +2,11 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// tripose_images: the pose of view 3 straight from three images. Finds SIFT points and LSD segments
-// (LBD descriptors) in each, matches views 1-2 under their known relative pose and view 3 under the
-// geometry of its descriptor matches with view 2, and runs cv::tripose::estimatePoseLinePointRansac
-// with refinement (Cauchy loss, samples/common/image_estimation.hpp) on the triplets.
+// tripose_images: the pose of view 3 straight from three images. Finds SIFT points and EDLines
+// segments fitted to their edges (LBD descriptors) in each, matches views 1-2 under their known
+// relative pose and view 3 under the geometry of its descriptor matches with view 2, and runs
+// cv::tripose::estimatePoseLinePointRansac with refinement (Cauchy loss,
+// samples/common/image_estimation.hpp) on the triplets.
 //
 //   tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml
 //                  [--overlay overlay.png] [--matches matches.png] [--features points|lines|all] [--threshold px] [--seed n]
@@ -54,7 +55,7 @@ const char* kUsage =
     "              inliers of the estimate green, the rest red\n"
     "  --overlay   the third image with the inlier features (red) and the structure of views 1-2\n"
     "              reprojected by the estimate (green)\n"
-    "  --features  points (SIFT), lines (LSD + LBD) or all (default)\n"
+    "  --features  points (SIFT), lines (EDLines + LBD) or all (default)\n"
     "  --threshold RANSAC inlier threshold in pixels (default 2)\n"
     "  --seed      RANSAC sampler seed (default 0)\n";
 
@@ -358,7 +359,7 @@ int main(int argc, char** argv)
     if (solutions == 0)
         std::cerr << "tripose_images: no pose found from " << tracks << " point tracks and " << segments
                   << " segment triplets\n";
-    std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (LSD) %.1f, "
+    std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (EDLines) %.1f, "
                             "segment description (LBD) %.1f (summed over the images; wall-clock %.1f, the images in "
                             "parallel), matching %.1f, estimation %.1f, total %.1f wall-clock\n",
                             inliers, times.points, times.segmentDetection, times.segmentDescription, times.featuresWall,

@@ -421,11 +421,11 @@ int main(int argc, char** argv)
     std::cout << "| triangulation + PnP (SQPNP) | " << summary(pnp) << " |\n";
     std::cout << "| tripose, sequence's correspondences | " << summary(ownCorrespondences) << " |\n";
     std::cout << "\nTime per triplet (ms), from three fresh images: each feature stage summed over the three images "
-                 "(SIFT; LSD; LBD), the feature stages' wall-clock time (the images in parallel), matching, tripose "
+                 "(SIFT; EDLines; LBD), the feature stages' wall-clock time (the images in parallel), matching, tripose "
                  "points+lines estimation; the work (sum of the stages), the wall-clock total, the total with each "
                  "image's features computed once in a sequence (a third of the feature work); the estimation of points "
                  "only and of triangulation + PnP\n\n";
-    std::cout << "| views | SIFT | LSD | LBD | features, wall | matching | estimation | work | total, wall | "
+    std::cout << "| views | SIFT | EDLines | LBD | features, wall | matching | estimation | work | total, wall | "
                  "total, sequence | points-only est. | triangulation + PnP |\n";
     std::cout << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const std::string& row : timeRows)

@@ -46,7 +46,7 @@ const char* kUsage =
     "                 the structure together against the earlier frames (a local bundle adjustment;\n"
     "                 default 0: off)\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
-    "                 name order; SIFT, LSD + LBD) instead of the sequence's correspondences\n"
+    "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
     "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
@@ -187,7 +187,7 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
         observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
                                sequence.ts[1], FeatureOptions(), MatchOptions(), times);
     std::cout << cv::format("Front end on %zu images: %d point tracks, %d segment tracks; ms: points (SIFT) %.0f, "
-                            "segment detection (LSD) %.0f, segment description (LBD) %.0f, matching %.0f\n",
+                            "segment detection (EDLines) %.0f, segment description (LBD) %.0f, matching %.0f\n",
                             files.size(), observations.points[0].rows, observations.lines[0].rows, times.points,
                             times.segmentDetection, times.segmentDescription, times.matching);
     return observations;

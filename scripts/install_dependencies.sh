@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 
 apt_packages=(build-essential cmake ninja-build pkg-config
               libopencv-dev libeigen3-dev libgtest-dev
-              libopencv-contrib-dev          # line_descriptor (LSD, LBD) for the samples on images
+              libopencv-contrib-dev          # ximgproc (EDLines), line_descriptor (LBD) for the samples on images
               libyaml-dev                    # the problem reader of the command-line tools
               python3 python3-dev python3-venv python3-numpy
               clang-14 libclang-rt-14-dev    # libFuzzer for scripts/fuzz.sh

@@ -4,10 +4,15 @@
 
 #include "image_features.hpp"
 
+#include <cmath>
+
 #include <opencv2/calib3d.hpp>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/line_descriptor.hpp>
+#include <opencv2/ximgproc/edge_drawing.hpp>
+
+#include "segment_edge_fit.hpp"
 
 namespace tripose_samples {
 
@@ -19,13 +24,6 @@ comes out 0.25 px right of and below the feature (enable_precise_upscale, OpenCV
 but is off by default and absent from Debian's 4.6). Key points found in an image and in its mirror
 image show it: +0.25 px on both axes on Model House and Merton College I (doc/real_images.md). */
 const double kSiftUpsamplingOffset = 0.25;
-
-/** LSD detects on the image scaled by 0.8 (cv::resize: pixel centres at (x + 0.5) / 0.8 - 0.5 of the
-original) and divides its coordinates by 0.8 alone: every end point comes out 0.5 / 0.8 - 0.5 =
-0.125 px left of and above the edge. An edge rendered at a known sub-pixel position shows it (-0.125
-px on average over positions, slopes and polarities), and so do segments found in an image and in
-its mirror image (-0.11 to -0.13 px, doc/real_images.md). */
-const double kLsdDownsamplingOffset = 0.125;
 
 double millisecondsSince(int64 start)
 {
@@ -97,36 +95,48 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
     if (options.kinds & FEATURES_LINES)
     {
         using namespace cv::line_descriptor;
-        std::vector<KeyLine> keylines;
         int64 start = cv::getTickCount();
-        // One octave: LBD is computed at the scale the segment was found, and a single scale keeps the
-        // end points at full resolution.
-        LSDDetector::createLSDDetector()->detect(grey, keylines, 2, 1);
-        std::vector<KeyLine> kept;
-        for (const KeyLine& k : keylines)
-            if (k.lineLength >= options.minSegmentLength)
-            {
-                kept.push_back(k);
-                kept.back().class_id = (int)kept.size() - 1;
-            }
+        const cv::Ptr<cv::ximgproc::EdgeDrawing> edgeDrawing = cv::ximgproc::createEdgeDrawing();
+        edgeDrawing->detectEdges(grey);
+        std::vector<cv::Vec4f> detected, longEnough;
+        edgeDrawing->detectLines(detected);
+        for (const cv::Vec4f& s : detected)
+            if (std::hypot(s[2] - s[0], s[3] - s[1]) >= options.minSegmentLength)
+                longEnough.push_back(s);
+        const std::vector<cv::Vec4f> segments = fitSegmentsToEdges(grey, longEnough);
         times.segmentDetection += millisecondsSince(start);
         start = cv::getTickCount();
-        if (!kept.empty())
-            BinaryDescriptor::createBinaryDescriptor()->compute(grey, kept, out.lineDescriptors);
+        // LBD describes key lines of one octave, the image's own: the segments at full resolution.
+        std::vector<KeyLine> keylines(segments.size());
+        for (size_t i = 0; i < segments.size(); ++i)
+        {
+            const cv::Vec4f& s = segments[i];
+            KeyLine& k = keylines[i];
+            k.startPointX = k.sPointInOctaveX = s[0];
+            k.startPointY = k.sPointInOctaveY = s[1];
+            k.endPointX = k.ePointInOctaveX = s[2];
+            k.endPointY = k.ePointInOctaveY = s[3];
+            k.lineLength = (float)std::hypot(s[2] - s[0], s[3] - s[1]);
+            k.numOfPixels = (int)std::lround(k.lineLength);
+            k.angle = (float)std::atan2(s[3] - s[1], s[2] - s[0]);
+            k.pt = cv::Point2f((s[0] + s[2]) / 2, (s[1] + s[3]) / 2);
+            k.octave = 0;
+            k.class_id = (int)i;
+            k.response = k.lineLength / (float)std::max(grey.cols, grey.rows);
+            k.size = std::abs((s[2] - s[0]) * (s[3] - s[1]));
+        }
+        if (!keylines.empty())
+            BinaryDescriptor::createBinaryDescriptor()->compute(grey, keylines, out.lineDescriptors);
         times.segmentDescription += millisecondsSince(start);
         // LBD keeps one descriptor per segment, in order: the rows below pair with them.
-        CV_Assert(out.lineDescriptors.rows == (int)kept.size());
-        if (!kept.empty())
+        CV_Assert(out.lineDescriptors.rows == (int)keylines.size());
+        if (!keylines.empty())
         {
-            cv::Mat ends((int)kept.size() * 2, 2, CV_64F);
-            for (size_t i = 0; i < kept.size(); ++i)
-            {
-                ends.at<double>(2 * (int)i, 0) = kept[i].startPointX + kLsdDownsamplingOffset;
-                ends.at<double>(2 * (int)i, 1) = kept[i].startPointY + kLsdDownsamplingOffset;
-                ends.at<double>(2 * (int)i + 1, 0) = kept[i].endPointX + kLsdDownsamplingOffset;
-                ends.at<double>(2 * (int)i + 1, 1) = kept[i].endPointY + kLsdDownsamplingOffset;
-            }
-            out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)kept.size()).clone();
+            cv::Mat ends((int)segments.size() * 2, 2, CV_64F);
+            for (size_t i = 0; i < segments.size(); ++i)
+                for (int c = 0; c < 4; ++c)
+                    ends.at<double>(2 * (int)i + c / 2, c % 2) = segments[i][c];
+            out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)segments.size()).clone();
         }
     }
     return out;
@@ -139,7 +149,7 @@ std::vector<ImageFeatures> extractFeaturesOfImages(const std::vector<cv::Mat>& i
 {
     const int n = (int)images.size();
     CV_Assert((int)K.size() == n && (distCoeffs.empty() || (int)distCoeffs.size() == n));
-    // One task per image and kind: SIFT costs about three times LSD + LBD, so three images' six tasks
+    // One task per image and kind: SIFT costs several times the segments, so three images' six tasks
     // share two cores more evenly than three whole images would (two images on one core).
     const FeatureKinds kinds[2] = { FEATURES_POINTS, FEATURES_LINES };
     std::vector<ImageFeatures> parts(2 * n);

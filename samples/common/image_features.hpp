@@ -3,7 +3,8 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // Points and line segments of one image, detected and described for matching: SIFT key points
-// (features2d) and LSD segments with LBD descriptors (contrib line_descriptor).
+// (features2d) and EDLines segments (contrib ximgproc) fitted to their edges, with LBD descriptors
+// (contrib line_descriptor).
 #ifndef TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP
 #define TRIPOSE_SAMPLES_IMAGE_FEATURES_HPP
 
@@ -41,7 +42,7 @@ struct StageTimes
     //! SIFT detects and describes in one pass over one scale space: apart, the two passes cost about
     //! 30 % more, so points have one figure.
     double points = 0;
-    double segmentDetection = 0, segmentDescription = 0; //!< LSD, LBD.
+    double segmentDetection = 0, segmentDescription = 0; //!< EDLines and the fit to the edges, LBD.
     double matching = 0, estimation = 0;
     //! Wall-clock time of the feature stages: below their sum when images are processed in parallel.
     double featuresWall = 0;
@@ -56,7 +57,7 @@ struct FeatureOptions
 {
     FeatureKinds kinds = FEATURES_ALL;
     int maxPoints = 4000;            //!< The strongest SIFT key points kept (0: all).
-    double minSegmentLength = 20;    //!< Shorter LSD segments are dropped (px): they are too short to give a direction.
+    double minSegmentLength = 20;    //!< Shorter segments are dropped (px): they are too short to give a direction.
 };
 
 /** Detects and describes the features of a grey or colour 8-bit image (converted to grey). With

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The pose of a third camera from three images, in Python: the steps of the C++ sample
-tripose_images with OpenCV's Python bindings (opencv-contrib-python: SIFT, LSD and LBD of
-line_descriptor), the estimate from the tripose package.
+tripose_images with OpenCV's Python bindings (opencv-contrib-python: SIFT, the EDLines segments of
+ximgproc fitted to their edges, LBD of line_descriptor), the estimate from the tripose package.
 
     pose_from_images.py --calib calib.yml --images a.png b.png c.png --output result.yml
                         [--features points|lines|all] [--threshold px] [--problem-only]
@@ -25,7 +25,6 @@ import numpy as np
 
 MIN_FEATURES = 4  # the estimators need four features
 SIFT_UPSAMPLING_OFFSET = 0.25  # px, see extract()
-LSD_DOWNSAMPLING_OFFSET = 0.125  # px, see extract()
 # The refinement's Cauchy loss scale (px) for detected features, as the C++ samples
 # (samples/common/image_estimation.hpp): it keeps the tail of poorly placed features from pulling.
 IMAGE_LOSS_SCALE = 0.5
@@ -99,6 +98,71 @@ def undistort(xy, K, dist):
     return cv2.undistortPoints(xy.reshape(-1, 1, 2), K, dist, P=K).reshape(-1, 2)
 
 
+def fit_segments_to_edges(image, segments, end_margin=2.0, search=2, max_distance=1.0, min_peaks=5):
+    """Each segment (N x 4) fitted to its edge and oriented with the brighter side on its right, as
+    the C++ front end (samples/common/segment_edge_fit.hpp): at every pixel row (column) it crosses,
+    the gradient's peak across it between pixels (parabola through three), peaks of the dominant
+    polarity within max_distance px; then their total-least-squares line."""
+    smooth = cv2.GaussianBlur(image.astype(np.float32), (0, 0), 1.0)
+    gx, gy = cv2.Sobel(smooth, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(smooth, cv2.CV_32F, 0, 1, ksize=3)
+    out = []
+    for s in segments:
+        p0, p1 = s[:2].copy(), s[2:].copy()
+        length = np.hypot(*(p1 - p0))
+        if not length > 0:
+            continue
+        u = (p1 - p0) / length
+        n = np.array([-u[1], u[0]])
+        walk, across = (1, 0) if abs(n[0]) >= abs(n[1]) else (0, 1)  # walk rows (y) or columns (x)
+        margin = end_margin * abs(u[walk])
+        first = max(int(np.ceil(min(p0[walk], p1[walk]) + margin)), 0)
+        last = min(int(np.floor(max(p0[walk], p1[walk]) - margin)), image.shape[1 - walk] - 1)
+        r = np.arange(first, last + 1)
+        centre = p0[across] + (r - p0[walk]) / u[walk] * u[across]
+        k0 = np.rint(centre).astype(int)
+        inside = (k0 - search - 1 >= 0) & (k0 + search + 1 < image.shape[1 - across])
+        r, centre, k0 = r[inside], centre[inside], k0[inside]
+        k = k0[:, None] + np.arange(-search - 1, search + 2)[None, :]
+        rows, cols = (np.broadcast_to(r[:, None], k.shape), k) if walk == 1 else (k, np.broadcast_to(r[:, None], k.shape))
+        g = gx[rows, cols] * n[0] + gy[rows, cols] * n[1]
+        best = 1 + np.argmax(np.abs(g[:, 1:-1]), axis=1)
+        i = np.arange(len(r))
+        left, mid, right = np.abs(g[i, best - 1]), np.abs(g[i, best]), np.abs(g[i, best + 1])
+        curvature = left - 2 * mid + right
+        ok = curvature < 0
+        at = k0 - search - 1 + best + 0.5 * (left - right) / np.where(ok, curvature, -1.0)
+        ok &= np.abs(at - centre) * abs(n[across]) <= max_distance
+        positive = g[i, best] > 0
+        brighter_on_right = 2 * np.sum(positive & ok) >= np.sum(ok)
+        ok &= positive == brighter_on_right
+        if ok.sum() >= min_peaks:
+            peaks = np.zeros((ok.sum(), 2))
+            peaks[:, walk], peaks[:, across] = r[ok], at[ok]
+            mean = peaks.mean(axis=0)
+            d = peaks - mean
+            angle = 0.5 * np.arctan2(2 * np.sum(d[:, 0] * d[:, 1]), np.sum(d[:, 0] ** 2) - np.sum(d[:, 1] ** 2))
+            direction = np.array([np.cos(angle), np.sin(angle)])
+            direction = direction if direction @ u >= 0 else -direction
+            p0, p1 = mean + ((p0 - mean) @ direction) * direction, mean + ((p1 - mean) @ direction) * direction
+        out.append(np.r_[p0, p1] if brighter_on_right else np.r_[p1, p0])
+    return np.array(out, np.float64).reshape(-1, 4)
+
+
+def keyline(index, s, image_size):
+    """A segment at full resolution as contrib's KeyLine, for LBD."""
+    k = cv2.line_descriptor.KeyLine()
+    k.startPointX, k.startPointY, k.endPointX, k.endPointY = map(float, s)
+    k.sPointInOctaveX, k.sPointInOctaveY, k.ePointInOctaveX, k.ePointInOctaveY = map(float, s)
+    k.lineLength = float(np.hypot(s[2] - s[0], s[3] - s[1]))
+    k.numOfPixels = int(round(k.lineLength))
+    k.angle = float(np.arctan2(s[3] - s[1], s[2] - s[0]))
+    k.pt = (float(s[0] + s[2]) / 2, float(s[1] + s[3]) / 2)
+    k.octave, k.class_id = 0, index
+    k.response = k.lineLength / image_size
+    k.size = float(abs((s[2] - s[0]) * (s[3] - s[1])))
+    return k
+
+
 def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
     out = {"points": np.zeros((0, 2)), "point_desc": np.zeros((0, 128), np.float32),
            "segments": np.zeros((0, 4)), "line_desc": np.zeros((0, 32), np.uint8)}
@@ -111,16 +175,14 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
             out["points"] = undistort(xy, K, dist)
             out["point_desc"] = desc
     if kinds in ("lines", "all"):
-        keylines = cv2.line_descriptor.LSDDetector.createLSDDetector().detect(image, 2, 1)
-        keylines = [k for k in keylines if k.lineLength >= min_segment]
-        for i, k in enumerate(keylines):
-            k.class_id = i
-        if keylines:
+        edge_drawing = cv2.ximgproc.createEdgeDrawing()
+        edge_drawing.detectEdges(image)
+        detected = edge_drawing.detectLines()
+        ends = np.zeros((0, 4)) if detected is None else detected.reshape(-1, 4).astype(np.float64)
+        ends = fit_segments_to_edges(image, ends[np.hypot(*(ends[:, 2:] - ends[:, :2]).T) >= min_segment])
+        if len(ends):
+            keylines = [keyline(i, s, max(image.shape)) for i, s in enumerate(ends)]
             keylines, desc = cv2.line_descriptor.BinaryDescriptor.createBinaryDescriptor().compute(image, keylines)
-            # LSD works on the image scaled by 0.8 and only divides its coordinates by 0.8: every end
-            # point comes out 0.125 px left of and above the edge (as the C++ front end).
-            ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY] for k in keylines],
-                            np.float64) + LSD_DOWNSAMPLING_OFFSET
             out["segments"] = undistort(ends.reshape(-1, 2), K, dist).reshape(-1, 4)
             out["line_desc"] = desc
     return out

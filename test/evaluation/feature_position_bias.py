@@ -8,10 +8,11 @@ disagreement is the detector's offset along that axis.
 
     .venv/bin/python test/evaluation/feature_position_bias.py image [image ...]
 
-Prints, per image and axis, the offset of OpenCV's SIFT key points and of LSD segments (contrib
-line_descriptor, across their direction) as detected and after the image front end's corrections
-(samples/python/pose_from_images.py, as samples/common/image_features.cpp). First, the same for LSD
-on straight edges rendered at known sub-pixel positions, which needs no mirror.
+Prints, per image and axis, the offset of OpenCV's SIFT key points and of EDLines segments (contrib
+ximgproc, across their direction) as detected and as the image front end places them (the SIFT
+offset corrected, the segments fitted to their edges: samples/python/pose_from_images.py, as
+samples/common/image_features.cpp). First, the same for the segments on straight edges rendered at
+known sub-pixel positions, which needs no mirror.
 """
 
 import functools
@@ -48,13 +49,15 @@ def sift_offset(image, mirrored, axis, corrected):
 
 
 def detected_segments(image, corrected, min_length=30):
-    """Segments (N x 4) longer than min_length, from contrib's LSD as detected or as the front end
+    """Segments (N x 4) longer than min_length, from contrib's EDLines as detected or as the front end
     places them."""
     if corrected:
         ends = pose_from_images.extract(image, None, None, "lines")["segments"]
     else:
-        ends = np.array([[k.startPointX, k.startPointY, k.endPointX, k.endPointY]
-                         for k in cv2.line_descriptor.LSDDetector.createLSDDetector().detect(image, 2, 1)])
+        edge_drawing = cv2.ximgproc.createEdgeDrawing()
+        edge_drawing.detectEdges(image)
+        lines = edge_drawing.detectLines()
+        ends = np.zeros((0, 4)) if lines is None else lines.reshape(-1, 4).astype(np.float64)
     return ends[np.hypot(ends[:, 2] - ends[:, 0], ends[:, 3] - ends[:, 1]) > min_length]
 
 
@@ -84,15 +87,16 @@ def segment_offset(image, mirrored, axis, corrected=False):
 def rendered_edges(size=240, supersampling=10):
     """Straight edges rendered at known sub-pixel positions (pixel centres at integers, each pixel the
     mean of supersampling^2 samples), as (image, unit normal, signed distance of the edge from the
-    image centre along it). The edges cross the image within 12 deg of an axis, both polarities: the
-    mirror measure's segments (segment_offset) are these; diagonal edges bend LSD's end points by up
-    to 0.3 px either way, an error of direction rather than of position."""
+    image centre along it). The distances lie midway between two samples (tenths of a pixel), where
+    the rendering places an edge along an axis exactly; at a sample it would be 0.05 px off. The edges cross the image within 12 deg of an axis, both polarities: the
+    mirror measure's segments (segment_offset) are these. Two run along an axis: an edge detector that
+    chains whole pixels places those up to half a pixel off."""
     edges = []
     centre = size / 2
     grid = (np.arange(size * supersampling) + 0.5) / supersampling - 0.5
     x, y = np.meshgrid(grid, grid)
-    for offset in (-29.7, 0.0, 1.3, 17.55):
-        for angle in np.radians([3.0, -11.0, 7.0, 88.0, 95.0, 81.0]):
+    for offset in (-29.7, 0.0, 1.3, 17.6):
+        for angle in np.radians([0.0, 3.0, -11.0, 7.0, 90.0, 88.0, 95.0, 81.0]):
             normal = np.array([np.cos(angle), np.sin(angle)])
             bright = ((x - centre) * normal[0] + (y - centre) * normal[1] > offset).astype(np.float32)
             image = (60 + 140 * bright.reshape(size, supersampling, size, supersampling).mean(axis=(1, 3)))
@@ -122,11 +126,11 @@ def main():
         sys.exit(__doc__)
     for corrected, name in ((False, "as detected"), (True, "front end")):
         shift, left = rendered_edge_shift(corrected)
-        print(f"LSD on rendered edges, {name}: shift ({shift[0]:+.3f}, {shift[1]:+.3f}) px; "
+        print(f"Segments on rendered edges, {name}: shift ({shift[0]:+.3f}, {shift[1]:+.3f}) px; "
               f"{len(left)} segments, largest distance left {np.abs(left).max():.3f} px")
     print()
-    print("| image | axis | SIFT as detected (px) | SIFT, front end (px) | key point pairs | LSD as detected (px) "
-          "| LSD, front end (px) | segment pairs |")
+    print("| image | axis | SIFT as detected (px) | SIFT, front end (px) | key point pairs | EDLines as detected (px) "
+          "| segments, front end (px) | segment pairs |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     for path in sys.argv[1:]:
         image = cv2.imread(path, cv2.IMREAD_GRAYSCALE)
@@ -136,9 +140,9 @@ def main():
             mirrored = cv2.flip(image, 1 if axis == 0 else 0)
             raw, n = sift_offset(image, mirrored, axis, False)
             fixed, _ = sift_offset(image, mirrored, axis, True)
-            lsd, m = segment_offset(image, mirrored, axis)
-            lsd_fixed, _ = segment_offset(image, mirrored, axis, corrected=True)
-            print(f"| {Path(path).name} | {name} | {raw:+.3f} | {fixed:+.3f} | {n} | {lsd:+.3f} | {lsd_fixed:+.3f} "
+            raw_segments, m = segment_offset(image, mirrored, axis)
+            fitted, _ = segment_offset(image, mirrored, axis, corrected=True)
+            print(f"| {Path(path).name} | {name} | {raw:+.3f} | {fixed:+.3f} | {n} | {raw_segments:+.3f} | {fitted:+.3f} "
                   f"| {m} |")
     return 0
 
