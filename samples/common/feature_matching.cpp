@@ -79,8 +79,9 @@ cv::Vec3d homogeneous(const double* x)
 }
 
 /** Where segment @p s (x0 y0 x1 y1) crosses the lines @p la and @p lb, as parameters along it (0 at
-its first end, 1 at its second), sorted; false when it runs within @p minSine of either line. */
-bool bandOnSegment(const double* s, const cv::Vec3d& la, const cv::Vec3d& lb, double minSine, double& lo, double& hi)
+its first end, 1 at its second): @p atA where it crosses la, @p atB where lb; false when it runs
+within @p minSine of either line. */
+bool bandOnSegment(const double* s, const cv::Vec3d& la, const cv::Vec3d& lb, double minSine, double& atA, double& atB)
 {
     const cv::Point2d p(s[0], s[1]), d(s[2] - s[0], s[3] - s[1]);
     const double length = std::hypot(d.x, d.y);
@@ -95,8 +96,8 @@ bool bandOnSegment(const double* s, const cv::Vec3d& la, const cv::Vec3d& lb, do
             return false;
         u[k] = -(l[0] * p.x + l[1] * p.y + l[2]) / across;
     }
-    lo = std::min(u[0], u[1]);
-    hi = std::max(u[0], u[1]);
+    atA = u[0];
+    atB = u[1];
     return true;
 }
 
@@ -145,6 +146,11 @@ Matches matchSegmentsEpipolar(const ImageFeatures& a, const ImageFeatures& b, co
         {
             double lo, hi;
             if (!bandOnSegment(b.segments.ptr<double>(j), la, lb, minSine, lo, hi))
+                continue;
+            // Both segments run with the brighter side on their right (segment_edge_fit.hpp), as every
+            // view of an edge sees it, and a view keeps the order of points along a line: the band
+            // of a's first end point comes first along b. The other way round, b is another edge.
+            if (!(lo < hi))
                 continue;
             // The segment spans [0, 1]; the band [lo, hi] along it. Detected segments break up and
             // stop short at different places in the two images: require the overlap to cover a

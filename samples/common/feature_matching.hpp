@@ -46,8 +46,9 @@ Matches matchPointsEpipolar(const ImageFeatures& a, const ImageFeatures& b, cons
                             const MatchOptions& options);
 
 /** Segments of views a and b under @p F: candidates overlap the band between the epipolar lines of
-the other's end points (MatchOptions::minBandOverlap), then mutual best LBD descriptor with the
-ratio test among the candidates. */
+the other's end points (MatchOptions::minBandOverlap) and run the same way along it (segments are
+oriented by their edge's polarity), then mutual best LBD descriptor with the ratio test among the
+candidates. */
 Matches matchSegmentsEpipolar(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
                               const MatchOptions& options);
 

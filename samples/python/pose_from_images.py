@@ -259,7 +259,10 @@ def match_segments_epipolar(a, b, F, min_overlap=0.5, min_angle_deg=5.0, ratio=0
         ok &= np.abs(across) > np.sin(np.radians(min_angle_deg)) * normal * length[None, :]
         with np.errstate(divide="ignore", invalid="ignore"):
             params.append(-(l[:, :1] * p[None, :, 0] + l[:, 1:2] * p[None, :, 1] + l[:, 2:3]) / across)
-    lo, hi = np.minimum(*params), np.maximum(*params)
+    # Segments run with the brighter side on their right (fit_segments_to_edges), as every view of an
+    # edge sees it, and a view keeps the order along a line: a's first end's band comes first along b.
+    lo, hi = params
+    ok &= lo < hi
     overlap = np.minimum(hi, 1.0) - np.maximum(lo, 0.0)
     ok &= (overlap > 0) & (overlap >= min_overlap * np.minimum(1.0, hi - lo))
     desc = descriptor_distances(a["line_desc"], b["line_desc"])
