@@ -39,6 +39,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
+    "                     [--observations tracks.yml]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
@@ -47,13 +48,16 @@ const char* kUsage =
     "                 default 0: off)\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
+    "  --observations also write the tracks the frames were registered from: per frame k (from 0) K<k>,\n"
+    "                 points<k> (N x 2) and lines<k> (M x 4, segments), row i of every frame the same track,\n"
+    "                 NaN where frame k does not see it\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
     "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
 
 struct Options
 {
-    std::string data, output, plot, method = "ransac";
+    std::string data, output, plot, observations, method = "ransac";
     bool fromImages = false;
     tripose_samples::TrackOptions track;
 };
@@ -63,7 +67,7 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine" };
+                                             "--local-refine", "--observations" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -76,6 +80,8 @@ Options parseArguments(int argc, char** argv)
             o.output = value;
         else if (arg == "--plot")
             o.plot = value;
+        else if (arg == "--observations")
+            o.observations = value;
         else if (arg == "--method")
             o.method = value;
         else if (arg == "--local-refine")
@@ -339,6 +345,12 @@ int main(int argc, char** argv)
                                                  options.track.window, options.method.c_str(), drift);
             tripose_samples::writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
         }
+        if (!options.observations.empty())
+            tripose_samples::writeAtomically(options.observations, [&](cv::FileStorage& fs) {
+                for (size_t k = 0; k < observations.points.size(); ++k)
+                    fs << cv::format("K%zu", k) << observations.cameraMatrices[k] << cv::format("points%zu", k)
+                       << observations.points[k] << cv::format("lines%zu", k) << observations.lines[k];
+            });
     }
     catch (const std::exception& e)
     {

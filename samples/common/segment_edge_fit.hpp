@@ -19,8 +19,8 @@ across the segment (Gaussian sigma 1, Sobel), placed between pixels by a parabol
 within 1 px of the segment and of the segment's dominant polarity; then the total-least-squares line
 through those peaks, the end points projected onto it. The result is oriented with the brighter side
 on its right as drawn (x right, y down), so that a segment and its match in another view are
-described (LBD) in the same direction. A segment with fewer than five peaks keeps
-its position and only gets the orientation.
+described (LBD) in the same direction. A segment with fewer than five peaks keeps its position and
+only gets the orientation; one of zero length is dropped.
 
 Why: edge chaining detectors (EDLines) fit their lines to whole pixels, so a segment within a
 fraction of a degree of an image axis comes out up to 0.5 px off its edge; after the fit, edges

@@ -66,3 +66,24 @@ def test_blank_image_in_the_folder_is_rejected(tmp_path):
     assert proc.returncode == 1, proc.stdout
     assert "003.jpg" in proc.stderr and "blank" in proc.stderr
     assert not out.exists() and files_in(tmp_path) == before
+
+
+def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
+    # --observations writes the tracks the frames were registered from; most fit the sequence's
+    # cameras within a pixel (test/evaluation/track_observation_residuals.py: a wrong link shows as pixels).
+    tracks = tmp_path / "tracks.yml"
+    proc, _ = track(tmp_path, VGG / "Merton-College-I", "--observations", tracks)
+    assert proc.returncode == 0, proc.stderr
+    import sys
+    sys.path.insert(0, str(REPO / "test" / "evaluation"))
+    from track_observation_residuals import point_residuals, read_observations, segment_residuals
+    points, lines = read_observations(tracks)
+    assert len(points) == 3 and all(p.shape[1] == 2 for p in points) and all(l.shape[1] == 4 for l in lines)
+    # Every track has a row in every frame; frame 2 sees at least as many as it was registered from.
+    assert len({p.shape[0] for p in points}) == 1 and len({l.shape[0] for l in lines}) == 1
+    features = read_matrices(tmp_path / "track.yml", ["features"])["features"].ravel()
+    assert np.isfinite(points[2][:, 0]).sum() + np.isfinite(lines[2][:, 0]).sum() >= features[2]
+    cameras = [np.loadtxt(p) for p in sorted((VGG / "Merton-College-I").glob("*.P"))]
+    for residuals in (point_residuals(points, cameras), segment_residuals(lines, cameras)):
+        seen = residuals[2][np.isfinite(residuals[2])]
+        assert len(seen) >= 50 and np.median(seen) < 0.5
