@@ -35,39 +35,59 @@ def read_observations(path):
     return points, lines
 
 
+def point_from_views(xs, cameras):
+    """The homogeneous point (4-vector) whose projections by cameras (3x4) best fit xs (pixels, one per
+    camera): DLT, each row normalised."""
+    A = np.array([row for x, P in zip(xs, cameras) for row in (x[0] * P[2] - P[0], x[1] * P[2] - P[1])])
+    return np.linalg.svd(A / np.linalg.norm(A, axis=1, keepdims=True))[2][-1]
+
+
+def point_offset(P, X, x):
+    """Distance (px) of x from the projection of X by P (the sequence's camera matrices come with
+    either sign, so no side of the camera is told apart)."""
+    h = P @ X
+    return float(np.linalg.norm(h[:2] / h[2] - x))
+
+
+def line_from_views(segments, cameras):
+    """Two homogeneous points spanning the 3D line that best fits the planes through each camera and
+    its segment (x0 y0 x1 y1)."""
+    planes = []
+    for s, P in zip(segments, cameras):
+        line = np.cross([s[0], s[1], 1.0], [s[2], s[3], 1.0])
+        planes.append(P.T @ (line / np.hypot(line[0], line[1])))
+    planes = np.array(planes)
+    return np.linalg.svd(planes / np.linalg.norm(planes[:, :3], axis=1, keepdims=True))[2][-2:]
+
+
+def segment_offsets(P, A, B, s):
+    """Distances (px) of the segment's end points from the projection of the line through A and B."""
+    line = np.cross(P @ A, P @ B)
+    line /= np.hypot(line[0], line[1])
+    return abs(line @ [s[0], s[1], 1.0]), abs(line @ [s[2], s[3], 1.0])
+
+
 def point_residuals(points, cameras):
     res = np.full((len(points), len(points[0])), np.nan)
     for i in range(len(points[0])):
         seen = [k for k in range(len(points)) if np.isfinite(points[k][i, 0])]
         if len(seen) < 2:
             continue
-        A = np.array([row for k in seen for row in (points[k][i, 0] * cameras[k][2] - cameras[k][0],
-                                                    points[k][i, 1] * cameras[k][2] - cameras[k][1])])
-        X = np.linalg.svd(A / np.linalg.norm(A, axis=1, keepdims=True))[2][-1]
+        X = point_from_views([points[k][i] for k in seen], [cameras[k] for k in seen])
         for k in seen:
-            h = cameras[k] @ X
-            res[k, i] = np.linalg.norm(h[:2] / h[2] - points[k][i])
+            res[k, i] = point_offset(cameras[k], X, points[k][i])
     return res
 
 
 def segment_residuals(lines, cameras):
-    res = np.full((len(lines), len(lines[0]) if len(lines[0]) else 0), np.nan)
-    for i in range(res.shape[1]):
+    res = np.full((len(lines), len(lines[0])), np.nan)
+    for i in range(len(lines[0])):
         seen = [k for k in range(len(lines)) if np.isfinite(lines[k][i, 0])]
         if len(seen) < 3:
             continue
-        planes = []
+        A, B = line_from_views([lines[k][i] for k in seen], [cameras[k] for k in seen])
         for k in seen:
-            s = lines[k][i]
-            l = np.cross([s[0], s[1], 1.0], [s[2], s[3], 1.0])
-            planes.append(cameras[k].T @ (l / np.hypot(l[0], l[1])))
-        planes = np.array(planes)
-        A, B = np.linalg.svd(planes / np.linalg.norm(planes[:, :3], axis=1, keepdims=True))[2][-2:]
-        for k in seen:
-            l = np.cross(cameras[k] @ A, cameras[k] @ B)
-            l /= np.hypot(l[0], l[1])
-            s = lines[k][i]
-            res[k, i] = np.sqrt(np.mean([(l @ [s[0], s[1], 1.0]) ** 2, (l @ [s[2], s[3], 1.0]) ** 2]))
+            res[k, i] = np.sqrt(np.mean(np.square(segment_offsets(cameras[k], A, B, lines[k][i]))))
     return res
 
 

@@ -32,23 +32,22 @@ import tripose
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "samples" / "python"))
 import vgg  # noqa: E402
-from track_observation_residuals import read_observations  # noqa: E402
+from track_observation_residuals import (line_from_views, point_from_views, point_offset,  # noqa: E402
+                                         read_observations, segment_offsets)
 
 
-def point_outliers_dropped(rows, cameras, threshold):
+def outliers_dropped(rows, cameras, threshold, min_views, fit, offset):
+    """rows (one array per camera, NaN where unseen) with, per feature seen min_views times or more,
+    the observation furthest from the fitted structure dropped while it is more than threshold px
+    off; a point left in two views that disagree loses both."""
     out = [r.copy() for r in rows]
     for i in range(len(out[0])):
         while True:
             views = [j for j in range(len(out)) if np.isfinite(out[j][i, 0])]
-            if len(views) < 2:
+            if len(views) < min_views:
                 break
-            A = np.array([row for j in views for row in (out[j][i, 0] * cameras[j][2] - cameras[j][0],
-                                                         out[j][i, 1] * cameras[j][2] - cameras[j][1])])
-            X = np.linalg.svd(A / np.linalg.norm(A, axis=1, keepdims=True))[2][-1]
-            off = []
-            for j in views:
-                h = cameras[j] @ X
-                off.append(np.linalg.norm(h[:2] / h[2] - out[j][i]) if h[2] * X[3] > 0 else np.inf)
+            structure = fit([out[j][i] for j in views], [cameras[j] for j in views])
+            off = [offset(cameras[j], structure, out[j][i]) for j in views]
             worst = int(np.argmax(off))
             if off[worst] <= threshold:
                 break
@@ -57,31 +56,13 @@ def point_outliers_dropped(rows, cameras, threshold):
     return out
 
 
+def point_outliers_dropped(rows, cameras, threshold):
+    return outliers_dropped(rows, cameras, threshold, 2, point_from_views, point_offset)
+
+
 def segment_outliers_dropped(rows, cameras, threshold):
-    out = [r.copy() for r in rows]
-    for i in range(len(out[0])):
-        while True:
-            views = [j for j in range(len(out)) if np.isfinite(out[j][i, 0])]
-            if len(views) < 3:
-                break
-            planes = []
-            for j in views:
-                s = out[j][i]
-                line = np.cross([s[0], s[1], 1.0], [s[2], s[3], 1.0])
-                planes.append(cameras[j].T @ (line / np.hypot(line[0], line[1])))
-            planes = np.array(planes)
-            A, B = np.linalg.svd(planes / np.linalg.norm(planes[:, :3], axis=1, keepdims=True))[2][-2:]
-            off = []
-            for j in views:
-                line = np.cross(cameras[j] @ A, cameras[j] @ B)
-                line /= np.hypot(line[0], line[1])
-                s = out[j][i]
-                off.append(max(abs(line @ [s[0], s[1], 1.0]), abs(line @ [s[2], s[3], 1.0])))
-            worst = int(np.argmax(off))
-            if off[worst] <= threshold:
-                break
-            out[views[worst]][i] = np.nan
-    return out
+    return outliers_dropped(rows, cameras, threshold, 3, line_from_views,
+                            lambda P, AB, s: max(segment_offsets(P, AB[0], AB[1], s)))
 
 
 def track(points, lines, K, truth, window, threshold, verify):
