@@ -25,6 +25,31 @@ but is off by default and absent from Debian's 4.6). Key points found in an imag
 image show it: +0.25 px on both axes on Model House and Merton College I (doc/real_images.md). */
 const double kSiftUpsamplingOffset = 0.25;
 
+//! Segments (x0, y0, x1, y1) as contrib's key lines of one octave, the image's own, for LBD.
+std::vector<cv::line_descriptor::KeyLine> fullResolutionKeyLines(const std::vector<cv::Vec4f>& segments,
+                                                                 const cv::Size& imageSize)
+{
+    std::vector<cv::line_descriptor::KeyLine> keylines(segments.size());
+    for (size_t i = 0; i < segments.size(); ++i)
+    {
+        const cv::Vec4f& s = segments[i];
+        cv::line_descriptor::KeyLine& k = keylines[i];
+        k.startPointX = k.sPointInOctaveX = s[0];
+        k.startPointY = k.sPointInOctaveY = s[1];
+        k.endPointX = k.ePointInOctaveX = s[2];
+        k.endPointY = k.ePointInOctaveY = s[3];
+        k.lineLength = (float)std::hypot(s[2] - s[0], s[3] - s[1]);
+        k.numOfPixels = (int)std::lround(k.lineLength);
+        k.angle = (float)std::atan2(s[3] - s[1], s[2] - s[0]);
+        k.pt = cv::Point2f((s[0] + s[2]) / 2, (s[1] + s[3]) / 2);
+        k.octave = 0;
+        k.class_id = (int)i;
+        k.response = k.lineLength / (float)std::max(imageSize.width, imageSize.height);
+        k.size = std::abs((s[2] - s[0]) * (s[3] - s[1]));
+    }
+    return keylines;
+}
+
 double millisecondsSince(int64 start)
 {
     return 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
@@ -106,25 +131,7 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
         const std::vector<cv::Vec4f> segments = fitSegmentsToEdges(grey, longEnough);
         times.segmentDetection += millisecondsSince(start);
         start = cv::getTickCount();
-        // LBD describes key lines of one octave, the image's own: the segments at full resolution.
-        std::vector<KeyLine> keylines(segments.size());
-        for (size_t i = 0; i < segments.size(); ++i)
-        {
-            const cv::Vec4f& s = segments[i];
-            KeyLine& k = keylines[i];
-            k.startPointX = k.sPointInOctaveX = s[0];
-            k.startPointY = k.sPointInOctaveY = s[1];
-            k.endPointX = k.ePointInOctaveX = s[2];
-            k.endPointY = k.ePointInOctaveY = s[3];
-            k.lineLength = (float)std::hypot(s[2] - s[0], s[3] - s[1]);
-            k.numOfPixels = (int)std::lround(k.lineLength);
-            k.angle = (float)std::atan2(s[3] - s[1], s[2] - s[0]);
-            k.pt = cv::Point2f((s[0] + s[2]) / 2, (s[1] + s[3]) / 2);
-            k.octave = 0;
-            k.class_id = (int)i;
-            k.response = k.lineLength / (float)std::max(grey.cols, grey.rows);
-            k.size = std::abs((s[2] - s[0]) * (s[3] - s[1]));
-        }
+        std::vector<KeyLine> keylines = fullResolutionKeyLines(segments, grey.size());
         if (!keylines.empty())
             BinaryDescriptor::createBinaryDescriptor()->compute(grey, keylines, out.lineDescriptors);
         times.segmentDescription += millisecondsSince(start);
