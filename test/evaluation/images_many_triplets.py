@@ -47,7 +47,7 @@ def main():
     ap.add_argument("--build", default=str(root / "build"))
     a = ap.parse_args()
     samples = Path(a.build) / "samples"
-    triplets = [(a.model_house, v) for i in range(8) for v in [(i, i + 1, i + 2)]]
+    triplets = [(a.model_house, (i, i + 1, i + 2)) for i in range(8)]
     triplets += [(a.model_house, (i, i + 1, i + 3)) for i in range(7)]
     triplets += [(a.model_house, (i, i + 2, i + 3)) for i in range(7)]
     triplets += [(a.model_house, (i + 2, i + 1, i)) for i in range(8)]

@@ -18,10 +18,7 @@ samples' Cauchy loss) against the camera and against the fit.
 """
 
 import argparse
-import json
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import cv2
@@ -32,6 +29,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "samples" / "python"))
 import pose_from_images  # noqa: E402
 import vgg  # noqa: E402
+from images_vs_poselib import front_end_triplets  # noqa: E402
 
 
 def rotation_deg(Ra, Rb):
@@ -44,13 +42,7 @@ def main():
     ap.add_argument("--tool", default=str(ROOT / "build" / "samples" / "tripose_images_report"))
     ap.add_argument("--threshold", type=float, default=2.0)
     a = ap.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        dump = Path(tmp) / "inputs.jsonl"
-        proc = subprocess.run([a.tool, "--data", a.data, "--threshold", str(a.threshold), "--dump-inputs", str(dump)],
-                              capture_output=True, text=True)
-        if proc.returncode != 0:
-            sys.exit(f"{a.tool} failed ({proc.returncode}): {proc.stderr}")
-        triplets = [json.loads(line) for line in dump.read_text().splitlines() if line.strip()]
+    triplets = front_end_triplets(a.tool, a.data, a.threshold)
 
     print("| views | own features | fit vs camera (deg) | fit sd (deg) | camera (sd of fit) | P+L vs camera | "
           "P vs camera | P+L vs fit | P vs fit |")

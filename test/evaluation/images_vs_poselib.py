@@ -30,6 +30,18 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run_evaluation import _poselib_pose, rotation_error_deg  # noqa: E402
 
 
+def front_end_triplets(tool, data, threshold, seed=0):
+    """tripose_images_report --dump-inputs on the sequence: one dict per run of three consecutive
+    frames (its matches, their structure from views 1-2, the sequence's camera, the report's results)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        dump = Path(tmp) / "inputs.jsonl"
+        proc = subprocess.run([str(tool), "--data", str(data), "--threshold", str(threshold), "--seed", str(seed),
+                               "--dump-inputs", str(dump)], capture_output=True, text=True)
+        if proc.returncode != 0:
+            sys.exit(f"{tool} failed ({proc.returncode}): {proc.stderr}")
+        return [json.loads(line) for line in dump.read_text().splitlines() if line.strip()]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True, help="VGG sequence folder with its images")
@@ -38,13 +50,7 @@ def main():
     ap.add_argument("--seed", type=int, default=0)
     a = ap.parse_args()
 
-    with tempfile.TemporaryDirectory() as tmp:
-        dump = Path(tmp) / "inputs.jsonl"
-        proc = subprocess.run([a.tool, "--data", a.data, "--threshold", str(a.threshold), "--seed", str(a.seed),
-                               "--dump-inputs", str(dump)], capture_output=True, text=True)
-        if proc.returncode != 0:
-            sys.exit(f"{a.tool} failed ({proc.returncode}): {proc.stderr}")
-        triplets = [json.loads(line) for line in dump.read_text().splitlines() if line.strip()]
+    triplets = front_end_triplets(a.tool, a.data, a.threshold, a.seed)
 
     print(f"{a.data}: {len(triplets)} triplets, threshold {a.threshold} px; rotation error (deg), translation "
           "error (% of |t|); PoseLib: points, segments with structure from views 1-2, ms\n")

@@ -29,8 +29,11 @@ def read_observations(path):
         sys.exit(f"{path}: cannot be read")
     points, lines = [], []
     while not fs.getNode(f"points{len(points)}").empty():
-        points.append(fs.getNode(f"points{len(points)}").mat())
-        lines.append(fs.getNode(f"lines{len(lines)}").mat())
+        frame = len(points)
+        # A sequence without one kind of feature writes it as an empty matrix.
+        for name, columns, kind in (("points", 2, points), ("lines", 4, lines)):
+            rows = fs.getNode(f"{name}{frame}").mat()
+            kind.append(np.zeros((0, columns)) if rows is None else rows)
     fs.release()
     return points, lines
 
@@ -67,28 +70,29 @@ def segment_offsets(P, A, B, s):
     return abs(line @ [s[0], s[1], 1.0]), abs(line @ [s[2], s[3], 1.0])
 
 
-def point_residuals(points, cameras):
-    res = np.full((len(points), len(points[0])), np.nan)
-    for i in range(len(points[0])):
-        seen = [k for k in range(len(points)) if np.isfinite(points[k][i, 0])]
-        if len(seen) < 2:
+def residuals_per_frame(rows, cameras, min_views, fit, offset):
+    """(frames x features) residuals (px) of each feature's observations (rows: one array per frame,
+    NaN where unseen) at the structure fitted to those of the features seen min_views times or more;
+    NaN elsewhere."""
+    res = np.full((len(rows), len(rows[0])), np.nan)
+    for i in range(len(rows[0])):
+        seen = [k for k in range(len(rows)) if np.isfinite(rows[k][i, 0])]
+        if len(seen) < min_views:
             continue
-        X = point_from_views([points[k][i] for k in seen], [cameras[k] for k in seen])
+        structure = fit([rows[k][i] for k in seen], [cameras[k] for k in seen])
         for k in seen:
-            res[k, i] = point_offset(cameras[k], X, points[k][i])
+            res[k, i] = offset(cameras[k], structure, rows[k][i])
     return res
+
+
+def point_residuals(points, cameras):
+    return residuals_per_frame(points, cameras, 2, point_from_views, point_offset)
 
 
 def segment_residuals(lines, cameras):
-    res = np.full((len(lines), len(lines[0])), np.nan)
-    for i in range(len(lines[0])):
-        seen = [k for k in range(len(lines)) if np.isfinite(lines[k][i, 0])]
-        if len(seen) < 3:
-            continue
-        A, B = line_from_views([lines[k][i] for k in seen], [cameras[k] for k in seen])
-        for k in seen:
-            res[k, i] = np.sqrt(np.mean(np.square(segment_offsets(cameras[k], A, B, lines[k][i]))))
-    return res
+    """Segments seen in three frames or more (two always fit a line); the RMS of the two end points."""
+    return residuals_per_frame(lines, cameras, 3, line_from_views,
+                               lambda P, AB, s: np.sqrt(np.mean(np.square(segment_offsets(P, AB[0], AB[1], s)))))
 
 
 def main():
