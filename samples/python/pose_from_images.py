@@ -183,6 +183,9 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
         if len(ends):
             keylines = [keyline(i, s, max(image.shape)) for i, s in enumerate(ends)]
             keylines, desc = cv2.line_descriptor.BinaryDescriptor.createBinaryDescriptor().compute(image, keylines)
+            # LBD keeps one descriptor per segment, in order: the rows of ends pair with them (as the C++ front end).
+            if desc is None or len(desc) != len(ends):
+                raise RuntimeError(f"LBD described {0 if desc is None else len(desc)} of {len(ends)} segments")
             out["segments"] = undistort(ends.reshape(-1, 2), K, dist).reshape(-1, 4)
             out["line_desc"] = desc
     return out
