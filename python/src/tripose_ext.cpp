@@ -23,6 +23,7 @@
 #include "linear/multiview_pose_solver.hpp"
 #include "linear/rig_pose_solver.hpp"
 #include "pipeline/pose_pipelines.hpp"
+#include "pipeline/posed_structure.hpp"
 #include "problem/view_set_builder.hpp"
 #include "support/error.hpp"
 
@@ -448,17 +449,18 @@ nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, const
     return out;
 }
 
-void writeStructure(const tripose::RefinedStructure& s, int numPoints, int numLines, nb::dict& out)
+void writeStructure(const std::vector<Eigen::Vector3d>& pointList, const std::vector<Eigen::Vector3d>& lineEnds,
+                    int numPoints, int numLines, nb::dict& out)
 {
     std::vector<double> points(3 * (size_t)numPoints), lines(6 * (size_t)numLines);
     for (int i = 0; i < numPoints; ++i)
         for (int c = 0; c < 3; ++c)
-            points[3 * i + c] = s.points[i](c);
+            points[3 * i + c] = pointList[i](c);
     for (int i = 0; i < numLines; ++i)
         for (int c = 0; c < 3; ++c)
         {
-            lines[6 * i + c] = s.lineEnds[2 * i](c);
-            lines[6 * i + 3 + c] = s.lineEnds[2 * i + 1](c);
+            lines[6 * i + c] = lineEnds[2 * i](c);
+            lines[6 * i + 3 + c] = lineEnds[2 * i + 1](c);
         }
     out["points3d"] = newArray({ (size_t)numPoints, 3 }, points.data());
     out["lines3d"] = newArray({ (size_t)numLines, 6 }, lines.data());
@@ -576,7 +578,7 @@ nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose&
     out["R"] = rotationArray(pose.R);
     out["t"] = vectorArray(pose.t);
     out["rms"] = rms;
-    writeStructure(structure, views.numPoints, views.numLines, out);
+    writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
     writeCovariance(uncertainty, out);
     return out;
 }
@@ -783,8 +785,27 @@ NB_MODULE(_tripose_ext, m)
               out["Rs"] = Rout;
               out["ts"] = tout;
               out["rms"] = rms;
-              writeStructure(structure, views.numPoints, views.numLines, out);
+              writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
               return out;
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("fixed_views"), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+
+    m.def("triangulate_multiview",
+          [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist) {
+              const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 0);
+              tripose::PosedStructure structure;
+              tripose::ViewSet views;
+              {
+                  nb::gil_scoped_release release;
+                  views = tripose::buildPosedViewSet(problem.arguments, problem.rotations, problem.translations);
+                  structure = tripose::triangulateStructure(views);
+              }
+              const size_t numViews = views.views.size();
+              nb::dict out;
+              writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
+              out["point_errors"] = newArray({ (size_t)views.numPoints, numViews }, structure.pointErrors.data());
+              out["line_errors"] = newArray({ (size_t)views.numLines, numViews }, structure.lineErrors.data());
+              return out;
+          },
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none());
 }

@@ -327,6 +327,25 @@ def test_adjust_poses_multiview_catalogue(argument, error, changes):
     expect_rejected(tripose.adjust_poses_multiview, argument, error, **adjust_poses_args(**changes))
 
 
+def triangulate_args(**changes):
+    a = dict(points=MULTI.points, lines=MULTI.lines, K=MULTI.K, Rs=MULTI.Rs + [MULTI.R], ts=MULTI.ts + [MULTI.t])
+    a.update(changes)
+    return a
+
+
+@pytest.mark.parametrize("argument,error,changes", [
+    ("Rs", ValueError, dict(points=MULTI.points[:1], lines=MULTI.lines[:1], Rs=MULTI.Rs[:1], ts=MULTI.ts[:1])),
+    ("ts", ValueError, dict(ts=MULTI.ts[:2])),
+    ("points", ValueError, dict(points=MULTI.points[:3])),
+    ("Rs[3]", ValueError, dict(Rs=MULTI.Rs + [MULTI.R * 2])),
+    ("ts[1]", ValueError, dict(ts=[MULTI.ts[0], np.array([0.0, np.nan, 1.0])] + MULTI.ts[2:] + [MULTI.t])),
+    ("points", ValueError, dict(points=None, lines=None)),
+    ("Rs", TypeError, dict(Rs=np.stack(MULTI.Rs + [MULTI.R]))),
+])
+def test_triangulate_multiview_catalogue(argument, error, changes):
+    expect_rejected(tripose.triangulate_multiview, argument, error, **triangulate_args(**changes))
+
+
 # Accepted variety: float32, any memory layout, lists.
 def float32_exact(a):
     """a rounded to float32 and back: the same values in either precision."""

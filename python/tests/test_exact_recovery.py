@@ -270,3 +270,48 @@ def test_adjust_poses_multiview_three_free_views():
             np.testing.assert_allclose(r["Rs"][k], Rs0[k], rtol=0, atol=4e-16)
             np.testing.assert_array_equal(r["ts"][k], ts0[k])
         assert r["rms"] < 1e-6
+
+
+def _project(K, R, t, X):
+    x = (K @ (R @ X.T + t[:, None])).T
+    return x[:, :2] / x[:, 2:]
+
+
+def _line_distance(p, a, b):
+    d = b - a
+    return np.abs(d[:, 0] * (p[:, 1] - a[:, 1]) - d[:, 1] * (p[:, 0] - a[:, 0])) / np.linalg.norm(d, axis=1)
+
+
+def test_triangulate_multiview_reprojects_onto_every_observation():
+    for seed in range(10):
+        s = multiview_scene(seed, 10, 10, num_known=4)
+        Rs, ts = s.Rs + [s.R], s.ts + [s.t]
+        r = tripose.triangulate_multiview(s.points, s.lines, s.K, Rs, ts)
+        assert r["points3d"].shape == (10, 3) and r["lines3d"].shape == (10, 6)
+        assert r["point_errors"].shape == (10, 5) and r["line_errors"].shape == (10, 5)
+        for v in range(5):
+            seen_p = np.isfinite(s.points[v][:, 0])
+            seen_l = np.isfinite(s.lines[v][:, 0])
+            np.testing.assert_array_equal(np.isnan(r["point_errors"][:, v]), ~seen_p)
+            np.testing.assert_array_equal(np.isnan(r["line_errors"][:, v]), ~seen_l)
+            assert np.all(r["point_errors"][seen_p, v] < 1e-6), seed
+            assert np.all(r["line_errors"][seen_l, v] < 1e-6), seed
+            # The returned structure itself, projected: on the observations.
+            x = _project(s.K, Rs[v], ts[v], r["points3d"][seen_p])
+            assert np.max(np.linalg.norm(x - s.points[v][seen_p], axis=1)) < 1e-6, seed
+            a = _project(s.K, Rs[v], ts[v], r["lines3d"][seen_l, :3])
+            b = _project(s.K, Rs[v], ts[v], r["lines3d"][seen_l, 3:])
+            for end in (0, 2):
+                assert np.max(_line_distance(s.lines[v][seen_l, end:end + 2], a, b)) < 1e-6, seed
+
+
+def test_triangulate_multiview_finds_a_wrong_observation():
+    # A point's observation in one of the five views moved by 8 px: that view's error is the
+    # feature's largest (the others share what the structure's pull leaves them) and above 2 px.
+    s = multiview_scene(4, 10, 0, num_known=4, missing=0.0)
+    points = [p.copy() for p in s.points]
+    points[2][3] += (8.0, 0.0)
+    r = tripose.triangulate_multiview(points, None, s.K, s.Rs + [s.R], s.ts + [s.t])
+    assert int(np.argmax(r["point_errors"][3])) == 2
+    assert r["point_errors"][3, 2] > 2.0
+    assert np.all(np.delete(r["point_errors"], 3, axis=0) < 1e-6)

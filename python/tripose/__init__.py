@@ -47,6 +47,7 @@ __all__ = [
     "estimate_pose_multiview_ransac",
     "refine_pose_multiview",
     "adjust_poses_multiview",
+    "triangulate_multiview",
 ]
 
 ArrayLike = Union[np.ndarray, Sequence[Any], None]
@@ -240,3 +241,23 @@ def adjust_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optiona
     return _ext.adjust_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, flags,
                                        _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist,
                                        int(max_iterations), str(loss), float(loss_scale), float(tolerance))
+
+
+def triangulate_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
+                          K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
+                          dist: ArrayLike = None) -> Dict[str, Any]:
+    """Structure of features seen by views of known pose (V >= 2, every view posed: Rs, ts), and
+    the reprojection error of every observation; each feature triangulated from all the views that
+    see it, as the robust estimators' final inlier test does.
+
+    Returns a dict: points3d (N, 3) and lines3d (M, 6) (two points of each line, on the end-point
+    rays of the first view that sees it), NaN rows for features without structure (seen by fewer
+    than two views, parallel rays, one plane, or behind a view that sees them); point_errors (N, V):
+    the distance in px between each point's projection and its observation; line_errors (M, V): the
+    larger of the two observed end points' distances to the line's image. NaN where a view does not
+    see the feature, inf in every view that sees a feature without structure. A wrong observation
+    pulls the structure towards it: drop the observation with the largest error and triangulate
+    again. A line seen by two views fits both exactly; its errors tell from three views on.
+    """
+    return _ext.triangulate_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K,
+                                      _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist)

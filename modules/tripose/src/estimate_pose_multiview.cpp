@@ -87,7 +87,7 @@ double adjustPosesMultiView(InputArrayOfArrays points, InputArrayOfArrays lines,
         detail::core::RefinedStructure structure;
         const double rms = detail::core::refineSeveralPoses(views, poseOfView, poses, options, &structure);
         detail::writePoseVectors(detail::core::allViewPoses(views, poseOfView, poses), Rs, ts, "Rs", "ts");
-        detail::writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+        detail::writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, points3d, lines3d);
         return rms;
     });
 }

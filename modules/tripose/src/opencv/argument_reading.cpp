@@ -264,6 +264,16 @@ core::ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays l
     return core::buildMultiViewSet(args, rotations, translations, minFeatures);
 }
 
+core::ViewSet readPosedViewsInput(InputArrayOfArrays points, InputArrayOfArrays lines,
+                                  InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                                  InputArrayOfArrays Rs, InputArrayOfArrays ts)
+{
+    std::vector<core::ArgumentMatrix> rotations, translations;
+    const core::ProblemArguments args = readPosedViewArguments(points, lines, cameraMatrix, distCoeffs, Rs, ts, 0,
+                                                               "views", "one per view", rotations, translations);
+    return core::buildPosedViewSet(args, rotations, translations);
+}
+
 core::ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArrays lines,
                                     InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                     InputArrayOfArrays Rs, InputArrayOfArrays ts, InputArray fixedViews,

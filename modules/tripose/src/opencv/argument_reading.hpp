@@ -39,6 +39,11 @@ core::ViewSet readMultiViewInput(InputArrayOfArrays points, InputArrayOfArrays l
                                  InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
                                  int minFeatures);
 
+//! Views of known pose only (triangulateMultiView()).
+core::ViewSet readPosedViewsInput(InputArrayOfArrays points, InputArrayOfArrays lines,
+                                  InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
+                                  InputArrayOfArrays Rs, InputArrayOfArrays ts);
+
 //! Several views whose poses are refined together (adjustPosesMultiView()).
 core::ViewSet readSeveralPosesInput(InputArrayOfArrays points, InputArrayOfArrays lines,
                                     InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,

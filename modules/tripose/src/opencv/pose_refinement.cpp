@@ -28,7 +28,7 @@ double refineGivenPose(const core::ViewSet& views, InputOutputArray R, InputOutp
     core::PoseCovariance uncertainty;
     const double rms = core::refineInitialPose(views, pose, options, &structure, wantCovariance ? &uncertainty : nullptr);
     writePose(&pose, R, t);
-    writeStructure(structure, views.numPoints, views.numLines, points3d, lines3d);
+    writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, points3d, lines3d);
     if (wantCovariance)
         writeCovariance(uncertainty, covariance, noiseVariance);
     return rms;

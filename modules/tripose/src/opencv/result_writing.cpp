@@ -121,8 +121,8 @@ int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, Output
     return found ? estimate.numInliers : 0;
 }
 
-void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
-                    OutputArray lines3d)
+void writeStructure(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& lineEnds,
+                    int numPoints, int numLines, OutputArray points3d, OutputArray lines3d)
 {
     if (points3d.needed())
     {
@@ -130,7 +130,7 @@ void writeStructure(const core::RefinedStructure& structure, int numPoints, int 
         Mat out = points3d.getMat();
         for (int i = 0; i < numPoints; ++i)
             for (int c = 0; c < 3; ++c)
-                out.at<double>(i, c) = structure.points[i](c);
+                out.at<double>(i, c) = points[i](c);
     }
     if (lines3d.needed())
     {
@@ -139,10 +139,22 @@ void writeStructure(const core::RefinedStructure& structure, int numPoints, int 
         for (int i = 0; i < numLines; ++i)
             for (int c = 0; c < 3; ++c)
             {
-                out.at<double>(i, c) = structure.lineEnds[2 * i](c);
-                out.at<double>(i, 3 + c) = structure.lineEnds[2 * i + 1](c);
+                out.at<double>(i, c) = lineEnds[2 * i](c);
+                out.at<double>(i, 3 + c) = lineEnds[2 * i + 1](c);
             }
     }
+}
+
+void writeFeatureViewMatrix(const std::vector<double>& values, int numFeatures, int numViews, OutputArray out)
+{
+    if (!out.needed())
+        return;
+    CV_Assert(values.size() == (size_t)numFeatures * numViews);
+    out.create(numFeatures, numViews, CV_64F);
+    Mat m = out.getMat();
+    for (int i = 0; i < numFeatures; ++i)
+        for (int v = 0; v < numViews; ++v)
+            m.at<double>(i, v) = values[(size_t)i * numViews + v];
 }
 
 } // namespace detail

@@ -54,9 +54,13 @@ int writeCandidateEstimate(const core::ViewSet& views, const std::vector<core::S
 int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,
                         OutputArray pointInliers, OutputArray lineInliers);
 
-//! The refined structure (Nx3 points, Mx6 line end points, CV_64F), where wanted.
-void writeStructure(const core::RefinedStructure& structure, int numPoints, int numLines, OutputArray points3d,
-                    OutputArray lines3d);
+//! Structure as Nx3 points and Mx6 line end points (CV_64F), where wanted: @p points holds N points,
+//! @p lineEnds two end points per line.
+void writeStructure(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& lineEnds,
+                    int numPoints, int numLines, OutputArray points3d, OutputArray lines3d);
+
+//! Per-feature, per-view values (@p values[feature * views + view]) as a features x views CV_64F matrix.
+void writeFeatureViewMatrix(const std::vector<double>& values, int numFeatures, int numViews, OutputArray out);
 
 } // namespace detail
 } // namespace tripose

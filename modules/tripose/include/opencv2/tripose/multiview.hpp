@@ -173,6 +173,53 @@ CV_EXPORTS_W double adjustPosesMultiView(
     const RefineParams& params = RefineParams(),
     OutputArray points3d = noArray(), OutputArray lines3d = noArray());
 
+/** @brief Structure of points and lines seen by views of known pose, and the reprojection error of
+every observation: triangulation from posed views, and the check of a tracker's links.
+
+V >= 2 views at world poses \f$[R_k | t_k]\f$, each mapping a world point \f$X\f$ to
+\f$x \sim K_k(R_k X + t_k)\f$. Each feature is triangulated from every view that sees it (a point by
+least squares whose rows approximate pixel errors, a line from the planes through its image lines),
+as the final inlier test of the robust estimators does, and measured in each of those views. A
+feature seen by one view (or none) has no structure; neither has a point whose rays are parallel, a
+line whose planes coincide, or a feature that lies behind a view that sees it (for a line, the part
+of it the view saw).
+
+A wrong observation pulls the structure towards it and shares its error with the feature's other
+observations, so the largest error of a feature points to its wrong observation only when the
+others agree; to clean a track, drop that observation and triangulate again. A line seen by two
+views fits both exactly (two planes always meet): its errors tell something from three views on,
+a point's from two.
+
+@param points One array per view (Nx2 1-channel or 1xN/Nx1 2-channel, CV_32F or CV_64F, pixels), the
+same N rows in every view, NaN rows where a view does not see a point, an empty array where it sees
+none. An empty vector means no points.
+@param lines One array per view likewise: Mx4 segments or Mx3 homogeneous lines (one kind in all views).
+@param cameraMatrix One 3x3 intrinsic matrix shared by every view, or a vector of V.
+@param distCoeffs Distortion coefficients, one vector or V; empty for none. The errors are measured
+on the undistorted observations, in pixels of the camera matrix.
+@param Rs The V views' world rotations (3x3 or Rodrigues, CV_32F/CV_64F).
+@param ts The V views' world translations (3 elements each).
+@param points3d Output: Nx3 CV_64F points in the world frame; NaN rows for the points without structure.
+@param lines3d Output: Mx6 CV_64F, two points of each line: those closest to the rays of the end
+points of the first view that sees it (as refinePoseMultiView() returns them); NaN rows for the lines
+without structure.
+@param pointErrors Optional output: NxV CV_64F, the distance (px) between each point's projection and
+its observation in each view; NaN where the view does not see the point, +inf in every view that
+sees a point without structure.
+@param lineErrors Optional output: MxV CV_64F, the larger of the distances (px) of the two observed
+end points to the line's image in each view; NaN and +inf likewise.
+@return The number of features (points + lines) with structure.
+@throws cv::Exception naming the argument when the inputs do not fit the description above (as for
+adjustPosesMultiView(): fewer than two views, counts that differ between views, an invalid rotation,
+a non-finite observation that is not a whole NaN row).
+*/
+CV_EXPORTS_W int triangulateMultiView(
+    InputArrayOfArrays points, InputArrayOfArrays lines,
+    CV_ND InputArrayOfArrays cameraMatrix, CV_ND InputArrayOfArrays distCoeffs,
+    InputArrayOfArrays Rs, InputArrayOfArrays ts,
+    OutputArray points3d, OutputArray lines3d,
+    OutputArray pointErrors = noArray(), OutputArray lineErrors = noArray());
+
 //! @}
 
 } // namespace tripose

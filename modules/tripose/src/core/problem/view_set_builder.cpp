@@ -478,6 +478,15 @@ ViewSet buildMultiViewSet(const ProblemArguments& arguments, const std::vector<A
     return set;
 }
 
+ViewSet buildPosedViewSet(const ProblemArguments& arguments, const std::vector<ArgumentMatrix>& Rs,
+                          const std::vector<ArgumentMatrix>& ts)
+{
+    ViewSet set = readPosedViews(arguments, Rs, ts, "views");
+    TRIPOSE_ASSERT(set.views.size() == Rs.size());
+    requireFeatures(set.numPoints, set.numLines, 1);
+    return set;
+}
+
 ViewSet buildSeveralPosesSet(const ProblemArguments& arguments, const std::vector<ArgumentMatrix>& Rs,
                              const std::vector<ArgumentMatrix>& ts, const std::vector<int>& fixedViews,
                              const char* fixedViewsName, std::vector<int>& poseOfView,

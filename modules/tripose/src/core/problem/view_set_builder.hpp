@@ -58,6 +58,12 @@ ViewSet buildSeveralPosesSet(const ProblemArguments& arguments, const std::vecto
                              const char* fixedViewsName, std::vector<int>& poseOfView,
                              std::vector<CameraPose>& initialPoses);
 
+/** Views of known pose only (triangulateStructure()): views = {view 0, ..., view V-1} at the world
+poses Rs[k], ts[k], V >= 2; at least one feature. A feature may be seen by any number of views.
+*/
+ViewSet buildPosedViewSet(const ProblemArguments& arguments, const std::vector<ArgumentMatrix>& Rs,
+                          const std::vector<ArgumentMatrix>& ts);
+
 /** A rotation given as a 3x3 matrix or a 3-element rotation vector (axis times angle), checked
 (finite, orthonormal within the input precision, det +1) and returned as the nearest exact rotation.
 */

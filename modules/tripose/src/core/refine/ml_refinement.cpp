@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "../geometry/conditioning.hpp"
+#include "../geometry/feature_refit.hpp"
 #include "../geometry/line_parameterization.hpp"
 #include "../geometry/triangulation.hpp"
 #include "ml_refinement.hpp"
@@ -494,14 +495,11 @@ private:
                 const View& view = set_.views[v];
                 if (!view.seesLine(i))
                     continue;
-                const CameraPose viewPose = view.poseFor(mountOf(e, v));
+                Eigen::Vector3d ends[2];
+                lineEndsSeenBy(view, view.poseFor(mountOf(e, v)), i, L, ends[0], ends[1]);
                 for (int end = 0; end < 2; ++end)
-                {
-                    const Eigen::Vector3d ray = viewPose.R.transpose() * view.calibratedLineEnd(i, end).homogeneous();
-                    const Eigen::Vector3d X = closestPointToRay(L, ray, viewPose.centre());
-                    if (X.allFinite())
-                        out->lineEnds[2 * k + end] = X;
-                }
+                    if (ends[end].allFinite())
+                        out->lineEnds[2 * k + end] = ends[end];
                 break;
             }
         }

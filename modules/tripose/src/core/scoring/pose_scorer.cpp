@@ -12,6 +12,7 @@
 #include "../support/random.hpp"
 
 #include "../geometry/conditioning.hpp"
+#include "../geometry/feature_refit.hpp"
 #include "../geometry/residuals.hpp"
 #include "../geometry/segment_cheirality.hpp"
 #include "../geometry/triangulation.hpp"
@@ -501,55 +502,34 @@ bool PoseScorer::slidLineResidual2(const Intrinsics& camera, const CameraPose& p
 void PoseScorer::refitResiduals(const CameraPose& pose, std::vector<double>& pointResiduals,
                                 std::vector<double>& lineResiduals) const
 {
-    const double inf = std::numeric_limits<double>::infinity();
     const std::vector<CameraPose> poses = viewPoses(set_, pose);
-    const int numViews = (int)set_.views.size();
+    std::vector<Eigen::Vector2d> residuals;
+    // RMS over every coordinate of the views that see the feature (two per view).
+    const auto rms = [&](bool point, int i) {
+        double sum = 0;
+        int count = 0;
+        for (size_t v = 0; v < set_.views.size(); ++v)
+            if (point ? set_.views[v].seesPoint(i) : set_.views[v].seesLine(i))
+            {
+                sum += residuals[v].squaredNorm();
+                count += 2;
+            }
+        return std::sqrt(sum / count);
+    };
+    const double inf = std::numeric_limits<double>::infinity();
     pointResiduals.assign(set_.numPoints, inf);
     for (int i = 0; i < set_.numPoints; ++i)
     {
         Eigen::Vector3d X;
-        if (!(triangulatePoint(set_, poses.data(), i, ViewSelection::All, X, kPointTriangulationConditioning,
-                               minDepth_) > 0))
-            continue;
-        double sum = 0;
-        int count = 0;
-        bool ok = true;
-        Eigen::Vector2d r;
-        for (int v = 0; v < numViews && ok; ++v)
-        {
-            const View& view = set_.views[v];
-            if (!view.seesPoint(i))
-                continue;
-            ok = pointResidual(view.camera, poses[v].toCamera(X), view.points[i], r, nullptr, minDepth_);
-            sum += r.squaredNorm();
-            count += 2;
-        }
-        if (ok)
-            pointResiduals[i] = std::sqrt(sum / count);
+        if (refitPoint(set_, poses.data(), i, minDepth_, X, residuals))
+            pointResiduals[i] = rms(true, i);
     }
     lineResiduals.assign(set_.numLines, inf);
     for (int i = 0; i < set_.numLines; ++i)
     {
         PluckerLine L;
-        if (!triangulateLine(set_, poses.data(), i, ViewSelection::All, L, 0.0))
-            continue;
-        double sum = 0;
-        int count = 0;
-        bool ok = true;
-        Eigen::Vector2d r;
-        for (int v = 0; v < numViews && ok; ++v)
-        {
-            const View& view = set_.views[v];
-            if (!view.seesLine(i))
-                continue;
-            ok = !segmentBehindCamera(poses[v], L, view.calibratedLineEnd(i, 0), view.calibratedLineEnd(i, 1)) &&
-                 lineResidual(view.camera, lineMomentInCamera(poses[v], L), view.lineEnds[2 * i],
-                              view.lineEnds[2 * i + 1], r);
-            sum += r.squaredNorm();
-            count += 2;
-        }
-        if (ok)
-            lineResiduals[i] = std::sqrt(sum / count);
+        if (refitLine(set_, poses.data(), i, L, residuals))
+            lineResiduals[i] = rms(false, i);
     }
 }
 
