@@ -11,7 +11,7 @@
 // through the image front end instead of the sequence's files.
 //
 //   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
-//                 [--method ransac|linear] [--threshold px] [--seed n] [--from-images]
+//                 [--method ransac|linear] [--threshold px] [--seed n] [--check-tracks 0|1] [--from-images]
 
 #include <algorithm>
 #include <cmath>
@@ -39,13 +39,16 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--observations tracks.yml]\n"
+    "                     [--check-tracks 0|1] [--observations tracks.yml]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
     "  --local-refine 1: after each registration, refine the window's registered frames, the new one and\n"
     "                 the structure together against the earlier frames (a local bundle adjustment;\n"
     "                 default 0: off)\n"
+    "  --check-tracks 1 (default): before a frame is registered, drop each feature's window observations\n"
+    "                 that disagree with the window's poses by more than the threshold; after, start new\n"
+    "                 tracks from the frame's observations that the registration rejected. 0: off\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
     "  --observations also write the tracks the frames were registered from: per frame k (from 0) K<k>,\n"
@@ -62,12 +65,21 @@ struct Options
     tripose_samples::TrackOptions track;
 };
 
+//! A 0|1 option's value.
+bool parseSwitch(const std::string& arg, const std::string& value)
+{
+    const int on = tripose_samples::parseInteger(arg, value, 0.0);
+    if (on > 1)
+        throw tripose_samples::argumentError(arg, "expected 0 or 1, got '" + value + "'");
+    return on == 1;
+}
+
 Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--observations" };
+                                             "--local-refine", "--check-tracks", "--observations" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -85,12 +97,9 @@ Options parseArguments(int argc, char** argv)
         else if (arg == "--method")
             o.method = value;
         else if (arg == "--local-refine")
-        {
-            const int on = parseInteger(arg, value, 0.0);
-            if (on > 1)
-                throw argumentError(arg, "expected 0 or 1, got '" + value + "'");
-            o.track.localAdjustment = on == 1;
-        }
+            o.track.localAdjustment = parseSwitch(arg, value);
+        else if (arg == "--check-tracks")
+            o.track.checkTracks = parseSwitch(arg, value);
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--threshold")
@@ -333,7 +342,8 @@ int main(int argc, char** argv)
         tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
             fs << "sequence" << options.data << "correspondences" << (options.fromImages ? "images" : "sequence")
                << "window" << options.track.window << "method" << options.method
-               << "local_refine" << (options.track.localAdjustment ? 1 : 0);
+               << "local_refine" << (options.track.localAdjustment ? 1 : 0)
+               << "check_tracks" << (options.track.checkTracks ? 1 : 0);
             fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
             fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
             fs << "path_length" << pathLength << "drift_percent" << drift;

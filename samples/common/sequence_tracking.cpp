@@ -49,37 +49,185 @@ std::vector<int> sharedFeatures(const std::vector<cv::Mat>& rows, int frame, con
     return shared;
 }
 
+
+/** What frame @p frame is registered from: the features it sees with at least two of the frames
+@p known, and their observations (one array per known frame, then the frame's own, as
+estimatePoseMultiView() takes them). */
+struct Registration
+{
+    std::vector<int> points, lines; //!< The features' indices in the sequence.
+    std::vector<cv::Mat> p, l, K, Rs, ts;
+};
+
+//! Rows of @p rows (N x width, CV_64F) set to NaN: observation @p i of the frame is dropped.
+void drop(cv::Mat& rows, int i)
+{
+    rows.row(i).setTo(std::numeric_limits<double>::quiet_NaN());
+}
+
+/** Drops, feature by feature, the observation of the known frames furthest from the structure
+triangulated from them (triangulateMultiView()) while it is more than @p threshold px off, and
+returns the rows of the features that keep two known observations. @p p and @p l hold the known
+frames' arrays (updated in place), @p Rs, @p ts their poses. */
+void dropInconsistentObservations(std::vector<cv::Mat>& p, std::vector<cv::Mat>& l, const std::vector<cv::Mat>& K,
+                                  const std::vector<cv::Mat>& Rs, const std::vector<cv::Mat>& ts, double threshold,
+                                  std::vector<int>& keepPoints, std::vector<int>& keepLines)
+{
+    const int numPoints = p.empty() ? 0 : p[0].rows, numLines = l.empty() ? 0 : l[0].rows;
+    // Each round drops at most one observation per feature; a feature has at most one per frame.
+    for (size_t round = 0; round < Rs.size(); ++round)
+    {
+        cv::Mat points3d, lines3d, pointErrors, lineErrors;
+        bool dropped = false;
+        try
+        {
+            cv::tripose::triangulateMultiView(p, l, K, cv::noArray(), Rs, ts, points3d, lines3d, pointErrors,
+                                              lineErrors);
+        }
+        catch (const cv::Exception&)
+        {
+            break; // no feature left seen by the known frames: nothing to check
+        }
+        for (int kind = 0; kind < 2; ++kind)
+        {
+            const cv::Mat& errors = kind == 0 ? pointErrors : lineErrors;
+            std::vector<cv::Mat>& rows = kind == 0 ? p : l;
+            for (int i = 0; i < errors.rows; ++i)
+            {
+                double worst = 0;
+                int at = -1;
+                for (int v = 0; v < errors.cols; ++v)
+                {
+                    const double e = errors.at<double>(i, v);
+                    if (!std::isnan(e) && e > worst)
+                    {
+                        worst = e;
+                        at = v;
+                    }
+                }
+                if (at >= 0 && worst > threshold)
+                {
+                    drop(rows[at], i);
+                    dropped = true;
+                }
+            }
+        }
+        if (!dropped)
+            break;
+    }
+    keepPoints.clear();
+    keepLines.clear();
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const std::vector<cv::Mat>& rows = kind == 0 ? p : l;
+        std::vector<int>& keep = kind == 0 ? keepPoints : keepLines;
+        for (int i = 0; i < (kind == 0 ? numPoints : numLines); ++i)
+        {
+            int count = 0;
+            for (const cv::Mat& m : rows)
+                count += seen(m, i) ? 1 : 0;
+            if (count >= 2)
+                keep.push_back(i);
+        }
+    }
+}
+
+/** The registration data of frame @p frame against the frames @p known; with @p checkThreshold > 0
+the known frames' observations are checked first (dropInconsistentObservations()). False when fewer
+than four features remain. */
+bool buildRegistration(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
+                       const std::vector<int>& known, double checkThreshold, Registration& out)
+{
+    out = Registration();
+    out.points = sharedFeatures(sequence.points, frame, known);
+    out.lines = sharedFeatures(sequence.lines, frame, known);
+    for (int w : known)
+    {
+        out.p.push_back(selectRows(sequence.points[w], out.points));
+        out.l.push_back(selectRows(sequence.lines[w], out.lines));
+        out.K.push_back(sequence.cameraMatrices[w]);
+        out.Rs.push_back(frames[w].R);
+        out.ts.push_back(frames[w].t);
+    }
+    if (out.points.empty())
+        out.p.clear();
+    if (out.lines.empty())
+        out.l.clear();
+    if (checkThreshold > 0 && out.points.size() + out.lines.size() >= (size_t)kMinFeatures)
+    {
+        std::vector<int> keepPoints, keepLines;
+        dropInconsistentObservations(out.p, out.l, out.K, out.Rs, out.ts, checkThreshold, keepPoints, keepLines);
+        for (cv::Mat& m : out.p)
+            m = selectRows(m, keepPoints);
+        for (cv::Mat& m : out.l)
+            m = selectRows(m, keepLines);
+        for (int& i : keepPoints)
+            i = out.points[i];
+        for (int& i : keepLines)
+            i = out.lines[i];
+        out.points = keepPoints;
+        out.lines = keepLines;
+        if (out.points.empty())
+            out.p.clear();
+        if (out.lines.empty())
+            out.l.clear();
+    }
+    if (out.points.size() + out.lines.size() < (size_t)kMinFeatures)
+        return false;
+    if (!out.points.empty())
+        out.p.push_back(selectRows(sequence.points[frame], out.points));
+    if (!out.lines.empty())
+        out.l.push_back(selectRows(sequence.lines[frame], out.lines));
+    out.K.push_back(sequence.cameraMatrices[frame]);
+    return true;
+}
+
+/** Frame @p frame's observations of @p features, and the later frames' of the same tracks, moved to
+new tracks (rows appended to every frame's array, NaN in the earlier frames). */
+void splitTracks(std::vector<cv::Mat>& rows, int frame, const std::vector<int>& features)
+{
+    if (features.empty())
+        return;
+    for (int f = 0; f < (int)rows.size(); ++f)
+    {
+        cv::Mat& m = rows[f];
+        cv::Mat added((int)features.size(), m.cols, CV_64F, cv::Scalar::all(std::numeric_limits<double>::quiet_NaN()));
+        if (f >= frame)
+            for (size_t k = 0; k < features.size(); ++k)
+            {
+                m.row(features[k]).copyTo(added.row((int)k));
+                drop(m, features[k]);
+            }
+        cv::vconcat(m, added, m);
+    }
+}
+
+//! The entries of @p features whose @p inliers flag (CV_8U, one per entry) is zero.
+std::vector<int> rejected(const std::vector<int>& features, const cv::Mat& inliers)
+{
+    std::vector<int> out;
+    for (size_t k = 0; k < features.size(); ++k)
+        if (inliers.at<uchar>((int)k) == 0)
+            out.push_back(features[k]);
+    return out;
+}
+
 } // namespace
 
 bool registrationViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
                  const std::vector<int>& known, std::vector<cv::Mat>& p, std::vector<cv::Mat>& l,
                  std::vector<cv::Mat>& K, std::vector<cv::Mat>& Rs, std::vector<cv::Mat>& ts, int& features)
 {
-    const std::vector<int> points = sharedFeatures(sequence.points, frame, known);
-    const std::vector<int> lines = sharedFeatures(sequence.lines, frame, known);
-    features = (int)(points.size() + lines.size());
-    if (features < kMinFeatures)
+    Registration r;
+    const bool enough = buildRegistration(sequence, frames, frame, known, 0, r);
+    features = (int)(r.points.size() + r.lines.size());
+    if (!enough)
         return false;
-    p.clear();
-    l.clear();
-    K.clear();
-    Rs.clear();
-    ts.clear();
-    for (int w : known)
-    {
-        p.push_back(selectRows(sequence.points[w], points));
-        l.push_back(selectRows(sequence.lines[w], lines));
-        K.push_back(sequence.cameraMatrices[w]);
-        Rs.push_back(frames[w].R);
-        ts.push_back(frames[w].t);
-    }
-    p.push_back(selectRows(sequence.points[frame], points));
-    l.push_back(selectRows(sequence.lines[frame], lines));
-    K.push_back(sequence.cameraMatrices[frame]);
-    if (points.empty())
-        p.clear();
-    if (lines.empty())
-        l.clear();
+    p = r.p;
+    l = r.l;
+    K = r.K;
+    Rs = r.Rs;
+    ts = r.ts;
     return true;
 }
 
@@ -164,7 +312,7 @@ void adjustWindow(const SequenceObservations& sequence, std::vector<TrackedFrame
 
 } // namespace
 
-std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options)
+std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const TrackOptions& options)
 {
     CV_Assert(options.window >= 2);
     const int F = (int)sequence.cameraMatrices.size();
@@ -175,6 +323,7 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
     sequence.t0.convertTo(frames[0].t, CV_64F);
     sequence.R1.convertTo(frames[1].R, CV_64F);
     sequence.t1.convertTo(frames[1].t, CV_64F);
+    const double checkThreshold = options.checkTracks && options.robust ? options.ransac.threshold : 0;
 
     for (int k = 2; k < F; ++k)
     {
@@ -184,19 +333,23 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
         for (int j = k - 1; j >= 0 && (int)window.size() < options.window; --j)
             if (frames[j].status != FRAME_LOST)
                 window.insert(window.begin(), j);
-        std::vector<cv::Mat> p, l, K, Rs, ts;
         frame.knownViews = (int)window.size();
-        if (!registrationViews(sequence, frames, k, window, p, l, K, Rs, ts, frame.features))
+        Registration r;
+        const bool enough = buildRegistration(sequence, frames, k, window, checkThreshold, r);
+        frame.features = (int)(r.points.size() + r.lines.size());
+        if (!enough)
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
             continue; // lost: fewer than four features shared with the window
         }
 
-        cv::Mat R, t;
+        cv::Mat R, t, pointInliers, lineInliers;
         if (options.robust)
-            frame.inliers = cv::tripose::estimatePoseMultiViewRansac(p, l, K, cv::noArray(), Rs, ts, R, t, options.ransac);
+            frame.inliers = cv::tripose::estimatePoseMultiViewRansac(r.p, r.l, r.K, cv::noArray(), r.Rs, r.ts, R, t,
+                                                                     options.ransac, pointInliers, lineInliers);
         else
-            frame.inliers = cv::tripose::estimatePoseMultiView(p, l, K, cv::noArray(), Rs, ts, R, t) > 0 ? frame.features : 0;
+            frame.inliers = cv::tripose::estimatePoseMultiView(r.p, r.l, r.K, cv::noArray(), r.Rs, r.ts, R, t) > 0 ?
+                                frame.features : 0;
         if (frame.inliers == 0 || R.empty())
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
@@ -205,6 +358,11 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
         frame.status = FRAME_REGISTERED;
         frame.R = R;
         frame.t = t;
+        if (options.checkTracks && options.robust)
+        {
+            splitTracks(sequence.points, k, rejected(r.points, pointInliers));
+            splitTracks(sequence.lines, k, rejected(r.lines, lineInliers));
+        }
         if (options.localAdjustment)
             adjustWindow(sequence, frames, window, k, options);
         frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
@@ -214,9 +372,9 @@ std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, co
 
 std::vector<std::string> trackResultKeys()
 {
-    return { "sequence",           "correspondences", "window",      "method",        "local_refine",
-             "poses",              "status",          "features",    "inliers",       "rotation_error_deg",
-             "position_error",     "path_length",     "drift_percent", "ms_per_frame" };
+    return { "sequence",           "correspondences", "window",        "method",       "local_refine",
+             "check_tracks",       "poses",           "status",        "features",     "inliers",
+             "rotation_error_deg", "position_error",  "path_length",   "drift_percent", "ms_per_frame" };
 }
 
 } // namespace tripose_samples

@@ -33,6 +33,13 @@ struct TrackOptions
     included, and the structure refined together (adjustPosesMultiView, Huber loss at the RANSAC
     threshold) against every earlier frame with a pose, held fixed (frames 0 and 1 among them). */
     bool localAdjustment = false;
+    /** Track checks with robust registration, at the RANSAC threshold: before a frame is registered, each feature's
+    observations in the window are measured against the window's poses (triangulateMultiView()) and
+    the furthest dropped while it is off by more than the threshold (a feature left in fewer than two
+    window frames is not used); after it is registered, its observations of the
+    features the registration rejected start new tracks, so that a wrong link does not carry on into
+    the next frames' windows. */
+    bool checkTracks = true;
 };
 
 enum FrameStatus
@@ -71,10 +78,11 @@ double adjustFrames(const SequenceObservations& sequence, std::vector<TrackedFra
 
 /** Tracks the whole sequence. A lost frame gets no pose and is left out of later windows: the window
 holds the last @p options.window frames that have a pose, so tracking resumes as soon as a frame
-shares four features with them. Frames 0 and 1 are given.
+shares four features with them. Frames 0 and 1 are given. With TrackOptions::checkTracks the tracks
+of @p sequence are split where a registration rejects them (rows appended to every frame).
 @throws cv::Exception when the observations are inconsistent (from the module, naming the argument).
 */
-std::vector<TrackedFrame> trackSequence(const SequenceObservations& sequence, const TrackOptions& options);
+std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const TrackOptions& options);
 
 //! The top-level keys of tripose_track's result file (poses: one row per frame, R row-major then t),
 //! which tools that read the file back check its keys against.
