@@ -872,5 +872,34 @@ class tripose_test(NewOpenCVTests):
             except cv.error as e:
                 self.assertTrue(names_argument(str(e), name), str(e))
 
+    def test_triangulate_multiview(self):
+        self.assertTrue(hasattr(cv.tripose, 'triangulateMultiView'), 'cv.tripose.triangulateMultiView is missing from the bindings')
+        # Every view posed (the known views and the new one at its true pose): the structure
+        # reprojects onto every observation, NaN errors where a view does not see a feature.
+        scene = make_multiview_scene(4, 12, 12, 5)
+        Rs = list(scene.Rs) + [scene.R]
+        ts = list(scene.ts) + [scene.t]
+        count, points3d, lines3d, point_errors, line_errors = cv.tripose.triangulateMultiView(
+            scene.points, scene.lines, scene.K, None, Rs, ts)
+        self.assertEqual(count, 24)
+        self.assertEqual(points3d.shape, (12, 3))
+        self.assertEqual(lines3d.shape, (12, 6))
+        self.assertEqual(point_errors.shape, (12, 5))
+        self.assertEqual(line_errors.shape, (12, 5))
+        for v in range(5):
+            seen = ~np.isnan(np.asarray(scene.points[v], np.float64)[:, 0])
+            np.testing.assert_array_equal(np.isnan(point_errors[:, v]), ~seen)
+            self.assertTrue(np.all(point_errors[seen, v] < 1e-6), 'view %d' % v)
+            X = np.asarray(points3d[seen], np.float64)
+            x = (scene.K @ (np.asarray(Rs[v], np.float64) @ X.T + np.asarray(ts[v], np.float64).reshape(3, 1))).T
+            x = x[:, :2] / x[:, 2:]
+            self.assertLess(np.max(np.abs(x - np.asarray(scene.points[v], np.float64)[seen])), 1e-6, 'view %d' % v)
+        self.assertTrue(np.all(np.nan_to_num(line_errors, nan=0.0) < 1e-6))
+        try:
+            cv.tripose.triangulateMultiView(scene.points[:1], scene.lines[:1], scene.K, None, Rs[:1], ts[:1])
+            self.fail('one view was accepted')
+        except cv.error as e:
+            self.assertTrue(names_argument(str(e), 'Rs'), str(e))
+
 if __name__ == '__main__':
     NewOpenCVTests.bootstrap()
