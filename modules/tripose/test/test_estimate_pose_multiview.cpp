@@ -6,7 +6,7 @@
 // noise-free scenes where every feature is seen by a random subset of the known views, the
 // three-view function as its two-view case, the input errors, and tracking a VGG sequence.
 
-#include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 #include "tripose_support/random_draws.hpp"
 
@@ -187,19 +187,6 @@ TEST(Tripose_MultiView, the_world_frame_is_arbitrary)
     ASSERT_GT(cv::tripose::estimatePoseMultiView(s.points, s.lines, s.K, noArray(), Rs, ts, R2, t2), 0);
     EXPECT_LT(cv::norm(R2, R * G.t(), NORM_INF), 1e-7);
     EXPECT_LT(cv::norm(t2, Mat(t - R * G.t() * g), NORM_INF), 1e-6 * cv::norm(g, NORM_L2));
-}
-
-void expectNamed(const std::function<void()>& call, const std::string& name)
-{
-    try
-    {
-        call();
-        ADD_FAILURE() << "no exception; expected one naming " << name;
-    }
-    catch (const cv::Exception& e)
-    {
-        EXPECT_NE(std::string::npos, e.err.find(name)) << "expected " << name << ": " << e.err;
-    }
 }
 
 TEST(Tripose_MultiView, bad_input_is_named)

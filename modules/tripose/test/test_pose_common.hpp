@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,20 @@
 #include "../src/core/geometry/camera.hpp"
 
 namespace opencv_test {
+
+//! Expects @p call to throw a cv::Exception whose message names @p name (an argument, a key).
+inline void expectNamed(const std::function<void()>& call, const std::string& name)
+{
+    try
+    {
+        call();
+        ADD_FAILURE() << "no exception; expected one naming " << name;
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string::npos, e.err.find(name)) << "expected " << name << ": " << e.err;
+    }
+}
 
 //! A true pose (@p Rtrue, @p ttrue) turned by @p degrees about a random axis, its translation moved
 //! by @p fraction of its norm in a random direction: a start for refinement tests.

@@ -6,7 +6,7 @@
 // noise-free scenes, a wrong observation found by its error, features without structure, and the
 // input errors.
 
-#include "test_precomp.hpp"
+#include "test_pose_common.hpp"
 
 #include <functional>
 #include <limits>
@@ -193,19 +193,6 @@ TEST(Tripose_TriangulateMultiView, features_without_structure_are_nan_and_their_
     }
     EXPECT_TRUE(cv::checkRange(points3d.rowRange(1, 6)));
     EXPECT_TRUE(cv::checkRange(lines3d.rowRange(1, 6)));
-}
-
-void expectNamed(const std::function<void()>& call, const std::string& name)
-{
-    try
-    {
-        call();
-        ADD_FAILURE() << "no exception; expected one naming " << name;
-    }
-    catch (const cv::Exception& e)
-    {
-        EXPECT_NE(std::string::npos, e.err.find(name)) << "expected " << name << ": " << e.err;
-    }
 }
 
 TEST(Tripose_TriangulateMultiView, bad_input_is_named)
