@@ -25,27 +25,51 @@ constexpr int kThicknessTrimRounds = 3;
 
 } // namespace
 
+namespace {
+
+//! Largest angle (rad) between two of the directions @p d (unit vectors): the widest pair.
+double widestAngle(const std::vector<Eigen::Vector3d>& d, bool unsignedDirections)
+{
+    double smallestCos = 1.0;
+    for (size_t a = 0; a < d.size(); ++a)
+        for (size_t b = a + 1; b < d.size(); ++b)
+        {
+            const double c = d[a].dot(d[b]);
+            smallestCos = std::min(smallestCos, unsignedDirections ? std::abs(c) : c);
+        }
+    return std::acos(std::max(-1.0, std::min(1.0, smallestCos)));
+}
+
+} // namespace
+
 double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
 {
-    std::vector<Eigen::Vector3d> centres;
-    for (const View& view : set.views)
-        if (!view.estimated && centres.size() < 2)
-            centres.push_back(view.pose.centre());
-    if (centres.size() < 2)
+    std::vector<int> known;
+    for (int v = 0; v < (int)set.views.size(); ++v)
+        if (!set.views[v].estimated)
+            known.push_back(v);
+    if (known.size() < 2)
         return 0.0;
     std::vector<double> angles;
     angles.reserve(set.numPoints + 2 * set.numLines);
-    const auto addAngle = [&](const Eigen::Vector3d& X) {
-        const Eigen::Vector3d a = X - centres[0], b = X - centres[1];
-        angles.push_back(std::atan2(a.cross(b).norm(), a.dot(b)));
+    std::vector<Eigen::Vector3d> rays;
+    // The widest angle between the rays to X from the known views that see the feature: the
+    // structure is triangulated from all of them.
+    const auto addAngle = [&](const Eigen::Vector3d& X, bool point, int i) {
+        rays.clear();
+        for (int v : known)
+            if (point ? set.views[v].seesPoint(i) : set.views[v].seesLine(i))
+                rays.push_back((X - set.views[v].pose.centre()).normalized());
+        if (rays.size() >= 2)
+            angles.push_back(widestAngle(rays, false));
     };
     for (int i = 0; i < set.numPoints; ++i)
         if (scorer.hasKnownPoint(i))
-            addAngle(scorer.knownPoint(i));
+            addAngle(scorer.knownPoint(i), true, i);
     for (int i = 0; i < set.numLines; ++i)
         if (scorer.hasKnownLine(i))
             for (int end = 0; end < 2; ++end)
-                addAngle(scorer.knownLineEnd(i, end));
+                addAngle(scorer.knownLineEnd(i, end), false, i);
     if (angles.empty())
         return 0.0;
     std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
@@ -54,17 +78,13 @@ double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer)
 
 double linePlaneAngleDeg(const ViewSet& set, int line)
 {
-    Eigen::Vector3d normals[2];
-    int found = 0;
-    for (size_t v = 0; v < set.views.size() && found < 2; ++v)
-    {
-        const View& view = set.views[v];
+    std::vector<Eigen::Vector3d> normals;
+    for (const View& view : set.views)
         if (!view.estimated && view.seesLine(line))
-            normals[found++] = view.pose.R.transpose() * view.calibratedLines[line];
-    }
-    if (found < 2)
+            normals.push_back((view.pose.R.transpose() * view.calibratedLines[line]).normalized());
+    if (normals.size() < 2)
         return 0.0;
-    return std::atan2(normals[0].cross(normals[1]).norm(), std::abs(normals[0].dot(normals[1]))) * 180.0 / M_PI;
+    return widestAngle(normals, true) * 180.0 / M_PI;
 }
 
 double structureThickness(const ViewSet& set, const PoseScorer& scorer)

@@ -16,14 +16,15 @@ parallel (a narrow baseline) or the structure is one plane, the cost over the es
 several basins and a single refinement from the best hypothesis often stops in the wrong one.
 */
 
-//! Median over the points with structure of the angle (deg) between their rays from the first two
-//! known views; 0 when there are none.
+//! Median over the points with structure (a line: its two end points) of the widest angle (deg)
+//! between their rays from the known views that see them, which all triangulate them (with two
+//! known views, the angle of the pair); 0 when there are none.
 double medianTriangulationAngleDeg(const ViewSet& set, const PoseScorer& scorer);
 
-/** Angle (deg, 0 to 90) between the planes through line @p line's image lines in the first two known
-views that see it, which meet in the triangulated line; 0 when fewer than two known views see it.
-Near 0 the line lies close to an epipolar plane of the pair and its lifted end points slide along it
-with the image noise.
+/** Widest angle (deg, 0 to 90) between two of the planes through line @p line's image lines in the
+known views that see it, which meet in the triangulated line; 0 when fewer than two known views see
+it. Near 0 the line lies close to an epipolar plane of every pair and its lifted end points slide
+along it with the image noise.
 */
 double linePlaneAngleDeg(const ViewSet& set, int line);
 
