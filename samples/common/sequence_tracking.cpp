@@ -49,7 +49,6 @@ std::vector<int> sharedFeatures(const std::vector<cv::Mat>& rows, int frame, con
     return shared;
 }
 
-
 /** What frame @p frame is registered from: the features it sees with at least two of the frames
 @p known, and their observations (one array per known frame, then the frame's own, as
 estimatePoseMultiView() takes them). */
@@ -59,7 +58,7 @@ struct Registration
     std::vector<cv::Mat> p, l, K, Rs, ts;
 };
 
-//! Rows of @p rows (N x width, CV_64F) set to NaN: observation @p i of the frame is dropped.
+//! Row @p i of a frame's observations @p rows (N x width, CV_64F) set to NaN: the frame no longer sees feature i.
 void drop(cv::Mat& rows, int i)
 {
     rows.row(i).setTo(std::numeric_limits<double>::quiet_NaN());
@@ -68,7 +67,7 @@ void drop(cv::Mat& rows, int i)
 /** Drops, feature by feature, the observation of the known frames furthest from the structure
 triangulated from them (triangulateMultiView()) while it is more than @p threshold px off, and
 returns the rows of the features that keep two known observations. @p p and @p l hold the known
-frames' arrays (updated in place), @p Rs, @p ts their poses. */
+frames' arrays (updated in place; at least one feature between them), @p Rs, @p ts their poses. */
 void dropInconsistentObservations(std::vector<cv::Mat>& p, std::vector<cv::Mat>& l, const std::vector<cv::Mat>& K,
                                   const std::vector<cv::Mat>& Rs, const std::vector<cv::Mat>& ts, double threshold,
                                   std::vector<int>& keepPoints, std::vector<int>& keepLines)
@@ -79,15 +78,7 @@ void dropInconsistentObservations(std::vector<cv::Mat>& p, std::vector<cv::Mat>&
     {
         cv::Mat points3d, lines3d, pointErrors, lineErrors;
         bool dropped = false;
-        try
-        {
-            cv::tripose::triangulateMultiView(p, l, K, cv::noArray(), Rs, ts, points3d, lines3d, pointErrors,
-                                              lineErrors);
-        }
-        catch (const cv::Exception&)
-        {
-            break; // no feature left seen by the known frames: nothing to check
-        }
+        cv::tripose::triangulateMultiView(p, l, K, cv::noArray(), Rs, ts, points3d, lines3d, pointErrors, lineErrors);
         for (int kind = 0; kind < 2; ++kind)
         {
             const cv::Mat& errors = kind == 0 ? pointErrors : lineErrors;
