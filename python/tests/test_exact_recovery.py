@@ -287,6 +287,7 @@ def test_triangulate_multiview_reprojects_onto_every_observation():
         s = multiview_scene(seed, 10, 10, num_known=4)
         Rs, ts = s.Rs + [s.R], s.ts + [s.t]
         r = tripose.triangulate_multiview(s.points, s.lines, s.K, Rs, ts)
+        assert r["num_with_structure"] == 20
         assert r["points3d"].shape == (10, 3) and r["lines3d"].shape == (10, 6)
         assert r["point_errors"].shape == (10, 5) and r["line_errors"].shape == (10, 5)
         for v in range(5):
@@ -315,3 +316,18 @@ def test_triangulate_multiview_finds_a_wrong_observation():
     assert int(np.argmax(r["point_errors"][3])) == 2
     assert r["point_errors"][3, 2] > 2.0
     assert np.all(np.delete(r["point_errors"], 3, axis=0) < 1e-6)
+
+
+def test_triangulate_multiview_counts_features_without_structure():
+    # Point 0 and line 1 seen by one view only: no structure, inf errors there, one fewer each.
+    s = multiview_scene(7, 6, 6, num_known=3, missing=0.0)
+    points = [p.copy() for p in s.points]
+    lines = [l.copy() for l in s.lines]
+    for v in range(1, 4):
+        points[v][0] = np.nan
+        lines[v][1] = np.nan
+    r = tripose.triangulate_multiview(points, lines, s.K, s.Rs + [s.R], s.ts + [s.t])
+    assert r["num_with_structure"] == 10
+    assert np.all(np.isnan(r["points3d"][0])) and np.all(np.isnan(r["lines3d"][1]))
+    assert np.isinf(r["point_errors"][0, 0]) and np.all(np.isnan(r["point_errors"][0, 1:]))
+    assert np.isinf(r["line_errors"][1, 0]) and np.all(np.isnan(r["line_errors"][1, 1:]))

@@ -250,14 +250,17 @@ def triangulate_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional
     the reprojection error of every observation; each feature triangulated from all the views that
     see it, as the robust estimators' final inlier test does.
 
-    Returns a dict: points3d (N, 3) and lines3d (M, 6) (two points of each line, on the end-point
-    rays of the first view that sees it), NaN rows for features without structure (seen by fewer
-    than two views, parallel rays, one plane, or behind a view that sees them); point_errors (N, V):
+    Returns a dict: num_with_structure (points + lines with structure, the C++ return value),
+    points3d (N, 3) and lines3d (M, 6) (two points of each line, on the end-point rays of the first
+    view that sees it), NaN rows for features without structure (seen by fewer than two views,
+    parallel rays, one plane, or behind a view that sees them); point_errors (N, V):
     the distance in px between each point's projection and its observation; line_errors (M, V): the
     larger of the two observed end points' distances to the line's image. NaN where a view does not
     see the feature, inf in every view that sees a feature without structure. A wrong observation
     pulls the structure towards it: drop the observation with the largest error and triangulate
     again. A line seen by two views fits both exactly; its errors tell from three views on.
     """
-    return _ext.triangulate_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K,
-                                      _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist)
+    out = _ext.triangulate_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K,
+                                     _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist)
+    out["num_with_structure"] = int(np.isfinite(out["points3d"][:, 0]).sum() + np.isfinite(out["lines3d"][:, 0]).sum())
+    return out
