@@ -805,6 +805,7 @@ NB_MODULE(_tripose_ext, m)
               writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
               out["point_errors"] = newArray({ (size_t)views.numPoints, numViews }, structure.pointErrors.data());
               out["line_errors"] = newArray({ (size_t)views.numLines, numViews }, structure.lineErrors.data());
+              out["num_with_structure"] = structure.numWithStructure;
               return out;
           },
           nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none());

@@ -260,7 +260,5 @@ def triangulate_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional
     pulls the structure towards it: drop the observation with the largest error and triangulate
     again. A line seen by two views fits both exactly; its errors tell from three views on.
     """
-    out = _ext.triangulate_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K,
-                                     _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist)
-    out["num_with_structure"] = int(np.isfinite(out["points3d"][:, 0]).sum() + np.isfinite(out["lines3d"][:, 0]).sum())
-    return out
+    return _ext.triangulate_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K,
+                                      _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist)

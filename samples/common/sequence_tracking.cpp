@@ -140,10 +140,14 @@ bool buildRegistration(const SequenceObservations& sequence, const std::vector<T
         out.Rs.push_back(frames[w].R);
         out.ts.push_back(frames[w].t);
     }
-    if (out.points.empty())
-        out.p.clear();
-    if (out.lines.empty())
-        out.l.clear();
+    // estimatePoseMultiView() takes no arrays for a kind without features.
+    const auto dropEmptyKinds = [&out] {
+        if (out.points.empty())
+            out.p.clear();
+        if (out.lines.empty())
+            out.l.clear();
+    };
+    dropEmptyKinds();
     if (checkThreshold > 0 && out.points.size() + out.lines.size() >= (size_t)kMinFeatures)
     {
         std::vector<int> keepPoints, keepLines;
@@ -158,10 +162,7 @@ bool buildRegistration(const SequenceObservations& sequence, const std::vector<T
             i = out.lines[i];
         out.points = keepPoints;
         out.lines = keepLines;
-        if (out.points.empty())
-            out.p.clear();
-        if (out.lines.empty())
-            out.l.clear();
+        dropEmptyKinds();
     }
     if (out.points.size() + out.lines.size() < (size_t)kMinFeatures)
         return false;

@@ -295,6 +295,13 @@ def estimate_fundamental(a, b, max_distance=2.0, ratio=0.8, min_inliers=30):
 def triplets(views, K, R12, t12):
     """Views 1-2 under their pose, view 3 against the pairs' view-2 features under the fundamental
     matrix of their descriptor matches (by descriptor alone without one): (points1..3, lines1..3)."""
+    rows = triplet_rows(views, K, R12, t12)
+    return tuple([views[v][kind][rows[kind][v]] for v in range(3)] for kind in ("points", "segments"))
+
+
+def triplet_rows(views, K, R12, t12):
+    """The matching of triplets(), as each triplet's row in every view's features: {"points":
+    (rows1, rows2, rows3), "segments": (...)}."""
     F = fundamental(K[0], K[1], R12, t12)
     pairs = {"points": match_points_epipolar(views[0], views[1], F),
              "segments": match_segments_epipolar(views[0], views[1], F)}
@@ -309,11 +316,8 @@ def triplets(views, K, R12, t12):
     else:
         to3 = {"points": match_by_descriptor(in2["point_desc"], views[2]["point_desc"]),
                "segments": match_by_descriptor(in2["line_desc"], views[2]["line_desc"], max_distance=80)}
-    out = {}
-    for kind in ("points", "segments"):
-        p, t = pairs[kind], to3[kind]
-        out[kind] = [views[0][kind][p[t[:, 0], 0]], views[1][kind][p[t[:, 0], 1]], views[2][kind][t[:, 1]]]
-    return out["points"], out["segments"]
+    return {kind: (pairs[kind][to3[kind][:, 0], 0], pairs[kind][to3[kind][:, 0], 1], to3[kind][:, 1])
+            for kind in ("points", "segments")}
 
 
 # --- estimate ------------------------------------------------------------------------------------

@@ -4,8 +4,8 @@
 
 """How precisely SIFT places a point, by the size of its key point (doc/real_images.md, "Tracking
 Model House from images"): on every consecutive triplet of a VGG sequence with images, the point
-tracks of samples/python/pose_from_images.py (views 1-2 matched under their pose, view 3 under the
-fundamental matrix of its descriptor matches) are triangulated at the sequence's cameras (DLT) and
+tracks of samples/python/pose_from_images.py (triplet_rows(): views 1-2 matched under their pose,
+view 3 under the fundamental matrix of its descriptor matches) are triangulated at the sequence's cameras (DLT) and
 each track's largest residual over its three views is binned by the largest key point size (px).
 
     .venv/bin/python test/evaluation/sift_scale_residuals.py --data <VGG folder with images>
@@ -48,15 +48,9 @@ def main():
                 sys.exit(f"{images[first + i]}: SIFT's key points do not pair with the front end's points")
             view["size"] = np.array([k.size for k in keypoints])
             views.append(view)
-        pairs = front.match_points_epipolar(views[0], views[1], front.fundamental(t.K[0], t.K[1], t.R12, t.t12))
-        in2 = {"points": views[1]["points"][pairs[:, 1]], "point_desc": views[1]["point_desc"][pairs[:, 1]]}
-        F23 = front.estimate_fundamental(in2, views[2])
-        if F23 is None:
-            continue
-        to3 = front.match_points_epipolar(in2, views[2], F23)
-        rows = [pairs[to3[:, 0], 0], pairs[to3[:, 0], 1], to3[:, 1]]
+        rows = front.triplet_rows(views, t.K, t.R12, t.t12)["points"]
         cameras = [t.K[0] @ np.eye(3, 4), t.K[1] @ np.c_[t.R12, t.t12], t.K[2] @ np.c_[t.R, t.t]]
-        for j in range(len(to3)):
+        for j in range(len(rows[0])):
             xs = [views[i]["points"][rows[i][j]] for i in range(3)]
             X = point_from_views(xs, cameras)
             residuals.append(max(point_offset(cameras[i], X, xs[i]) for i in range(3)))

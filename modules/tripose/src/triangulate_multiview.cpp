@@ -4,8 +4,6 @@
 
 #include "precomp.hpp"
 
-#include <cmath>
-
 #include "core/pipeline/posed_structure.hpp"
 #include "opencv/argument_reading.hpp"
 #include "opencv/result_writing.hpp"
@@ -26,12 +24,7 @@ int triangulateMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, In
                                lines3d);
         detail::writeFeatureViewMatrix(structure.pointErrors, views.numPoints, numViews, pointErrors);
         detail::writeFeatureViewMatrix(structure.lineErrors, views.numLines, numViews, lineErrors);
-        int withStructure = 0;
-        for (const auto& X : structure.points)
-            withStructure += std::isfinite(X(0)) ? 1 : 0;
-        for (int i = 0; i < views.numLines; ++i)
-            withStructure += std::isfinite(structure.lineEnds[2 * i](0)) ? 1 : 0;
-        return withStructure;
+        return structure.numWithStructure;
     });
 }
 

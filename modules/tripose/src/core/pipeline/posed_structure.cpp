@@ -37,7 +37,10 @@ PosedStructure triangulateStructure(const ViewSet& set)
         Eigen::Vector3d X;
         const bool fits = refitPoint(set, poses.data(), i, minDepth, X, residuals);
         if (fits)
+        {
             out.points[i] = X;
+            ++out.numWithStructure;
+        }
         for (int v = 0; v < numViews; ++v)
             if (set.views[v].seesPoint(i))
                 out.pointErrors[(size_t)i * numViews + v] = fits ? residuals[v].norm() : inf;
@@ -57,7 +60,10 @@ PosedStructure triangulateStructure(const ViewSet& set)
                 fits ? std::max(std::abs(residuals[v](0)), std::abs(residuals[v](1))) : inf;
         }
         if (fits)
+        {
             lineEndsSeenBy(set.views[first], poses[first], i, L, out.lineEnds[2 * i], out.lineEnds[2 * i + 1]);
+            ++out.numWithStructure;
+        }
     }
     return out;
 }

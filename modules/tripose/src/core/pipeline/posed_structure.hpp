@@ -27,6 +27,7 @@ struct PosedStructure
     larger of the distances of the two observed end points to its image. NaN where the view does not
     see the feature, +inf in every view that sees a feature without structure. */
     std::vector<double> pointErrors, lineErrors;
+    int numWithStructure = 0; //!< Points + lines with structure.
 };
 
 /** Every feature of @p set (whose views must all be known) triangulated from all the views that
