@@ -187,7 +187,7 @@ def keyline(index, s, image_size):
 
 
 def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
-    out = {"points": np.zeros((0, 2)), "point_desc": np.zeros((0, 128), np.float32),
+    out = {"points": np.zeros((0, 2)), "point_desc": np.zeros((0, 128), np.float32), "point_size": np.zeros(0),
            "segments": np.zeros((0, 4)), "line_desc": np.zeros((0, 32), np.uint8)}
     if kinds in ("points", "all"):
         keypoints, desc = cv2.SIFT_create(max_points).detectAndCompute(image, None)
@@ -197,6 +197,7 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
             xy = np.array([k.pt for k in keypoints], np.float64) - SIFT_UPSAMPLING_OFFSET
             out["points"] = undistort(xy, K, dist)
             out["point_desc"] = desc
+            out["point_size"] = np.array([k.size for k in keypoints])  # key point diameters (px)
     if kinds in ("lines", "all"):
         edge_drawing = cv2.ximgproc.createEdgeDrawing()
         edge_drawing.detectEdges(image)
@@ -236,10 +237,16 @@ def mutual_best(distance, ratio):
 POPCOUNT = np.array([bin(i).count("1") for i in range(256)], np.uint8)
 
 
+def hamming(a, b):
+    """Hamming distances of binary (uint8) descriptors a and b, broadcast along all but their last
+    axis; float32."""
+    return POPCOUNT[a ^ b].sum(axis=-1, dtype=np.int32).astype(np.float32)
+
+
 def descriptor_distances(a, b):
     """Hamming distances of binary (uint8) descriptors, else L2; float32, rows of a by rows of b."""
     if a.dtype == np.uint8:
-        return POPCOUNT[a[:, None, :] ^ b[None, :, :]].sum(axis=2, dtype=np.int32).astype(np.float32)
+        return hamming(a[:, None, :], b[None, :, :])
     a, b = a.astype(np.float32), b.astype(np.float32)
     d2 = (a * a).sum(1)[:, None] + (b * b).sum(1)[None, :] - 2.0 * a @ b.T
     return np.sqrt(np.maximum(d2, 0.0))
@@ -295,7 +302,7 @@ def match_segments_epipolar(a, b, F, min_overlap=0.5, min_angle_deg=5.0, ratio=0
     ok &= (overlap > 0) & (overlap >= min_overlap * np.minimum(1.0, hi - lo))
     # Hamming distances of the candidate pairs only: the geometry leaves a few in a hundred.
     i, j = np.nonzero(ok)
-    desc = POPCOUNT[a["line_desc"][i] ^ b["line_desc"][j]].sum(axis=1, dtype=np.int32).astype(np.float32)
+    desc = hamming(a["line_desc"][i], b["line_desc"][j])
     distance = np.full(ok.shape, np.inf, np.float32)
     distance[i, j] = np.where(desc <= max_distance, desc, np.inf)
     return mutual_best(distance, ratio)

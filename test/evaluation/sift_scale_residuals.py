@@ -39,22 +39,14 @@ def main():
         views = []
         for i in range(3):
             image = cv2.imread(str(images[first + i]), cv2.IMREAD_GRAYSCALE)
-            view = front.extract(image, t.K[i], None, "points")
-            # extract() keeps SIFT's key points in detection order: their sizes pair with its rows
-            # (checked by position).
-            keypoints = cv2.SIFT_create(4000).detect(image, None)
-            xy = np.array([k.pt for k in keypoints]) - front.SIFT_UPSAMPLING_OFFSET
-            if xy.shape != view["points"].shape or not np.allclose(xy, view["points"]):
-                sys.exit(f"{images[first + i]}: SIFT's key points do not pair with the front end's points")
-            view["size"] = np.array([k.size for k in keypoints])
-            views.append(view)
+            views.append(front.extract(image, t.K[i], None, "points"))
         rows = front.triplet_rows(views, t.K, t.R12, t.t12)["points"]
         cameras = [t.K[0] @ np.eye(3, 4), t.K[1] @ np.c_[t.R12, t.t12], t.K[2] @ np.c_[t.R, t.t]]
         for j in range(len(rows[0])):
             xs = [views[i]["points"][rows[i][j]] for i in range(3)]
             X = point_from_views(xs, cameras)
             residuals.append(max(point_offset(cameras[i], X, xs[i]) for i in range(3)))
-            sizes.append(max(views[i]["size"][rows[i][j]] for i in range(3)))
+            sizes.append(max(views[i]["point_size"][rows[i][j]] for i in range(3)))
     sizes, residuals = np.array(sizes), np.array(residuals)
     print(f"{len(sizes)} point tracks")
     print("| key point size (px) | tracks | median of the largest residual (px) | 80th percentile | share > 2 px |")
