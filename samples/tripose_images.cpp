@@ -10,6 +10,7 @@
 //
 //   tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml
 //                  [--overlay overlay.png] [--matches matches.png] [--features points|lines|all] [--threshold px] [--seed n]
+//                  [--max-image-size px]
 //
 // The result holds what tripose_estimate --method ransac writes, the numbers of point tracks and
 // segment triplets, the time per stage, and the matched features as a problem file (K.., R12, t12,
@@ -43,7 +44,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_images --calib calib.yml --images a.png b.png c.png --output result.yml\n"
     "                      [--overlay overlay.png] [--matches matches.png] [--features points|lines|all]\n"
-    "                      [--threshold px] [--seed n]\n"
+    "                      [--threshold px] [--seed n] [--max-image-size px]\n"
     "  --calib     calibration (OpenCV FileStorage, YAML or JSON; the calibration keys of a problem file):\n"
     "              K or K1..K3, [dist or dist1..dist3], R12, t12 (view 2's pose; view 1 is the world frame)\n"
     "  --images    the three images, views 1, 2 and 3\n"
@@ -56,8 +57,11 @@ const char* kUsage =
     "  --overlay   the third image with the inlier features (red) and the structure of views 1-2\n"
     "              reprojected by the estimate (green)\n"
     "  --features  points (SIFT), lines (EDLines + LBD) or all (default)\n"
-    "  --threshold RANSAC inlier threshold in pixels (default 2)\n"
-    "  --seed      RANSAC sampler seed (default 0)\n";
+    "  --threshold RANSAC inlier threshold in pixels of the images as detected (default 2)\n"
+    "  --seed      RANSAC sampler seed (default 0)\n"
+    "  --max-image-size  detect the features in images reduced to this longer side (px; default 1600,\n"
+    "              0: full size); positions are mapped back to the images' pixels and the pixel\n"
+    "              tolerances (matching, --threshold) grow by the reduction\n";
 
 // The estimators need four features.
 const int kMinFeatures = 4;
@@ -90,7 +94,7 @@ Options parseArguments(int argc, char** argv)
             throw argumentError("--images", "expected three image files, got " + std::to_string(o.images.size()));
     }
     const std::vector<std::string> known = { "--calib",    "--output",    "--overlay", "--matches",
-                                               "--features", "--threshold", "--seed" };
+                                               "--features", "--threshold", "--seed", "--max-image-size" };
     for (const auto& option : optionPairs((int)rest.size(), rest.data(), kUsage, known))
     {
         const std::string& arg = option.first;
@@ -114,6 +118,8 @@ Options parseArguments(int argc, char** argv)
             if (!(o.ransac.threshold > 0))
                 throw argumentError(arg, "expected a positive number of pixels, got '" + value + "'");
         }
+        else if (arg == "--max-image-size")
+            o.features.maxImageSize = parseInteger(arg, value, 0.0);
         else // --seed
             o.ransac.seed = parseInteger(arg, value, -2147483647.0);
     }
@@ -311,11 +317,16 @@ int main(int argc, char** argv)
         K[v] = cameraMatrixOf(calibration, v);
         dist.push_back(distortionOf(calibration, v));
     }
+    const double pixelScale = detectionScale(images, options.features.maxImageSize);
+    if (pixelScale > 1)
+        std::cout << cv::format("tripose_images: features detected in the images reduced by %.2f (--max-image-size "
+                                "%d); pixel tolerances scaled by it\n",
+                                pixelScale, options.features.maxImageSize);
     const std::vector<ImageFeatures> extracted =
         extractFeaturesOfImages(images, { K[0], K[1], K[2] }, dist, options.features, times);
     const ImageFeatures features[3] = { extracted[0], extracted[1], extracted[2] };
     const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
-                                                   MatchOptions(), times);
+                                                   withPixelScale(MatchOptions(), pixelScale), times);
     const int tracks = triplets.points[0].rows, segments = triplets.lines[0].rows;
     std::cout << cv::format("tripose_images: %d / %d / %d points, %d / %d / %d segments; %d point pairs of views "
                             "1-2, %d point tracks; %d segment pairs, %d segment triplets\n",
@@ -346,7 +357,8 @@ int main(int argc, char** argv)
         inliers = cv::tripose::estimatePoseLinePointRansac(matched.points[0], matched.points[1], matched.points[2],
                                                            matched.lines[0], matched.lines[1], matched.lines[2],
                                                            matched.K, cv::noArray(), matched.R12, matched.t12, R, t,
-                                                           options.ransac, pointInliers, lineInliers);
+                                                           withPixelScale(options.ransac, pixelScale), pointInliers,
+                                                           lineInliers);
         times.estimation += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     }
     catch (const cv::Exception& e)

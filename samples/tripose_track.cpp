@@ -179,10 +179,13 @@ std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, c
     return png;
 }
 
-/** The sequence's observations found in the images of @p folder (one per camera, in name order).
-Throws std::runtime_error naming the folder or image when they do not fit the sequence. */
+/** The sequence's observations found in the images of @p folder (one per camera, in name order), and
+in @p pixelScale the factor of pixel tolerances for them (detectionScale(): 1 unless the images are
+larger than the front end's FeatureOptions::maxImageSize). Throws std::runtime_error naming the
+folder or image when they do not fit the sequence. */
 tripose_samples::SequenceObservations observationsFromFolderImages(const std::string& folder,
-                                                                   const cv::tripose::support::VggSequence& sequence)
+                                                                   const cv::tripose::support::VggSequence& sequence,
+                                                                   double& pixelScale)
 {
 #if TRIPOSE_HAVE_IMAGE_FRONT_END
     using namespace tripose_samples;
@@ -198,9 +201,11 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
                                   "camera " + std::to_string(k));
     }
     StageTimes times;
+    const FeatureOptions features;
+    pixelScale = detectionScale(images, features.maxImageSize);
     SequenceObservations observations =
         observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
-                               sequence.ts[1], FeatureOptions(), MatchOptions(), times);
+                               sequence.ts[1], features, withPixelScale(MatchOptions(), pixelScale), times);
     std::cout << cv::format("Front end on %zu images: %d point tracks, %d segment tracks; ms: points (SIFT) %.0f, "
                             "segment detection (EDLines) %.0f, segment description (LBD) %.0f, matching %.0f\n",
                             files.size(), observations.points[0].rows, observations.lines[0].rows, times.points,
@@ -209,6 +214,7 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
 #else
     (void)folder;
     (void)sequence;
+    (void)pixelScale;
     throw std::runtime_error("argument --from-images: this build has no image front end (it needs OpenCV's "
                              "features2d and contrib's line_descriptor)");
 #endif
@@ -248,7 +254,10 @@ int main(int argc, char** argv)
     {
         try
         {
-            observations = observationsFromFolderImages(options.data, sequence);
+            double pixelScale = 1;
+            observations = observationsFromFolderImages(options.data, sequence, pixelScale);
+            // The features of reduced images are that much less precise in the images' pixels.
+            options.track.ransac.threshold *= pixelScale;
         }
         catch (const std::exception& e)
         {

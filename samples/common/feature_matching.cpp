@@ -103,6 +103,12 @@ bool bandOnSegment(const double* s, const cv::Vec3d& la, const cv::Vec3d& lb, do
 
 } // namespace
 
+MatchOptions withPixelScale(MatchOptions options, double pixelScale)
+{
+    options.epipolarDistance *= pixelScale;
+    return options;
+}
+
 Matches matchPointsEpipolar(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
                             const MatchOptions& options)
 {

@@ -39,6 +39,10 @@ struct MatchOptions
     int minFundamentalInliers = 30;
 };
 
+//! @p options with its pixel tolerance multiplied by @p pixelScale (detectionScale(): features detected
+//! in reduced images are placed that much less precisely in the images' pixels).
+MatchOptions withPixelScale(MatchOptions options, double pixelScale);
+
 /** Points of views a and b under the known epipolar geometry @p F (x_b^T F x_a = 0): candidates within
 MatchOptions::epipolarDistance of the epipolar lines both ways, then mutual best SIFT descriptor
 with the ratio test among the candidates. */

@@ -29,6 +29,15 @@ inline cv::tripose::RansacParams imageRansacParams()
     return params;
 }
 
+//! @p params with its pixel threshold and loss scale multiplied by @p pixelScale (detectionScale():
+//! features detected in reduced images are placed that much less precisely in the images' pixels).
+inline cv::tripose::RansacParams withPixelScale(cv::tripose::RansacParams params, double pixelScale)
+{
+    params.threshold *= pixelScale;
+    params.refineParams.lossScale *= pixelScale;
+    return params;
+}
+
 } // namespace tripose_samples
 
 #endif // TRIPOSE_SAMPLES_IMAGE_ESTIMATION_HPP

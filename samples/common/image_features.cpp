@@ -4,6 +4,7 @@
 
 #include "image_features.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/calib3d.hpp>
@@ -55,6 +56,32 @@ double millisecondsSince(int64 start)
     return 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
 }
 
+/** The image features are detected in: @p grey itself, or reduced to @p maxImageSize on its longer
+side. @p factor: the image's pixels per pixel of the result, along x and y. */
+cv::Mat detectionImage(const cv::Mat& grey, int maxImageSize, cv::Vec2d& factor)
+{
+    const double scale = detectionScale(grey.size(), maxImageSize);
+    factor = cv::Vec2d(1, 1);
+    if (scale == 1.0)
+        return grey;
+    const cv::Size size(std::max(1, (int)std::lround(grey.cols / scale)), std::max(1, (int)std::lround(grey.rows / scale)));
+    cv::Mat reduced;
+    cv::resize(grey, reduced, size, 0, 0, cv::INTER_AREA);
+    factor = cv::Vec2d(double(grey.cols) / size.width, double(grey.rows) / size.height);
+    return reduced;
+}
+
+//! Positions (Nx2 CV_64F) of the detection image in the image's pixels: resize maps pixel centres
+//! onto pixel centres, x = (x' + 0.5) * factor - 0.5.
+void toImagePixels(cv::Mat& positions, const cv::Vec2d& factor)
+{
+    if (factor == cv::Vec2d(1, 1))
+        return;
+    for (int i = 0; i < positions.rows; ++i)
+        for (int c = 0; c < 2; ++c)
+            positions.at<double>(i, c) = (positions.at<double>(i, c) + 0.5) * factor[c] - 0.5;
+}
+
 //! Positions (Nx2 CV_64F) moved to the ideal pinhole image of K.
 cv::Mat undistorted(const cv::Mat& positions, const cv::Matx33d& K, const cv::Mat& distCoeffs)
 {
@@ -66,6 +93,20 @@ cv::Mat undistorted(const cv::Mat& positions, const cv::Matx33d& K, const cv::Ma
 }
 
 } // namespace
+
+double detectionScale(const cv::Size& imageSize, int maxImageSize)
+{
+    const int longer = std::max(imageSize.width, imageSize.height);
+    return maxImageSize > 0 && longer > maxImageSize ? double(longer) / maxImageSize : 1.0;
+}
+
+double detectionScale(const std::vector<cv::Mat>& images, int maxImageSize)
+{
+    double scale = 1.0;
+    for (const cv::Mat& image : images)
+        scale = std::max(scale, detectionScale(image.size(), maxImageSize));
+    return scale;
+}
 
 bool parseFeatureKinds(const std::string& word, FeatureKinds& kinds)
 {
@@ -95,9 +136,11 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
                               const FeatureOptions& options, StageTimes& times)
 {
     CV_Assert(image.depth() == CV_8U && !image.empty());
-    cv::Mat grey = image;
+    cv::Mat full = image;
     if (image.channels() != 1)
-        cv::cvtColor(image, grey, image.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+        cv::cvtColor(image, full, image.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+    cv::Vec2d factor;
+    const cv::Mat grey = detectionImage(full, options.maxImageSize, factor);
 
     ImageFeatures out;
     out.points = cv::Mat(0, 2, CV_64F);
@@ -115,6 +158,7 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
             positions.at<double>((int)i, 0) = keypoints[i].pt.x - kSiftUpsamplingOffset;
             positions.at<double>((int)i, 1) = keypoints[i].pt.y - kSiftUpsamplingOffset;
         }
+        toImagePixels(positions, factor);
         out.points = undistorted(positions, K, distCoeffs);
     }
     if (options.kinds & FEATURES_LINES)
@@ -143,6 +187,7 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
             for (size_t i = 0; i < segments.size(); ++i)
                 for (int c = 0; c < 4; ++c)
                     ends.at<double>(2 * (int)i + c / 2, c % 2) = segments[i][c];
+            toImagePixels(ends, factor);
             out.segments = undistorted(ends, K, distCoeffs).reshape(1, (int)segments.size()).clone();
         }
     }

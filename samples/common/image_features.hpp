@@ -57,10 +57,24 @@ struct FeatureOptions
 {
     FeatureKinds kinds = FEATURES_ALL;
     int maxPoints = 4000;            //!< The strongest SIFT key points kept (0: all).
-    double minSegmentLength = 20;    //!< Shorter segments are dropped (px): they are too short to give a direction.
+    double minSegmentLength = 20;    //!< Shorter segments are dropped (px of the detection image): they are too short to give a direction.
+    /** Images whose longer side exceeds this (px) are detected in a copy reduced to it (area
+    averaging), and the features' positions mapped back to the image's pixels; 0: always the full
+    image. SIFT's scale space of a 12-megapixel image takes gigabytes and tens of seconds. Pixel
+    tolerances downstream scale with detectionScale(). */
+    int maxImageSize = 1600;
 };
 
-/** Detects and describes the features of a grey or colour 8-bit image (converted to grey). With
+/** How many pixels of an image of @p imageSize one pixel of its detection image spans
+(FeatureOptions::maxImageSize): 1 when the image is not reduced. The features' positions are that
+much less precise in the image's pixels, so their tolerances (matching, RANSAC) grow by it. */
+double detectionScale(const cv::Size& imageSize, int maxImageSize);
+
+//! The largest detectionScale() of @p images.
+double detectionScale(const std::vector<cv::Mat>& images, int maxImageSize);
+
+/** Detects and describes the features of a grey or colour 8-bit image (converted to grey), reduced to
+FeatureOptions::maxImageSize when it is larger; positions are in the image's own pixels. With
 non-empty @p distCoeffs, positions are undistorted with @p K (cv::undistortPoints, new camera K).
 Adds the time of each stage to @p times.
 */

@@ -4,14 +4,18 @@ tripose_images with OpenCV's Python bindings (opencv-contrib-python: SIFT, the E
 ximgproc fitted to their edges, LBD of line_descriptor), the estimate from the tripose package.
 
     pose_from_images.py --calib calib.yml --images a.png b.png c.png --output result.yml
-                        [--features points|lines|all] [--threshold px] [--problem-only]
+                        [--features points|lines|all] [--threshold px] [--max-image-size px]
+                        [--problem-only]
 
 calib.yml holds the calibration keys of a problem file: K or K1..K3, optional dist or
 dist1..dist3, R12, t12 (view 2's pose; view 1 is the world frame). The result holds R, t,
 num_inliers, point_inliers, line_inliers, rms, the numbers of point tracks and segment triplets,
 and the matched features as a problem (K.., R12, t12, points1..3, lines1..3, in undistorted
 pixels). With --problem-only the matched problem is written without an estimate (the tripose
-package is then not needed; tripose_estimate solves the file).
+package is then not needed; tripose_estimate solves the file). Images larger than --max-image-size
+(default 1600 px on the longer side; 0: no limit) are detected in a reduced copy: the positions
+come back in the images' pixels, and the pixel tolerances (--threshold among them) grow by the
+reduction.
 
 Exit status: 0 on success, 1 on bad input (the message names the file, key or argument), 2 when the
 tripose package is missing.
@@ -26,6 +30,10 @@ import numpy as np
 
 MIN_FEATURES = 4  # the estimators need four features
 SIFT_UPSAMPLING_OFFSET = 0.25  # px, see extract()
+# Images whose longer side exceeds this (px) are detected in a copy reduced to it, as the C++
+# samples' --max-image-size (samples/common/image_features.hpp): the scale space of a 12-megapixel
+# image takes gigabytes and tens of seconds.
+MAX_IMAGE_SIZE = 1600
 # The refinement's Cauchy loss scale (px) for detected features, as the C++ samples
 # (samples/common/image_estimation.hpp): it keeps the tail of poorly placed features from pulling.
 IMAGE_LOSS_SCALE = 0.5
@@ -186,7 +194,34 @@ def keyline(index, s, image_size):
     return k
 
 
-def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
+def detection_scale(shape, max_size=MAX_IMAGE_SIZE):
+    """How many of the image's pixels one pixel of the image its features are detected in spans (1 when
+    the image is no larger than max_size, or max_size is 0): the factor of every pixel tolerance."""
+    longer = max(shape[:2])
+    return longer / max_size if 0 < max_size < longer else 1.0
+
+
+def detection_image(image, max_size=MAX_IMAGE_SIZE):
+    """The image the features are detected in (reduced by area averaging to max_size on its longer side)
+    and the factor (x, y) from its pixels to the image's."""
+    scale = detection_scale(image.shape, max_size)
+    if scale == 1.0:
+        return image, np.ones(2)
+    h, w = image.shape[:2]
+    size = (max(1, round(w / scale)), max(1, round(h / scale)))
+    return cv2.resize(image, size, interpolation=cv2.INTER_AREA), np.array([w / size[0], h / size[1]])
+
+
+def to_image_pixels(xy, factor):
+    """Positions in the detection image as positions in the image: resize maps pixel centres onto pixel
+    centres, (x + 0.5) * factor - 0.5."""
+    return xy if np.all(factor == 1.0) else (xy + 0.5) * factor - 0.5
+
+
+def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0, max_size=MAX_IMAGE_SIZE):
+    """Points and segments of one image, in its own (undistorted) pixels; detected in the image reduced
+    to max_size (detection_image()) when it is larger. min_segment is in the detection image's pixels."""
+    image, factor = detection_image(image, max_size)
     out = {"points": np.zeros((0, 2)), "point_desc": np.zeros((0, 128), np.float32), "point_size": np.zeros(0),
            "segments": np.zeros((0, 4)), "line_desc": np.zeros((0, 32), np.uint8)}
     if kinds in ("points", "all"):
@@ -195,9 +230,9 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
             # SIFT's doubled first octave puts every position 0.25 px right of and below the feature
             # (as the C++ front end, samples/common/image_features.cpp).
             xy = np.array([k.pt for k in keypoints], np.float64) - SIFT_UPSAMPLING_OFFSET
-            out["points"] = undistort(xy, K, dist)
+            out["points"] = undistort(to_image_pixels(xy, factor), K, dist)
             out["point_desc"] = desc
-            out["point_size"] = np.array([k.size for k in keypoints])  # key point diameters (px)
+            out["point_size"] = np.array([k.size for k in keypoints]) * factor.max()  # diameters (px)
     if kinds in ("lines", "all"):
         edge_drawing = cv2.ximgproc.createEdgeDrawing()
         edge_drawing.detectEdges(image)
@@ -210,7 +245,7 @@ def extract(image, K, dist, kinds, max_points=4000, min_segment=20.0):
             # LBD keeps one descriptor per segment, in order: the rows of ends pair with them (as the C++ front end).
             if desc is None or len(desc) != len(ends):
                 raise RuntimeError(f"LBD described {0 if desc is None else len(desc)} of {len(ends)} segments")
-            out["segments"] = undistort(ends.reshape(-1, 2), K, dist).reshape(-1, 4)
+            out["segments"] = undistort(to_image_pixels(ends.reshape(-1, 2), factor), K, dist).reshape(-1, 4)
             out["line_desc"] = desc
     return out
 
@@ -327,26 +362,28 @@ def estimate_fundamental(a, b, max_distance=2.0, ratio=0.8, min_inliers=30):
     return F
 
 
-def triplets(views, K, R12, t12):
+def triplets(views, K, R12, t12, pixel_scale=1.0):
     """Views 1-2 under their pose, view 3 against the pairs' view-2 features under the fundamental
-    matrix of their descriptor matches (by descriptor alone without one): (points1..3, lines1..3)."""
-    rows = triplet_rows(views, K, R12, t12)
+    matrix of their descriptor matches (by descriptor alone without one): (points1..3, lines1..3).
+    pixel_scale multiplies the pixel tolerances (detection_scale())."""
+    rows = triplet_rows(views, K, R12, t12, pixel_scale)
     return tuple([views[v][kind][rows[kind][v]] for v in range(3)] for kind in ("points", "segments"))
 
 
-def triplet_rows(views, K, R12, t12):
+def triplet_rows(views, K, R12, t12, pixel_scale=1.0):
     """The matching of triplets(), as each triplet's row in every view's features: {"points":
     (rows1, rows2, rows3), "segments": (...)}."""
     F = fundamental(K[0], K[1], R12, t12)
-    pairs = {"points": match_points_epipolar(views[0], views[1], F),
+    tolerance = 2.0 * pixel_scale
+    pairs = {"points": match_points_epipolar(views[0], views[1], F, tolerance),
              "segments": match_segments_epipolar(views[0], views[1], F)}
     in2 = {"points": views[1]["points"][pairs["points"][:, 1]],
            "point_desc": views[1]["point_desc"][pairs["points"][:, 1]],
            "segments": views[1]["segments"][pairs["segments"][:, 1]],
            "line_desc": views[1]["line_desc"][pairs["segments"][:, 1]]}
-    F23 = estimate_fundamental(in2, views[2])
+    F23 = estimate_fundamental(in2, views[2], tolerance)
     if F23 is not None:
-        to3 = {"points": match_points_epipolar(in2, views[2], F23),
+        to3 = {"points": match_points_epipolar(in2, views[2], F23, tolerance),
                "segments": match_segments_epipolar(in2, views[2], F23)}
     else:
         to3 = {"points": match_by_descriptor(in2["point_desc"], views[2]["point_desc"]),
@@ -357,10 +394,12 @@ def triplet_rows(views, K, R12, t12):
 
 # --- estimate ------------------------------------------------------------------------------------
 
-def estimate_pose(points, lines, K, R12, t12, threshold, seed):
+def estimate_pose(points, lines, K, R12, t12, threshold, seed, pixel_scale=1.0):
     """The tripose package's robust estimator (RANSAC, then refinement), the refinement over the
     inliers repeated under the Cauchy loss of the C++ samples (the package's RANSAC refines by least
-    squares)."""
+    squares). threshold and the loss scale are in the detection image's pixels: pixel_scale
+    (detection_scale()) turns them into the image's."""
+    threshold *= pixel_scale
     import tripose
     pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
                                                    K, R12, t12, threshold=threshold, refine=True, seed=seed)
@@ -369,7 +408,7 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed):
     p, l = np.asarray(pose["point_inliers"], bool), np.asarray(pose["line_inliers"], bool)
     refined = tripose.refine_pose_line_point(points[0][p], points[1][p], points[2][p], lines[0][l], lines[1][l],
                                              lines[2][l], K, R12, t12, pose["R"], pose["t"], loss="cauchy",
-                                             loss_scale=IMAGE_LOSS_SCALE)
+                                             loss_scale=IMAGE_LOSS_SCALE * pixel_scale)
     # The robust estimate's other entries (inlier masks, counts) stay; its RMS is the refinement's now.
     pose["R"], pose["t"], pose["rms"] = refined["R"], refined["t"], refined["rms"]
     return pose
@@ -410,11 +449,15 @@ def main(argv=None):
     parser.add_argument("--features", choices=("points", "lines", "all"), default="all")
     parser.add_argument("--threshold", type=float, default=2.0)
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--max-image-size", type=int, default=MAX_IMAGE_SIZE,
+                        help="detect features in images reduced to this longer side (px; 0: full size)")
     parser.add_argument("--problem-only", action="store_true",
                         help="write the matched problem without an estimate")
     args = parser.parse_args(argv)
     if not args.threshold > 0:
         parser.error("argument --threshold: expected a positive number of pixels")
+    if args.max_image_size < 0:
+        parser.error("argument --max-image-size: expected 0 (full size) or a positive number of pixels")
     try:
         calib = read_calibration(args.calib)
         keys = ["K"] * 3 if calib["K"][0] is calib["K"][1] else ["K1", "K2", "K3"]
@@ -422,8 +465,13 @@ def main(argv=None):
         dist = calib["dist"] or [None] * 3
         # One thread per image: OpenCV's detectors release the GIL, so the images share the cores.
         with ThreadPoolExecutor(max_workers=3) as pool:
-            views = list(pool.map(lambda v: extract(images[v], calib["K"][v], dist[v], args.features), range(3)))
-        points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"])
+            views = list(pool.map(lambda v: extract(images[v], calib["K"][v], dist[v], args.features,
+                                                    max_size=args.max_image_size), range(3)))
+        pixel_scale = max(detection_scale(image.shape, args.max_image_size) for image in images)
+        if pixel_scale > 1:
+            print(f"pose_from_images: features detected in the images reduced by {pixel_scale:.2f} "
+                  f"(--max-image-size {args.max_image_size}); pixel tolerances scaled by it")
+        points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"], pixel_scale)
         print(f"pose_from_images: {len(points[0])} point tracks, {len(lines[0])} segment triplets")
         if len(points[0]) + len(lines[0]) < MIN_FEATURES:
             raise InputError(f"too few features seen in all three images ({', '.join(args.images)}): "
@@ -431,7 +479,8 @@ def main(argv=None):
         pose = None
         if not args.problem_only:
             try:
-                pose = estimate_pose(points, lines, calib["K"], calib["R12"], calib["t12"], args.threshold, args.seed)
+                pose = estimate_pose(points, lines, calib["K"], calib["R12"], calib["t12"], args.threshold, args.seed,
+                                     pixel_scale)
             except ImportError:
                 print("pose_from_images: the tripose package is not installed (pip install tripose); "
                       "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
