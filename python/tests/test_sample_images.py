@@ -40,3 +40,31 @@ def test_estimate_through_the_package_is_the_tools(tmp_path):
     assert tool.returncode == 0, tool.stderr
     assert rotation_error_deg(result["R"], read(again, ["R"])["R"]) < 1e-3
     assert result["point_inliers"].sum() >= 0.7 * result["point_inliers"].size
+
+
+def test_large_images_through_the_package(tmp_path):
+    # Images larger than --max-image-size (1600 px) are detected reduced, and the estimate's threshold
+    # and loss scale grow with the reduction: the triplet enlarged twice (2048 x 1536) must still give
+    # the camera's pose.
+    fs = cv2.FileStorage(str(tmp_path / "calib.yml"), cv2.FILE_STORAGE_WRITE)
+    to_enlarged = np.array([[2, 0, 0.5], [0, 2, 0.5], [0, 0, 1]])  # the original's pixel centre x at 2 x + 0.5
+    values = read(CALIB, ["K1", "K2", "K3", "R12", "t12", "R_gt"])
+    for key in ("K1", "K2", "K3"):
+        fs.write(key, to_enlarged @ values[key])
+    fs.write("R12", values["R12"])
+    fs.write("t12", values["t12"])
+    fs.release()
+    images = []
+    for k, path in enumerate(IMAGES):
+        images.append(tmp_path / f"enlarged{k + 1}.png")
+        cv2.imwrite(str(images[-1]), cv2.resize(cv2.imread(str(path)), None, fx=2, fy=2, interpolation=cv2.INTER_CUBIC))
+    out = tmp_path / "result.yml"
+    proc = subprocess.run([sys.executable, str(SCRIPT), "--calib", str(tmp_path / "calib.yml"), "--images",
+                           *map(str, images), "--output", str(out)], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "reduced by 1.28" in proc.stdout, proc.stdout
+    result = read(out, ["R", "point_inliers"])
+    # Measured 0.022 deg, 88 % of the tracks inliers; 0.014 deg on the original images
+    # (doc/real_images.md, "Large images").
+    assert rotation_error_deg(result["R"], values["R_gt"]) < 0.1
+    assert result["point_inliers"].sum() >= 0.7 * result["point_inliers"].size
