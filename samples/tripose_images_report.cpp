@@ -354,6 +354,11 @@ int main(int argc, char** argv)
         }
     }
 
+    // Features of images larger than --max-image-size's default are detected reduced: the pixel
+    // tolerances of the matching and of the estimates on them grow by the reduction.
+    const double pixelScale = detectionScale(images, options.features.maxImageSize);
+    const MatchOptions matching = withPixelScale(MatchOptions(), pixelScale);
+    const cv::tripose::RansacParams imageRansac = withPixelScale(options.ransac, pixelScale);
     std::vector<Outcome> all, pointsOnly, pnp, ownCorrespondences;
     std::vector<StageTimes> tripletTimes;
     std::vector<std::string> rows, timeRows;
@@ -372,13 +377,13 @@ int main(int argc, char** argv)
             { images[v[0]], images[v[1]], images[v[2]] }, { Kx[0], Kx[1], Kx[2] }, {}, options.features, times);
         const ImageFeatures views[3] = { features[0], features[1], features[2] };
         const FeatureTriplets triplets =
-            matchTriplets(views, Kx, cv::Matx33d(R12), cv::Vec3d(t12), MatchOptions(), times);
+            matchTriplets(views, Kx, cv::Matx33d(R12), cv::Vec3d(t12), matching, times);
 
-        all.push_back(runTripose(triplets.points, triplets.lines, K, R12, t12, Rref, tref, options.ransac));
+        all.push_back(runTripose(triplets.points, triplets.lines, K, R12, t12, Rref, tref, imageRansac));
         times.estimation = all.back().milliseconds;
         const cv::Mat noLines[3] = { cv::Mat(0, 4, CV_64F), cv::Mat(0, 4, CV_64F), cv::Mat(0, 4, CV_64F) };
-        pointsOnly.push_back(runTripose(triplets.points, noLines, K, R12, t12, Rref, tref, options.ransac));
-        pnp.push_back(runTriangulationPnp(triplets.points, K, R12, t12, Rref, tref, options.ransac));
+        pointsOnly.push_back(runTripose(triplets.points, noLines, K, R12, t12, Rref, tref, imageRansac));
+        pnp.push_back(runTriangulationPnp(triplets.points, K, R12, t12, Rref, tref, imageRansac));
 
         const support::VggTriplet own = support::loadVggTriplet(options.data, v[0], v[1], v[2]);
         const cv::Mat ownPoints[3] = { own.points1, own.points2, own.points3 };
