@@ -208,7 +208,7 @@ def detection_image(image, max_size=MAX_IMAGE_SIZE):
     if scale == 1.0:
         return image, np.ones(2)
     h, w = image.shape[:2]
-    size = (max(1, round(w / scale)), max(1, round(h / scale)))
+    size = (max(1, int(w / scale + 0.5)), max(1, int(h / scale + 0.5)))  # rounded as the C++ front end
     return cv2.resize(image, size, interpolation=cv2.INTER_AREA), np.array([w / size[0], h / size[1]])
 
 
