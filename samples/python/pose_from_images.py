@@ -43,6 +43,15 @@ class InputError(Exception):
     pass
 
 
+class ArgumentParser(argparse.ArgumentParser):
+    """Bad arguments are bad input: exit status 1, as the C++ samples (argparse's own is 2, which
+    this script gives to a missing tripose package)."""
+
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: error: {message}\n")
+
+
 # --- input ---------------------------------------------------------------------------------------
 
 def read_calibration(path):
@@ -442,7 +451,7 @@ def write_result(path, calib, points, lines, pose):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--calib", required=True)
     parser.add_argument("--images", nargs=3, required=True)
     parser.add_argument("--output", required=True)

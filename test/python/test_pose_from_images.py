@@ -68,6 +68,17 @@ def test_calibration_without_t12_is_rejected(tmp_path):
     assert not out.exists()
 
 
+@pytest.mark.parametrize("options,name", [(["--threshold", "0"], "--threshold"),
+                                          (["--max-image-size", "-1"], "--max-image-size"),
+                                          (["--features", "edges"], "--features")])
+def test_bad_arguments_are_rejected(tmp_path, options, name):
+    # Exit status 1 as for any bad input (2 is the missing package's), the argument named, nothing written.
+    out = tmp_path / "result.yml"
+    proc = run_script(out, "--problem-only", *options)
+    assert proc.returncode == 1 and name in proc.stderr, proc.stderr
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("axis", [0, 1])
 def test_sift_positions_have_no_upsampling_offset(axis):
     # SIFT as detected is 0.25 px off on both axes (doc/real_images.md); the front end removes it.
