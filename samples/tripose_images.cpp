@@ -49,7 +49,8 @@ const char* kUsage =
     "              K or K1..K3, [dist or dist1..dist3], R12, t12 (view 2's pose; view 1 is the world frame)\n"
     "  --images    the three images, views 1, 2 and 3\n"
     "  --output    result: num_solutions, R, t, num_inliers, point_inliers, line_inliers,\n"
-    "              num_point_tracks, num_segment_triplets, ms_* (time per stage), and the matched features\n"
+    "              num_point_tracks, num_segment_triplets, pixel_scale, threshold and loss_scale (the\n"
+    "              estimate's, in the images' pixels), ms_* (time per stage), and the matched features\n"
     "              as a problem\n"
     "              (K.., R12, t12, points1..3, lines1..3; undistorted pixels, so no dist)\n"
     "  --matches   the three images side by side, each point track and segment triplet drawn in all three:\n"
@@ -337,7 +338,11 @@ int main(int argc, char** argv)
     {
         std::cerr << "tripose_images: too few features seen in all three images (" << options.images[0] << ", "
                   << options.images[1] << ", " << options.images[2] << "): " << tracks << " point tracks and "
-                  << segments << " segment triplets, at least " << kMinFeatures << " needed\n";
+                  << segments << " segment triplets, at least " << kMinFeatures << " needed"
+                  << (pixelScale > 1 ? cv::format(" (detected in the images reduced by %.2f: --max-image-size %d)",
+                                                  pixelScale, options.features.maxImageSize)
+                                     : std::string())
+                  << "\n";
         return 1;
     }
 
@@ -386,6 +391,11 @@ int main(int argc, char** argv)
             fs << "num_inliers" << inliers << "point_inliers" << inlierColumn(pointInliers) << "line_inliers"
                << inlierColumn(lineInliers);
             fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
+            // The tolerances the estimate used, in the images' pixels (--threshold and the loss scale times
+            // the detection's reduction): what tripose_estimate needs to solve the problem below again.
+            const cv::tripose::RansacParams used = withPixelScale(options.ransac, pixelScale);
+            fs << "pixel_scale" << pixelScale << "threshold" << used.threshold << "loss_scale"
+               << used.refineParams.lossScale;
             fs << "ms_points" << times.points << "ms_segment_detection" << times.segmentDetection
                << "ms_segment_description" << times.segmentDescription << "ms_matching" << times.matching
                << "ms_estimation" << times.estimation << "ms_features_wall" << times.featuresWall

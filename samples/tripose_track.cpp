@@ -39,7 +39,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--check-tracks 0|1] [--observations tracks.yml]\n"
+    "                     [--check-tracks 0|1] [--observations tracks.yml] [--max-image-size px]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
@@ -51,6 +51,9 @@ const char* kUsage =
     "                 tracks from the frame's observations that the registration rejected. 0: off\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
+    "  --max-image-size  with --from-images: detect the features in images reduced to this longer side\n"
+    "                 (px; default 1600, 0: full size); --threshold and the matching's tolerance grow by\n"
+    "                 the reduction\n"
     "  --observations also write the tracks the frames were registered from: per frame k (from 0) K<k>,\n"
     "                 points<k> (N x 2) and lines<k> (M x 4, segments), row i of every frame the same track,\n"
     "                 NaN where frame k does not see it\n"
@@ -62,6 +65,7 @@ struct Options
 {
     std::string data, output, plot, observations, method = "ransac";
     bool fromImages = false;
+    int maxImageSize = -1; //!< --max-image-size; -1: not given (the front end's default)
     tripose_samples::TrackOptions track;
 };
 
@@ -79,7 +83,7 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--check-tracks", "--observations" };
+                                             "--local-refine", "--check-tracks", "--observations", "--max-image-size" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -100,6 +104,8 @@ Options parseArguments(int argc, char** argv)
             o.track.localAdjustment = parseSwitch(arg, value);
         else if (arg == "--check-tracks")
             o.track.checkTracks = parseSwitch(arg, value);
+        else if (arg == "--max-image-size")
+            o.maxImageSize = parseInteger(arg, value, 0.0);
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--threshold")
@@ -118,6 +124,8 @@ Options parseArguments(int argc, char** argv)
     if (o.method != "ransac" && o.method != "linear")
         throw argumentError("--method", "expected 'ransac' or 'linear', got '" + o.method + "'");
     o.track.robust = o.method == "ransac";
+    if (o.maxImageSize >= 0 && !o.fromImages)
+        throw argumentError("--max-image-size", "applies to --from-images only");
     return o;
 }
 
@@ -179,13 +187,13 @@ std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, c
     return png;
 }
 
-/** The sequence's observations found in the images of @p folder (one per camera, in name order), and
-in @p pixelScale the factor of pixel tolerances for them (detectionScale(): 1 unless the images are
-larger than the front end's FeatureOptions::maxImageSize). Throws std::runtime_error naming the
+/** The sequence's observations found in the images of @p folder (one per camera, in name order),
+detected in images reduced to @p maxImageSize (-1: the front end's default), and in @p pixelScale
+the factor of pixel tolerances for them (detectionScale(): 1 unless the images are reduced). Throws std::runtime_error naming the
 folder or image when they do not fit the sequence. */
 tripose_samples::SequenceObservations observationsFromFolderImages(const std::string& folder,
                                                                    const cv::tripose::support::VggSequence& sequence,
-                                                                   double& pixelScale)
+                                                                   int maxImageSize, double& pixelScale)
 {
 #if TRIPOSE_HAVE_IMAGE_FRONT_END
     using namespace tripose_samples;
@@ -201,8 +209,14 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
                                   "camera " + std::to_string(k));
     }
     StageTimes times;
-    const FeatureOptions features;
+    FeatureOptions features;
+    if (maxImageSize >= 0)
+        features.maxImageSize = maxImageSize;
     pixelScale = detectionScale(images, features.maxImageSize);
+    if (pixelScale > 1)
+        std::cout << cv::format("Front end: features detected in the images reduced by %.2f (--max-image-size %d); "
+                                "pixel tolerances scaled by it\n",
+                                pixelScale, features.maxImageSize);
     SequenceObservations observations =
         observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
                                sequence.ts[1], features, withPixelScale(MatchOptions(), pixelScale), times);
@@ -214,6 +228,7 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
 #else
     (void)folder;
     (void)sequence;
+    (void)maxImageSize;
     (void)pixelScale;
     throw std::runtime_error("argument --from-images: this build has no image front end (it needs OpenCV's "
                              "features2d and contrib's line_descriptor)");
@@ -255,7 +270,7 @@ int main(int argc, char** argv)
         try
         {
             double pixelScale = 1;
-            observations = observationsFromFolderImages(options.data, sequence, pixelScale);
+            observations = observationsFromFolderImages(options.data, sequence, options.maxImageSize, pixelScale);
             // The features of reduced images are that much less precise in the images' pixels.
             options.track.ransac.threshold *= pixelScale;
         }

@@ -68,3 +68,14 @@ def test_large_images_through_the_package(tmp_path):
     # (doc/real_images.md, "Large images").
     assert rotation_error_deg(result["R"], values["R_gt"]) < 0.1
     assert result["point_inliers"].sum() >= 0.7 * result["point_inliers"].size
+    # The tolerances written are the ones the estimate used: the C++ tool with them gives its pose.
+    fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
+    scale, threshold, loss_scale = (fs.getNode(k).real() for k in ("pixel_scale", "threshold", "loss_scale"))
+    fs.release()
+    assert abs(scale - 1.28) < 1e-12 and abs(threshold - 2 * scale) < 1e-12 and abs(loss_scale - 0.5 * scale) < 1e-12
+    again = tmp_path / "estimate.yml"
+    tool = subprocess.run([str(estimate_tool()), "--input", str(out), "--output", str(again), "--allow-unknown-keys",
+                           "--method", "ransac", "--threshold", str(threshold), "--loss", "cauchy", "--loss-scale",
+                           str(loss_scale)], capture_output=True, text=True, timeout=120)
+    assert tool.returncode == 0, tool.stderr
+    assert rotation_error_deg(result["R"], read(again, ["R"])["R"]) < 1e-3

@@ -22,7 +22,10 @@ cv::Mat readImage(const std::string& path)
         throw std::runtime_error("image " + path + ": no such file");
     if (!std::ifstream(path, std::ios::binary))
         throw std::runtime_error("image " + path + ": cannot be opened for reading");
-    const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
+    // Not IMREAD_UNCHANGED, which also ignores the EXIF orientation: a phone stores a portrait photo
+    // as a landscape image with a tag to turn it, and its calibration (with OpenCV's imread, or the
+    // Python sample's) is of the image turned. Depth and colour stay as stored; alpha is dropped.
+    const cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
     if (image.empty())
         throw std::runtime_error("image " + path + ": cannot be decoded (not an image OpenCV reads)");
     if (image.depth() != CV_8U)

@@ -14,7 +14,7 @@
 
 namespace tripose_samples {
 
-/** The 8-bit image in @p path (grey or colour as stored). Throws std::runtime_error naming the file
+/** The 8-bit image in @p path (grey or colour as stored), turned as its EXIF orientation says. Throws std::runtime_error naming the file
 when it is missing, cannot be decoded, is not 8-bit, or is blank (every pixel the same value). */
 cv::Mat readImage(const std::string& path);
 

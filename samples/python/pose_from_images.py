@@ -10,7 +10,8 @@ ximgproc fitted to their edges, LBD of line_descriptor), the estimate from the t
 calib.yml holds the calibration keys of a problem file: K or K1..K3, optional dist or
 dist1..dist3, R12, t12 (view 2's pose; view 1 is the world frame). The result holds R, t,
 num_inliers, point_inliers, line_inliers, rms, the numbers of point tracks and segment triplets,
-and the matched features as a problem (K.., R12, t12, points1..3, lines1..3, in undistorted
+pixel_scale, threshold and loss_scale (the estimate's tolerances in the images' pixels), and the
+matched features as a problem (K.., R12, t12, points1..3, lines1..3, in undistorted
 pixels). With --problem-only the matched problem is written without an estimate (the tripose
 package is then not needed; tripose_estimate solves the file). Images larger than --max-image-size
 (default 1600 px on the longer side; 0: no limit) are detected in a reduced copy: the positions
@@ -41,6 +42,14 @@ IMAGE_LOSS_SCALE = 0.5
 
 class InputError(Exception):
     pass
+
+
+def whole_number(text):
+    """An integer written as the C++ samples read one (1600, 1.6e3)."""
+    value = float(text)
+    if not value.is_integer():
+        raise ValueError(text)
+    return int(value)
 
 
 class ArgumentParser(argparse.ArgumentParser):
@@ -423,7 +432,7 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed, pixel_scale=1.0):
     return pose
 
 
-def write_result(path, calib, points, lines, pose):
+def write_result(path, calib, points, lines, pose, pixel_scale, threshold):
     fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
     if not fs.isOpened():
         raise InputError(f"cannot write {path}")
@@ -438,6 +447,10 @@ def write_result(path, calib, points, lines, pose):
         fs.write("point_inliers", np.asarray(pose["point_inliers"], np.int32).reshape(-1, 1))
         fs.write("line_inliers", np.asarray(pose["line_inliers"], np.int32).reshape(-1, 1))
     fs.write("num_point_tracks", len(points[0]))
+    # The tolerances of the estimate, in the images' pixels (see estimate_pose()).
+    fs.write("pixel_scale", float(pixel_scale))
+    fs.write("threshold", float(threshold * pixel_scale))
+    fs.write("loss_scale", float(IMAGE_LOSS_SCALE * pixel_scale))
     fs.write("num_segment_triplets", len(lines[0]))
     for v in range(3):
         fs.write(f"K{v + 1}", calib["K"][v])
@@ -458,7 +471,7 @@ def main(argv=None):
     parser.add_argument("--features", choices=("points", "lines", "all"), default="all")
     parser.add_argument("--threshold", type=float, default=2.0)
     parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--max-image-size", type=int, default=MAX_IMAGE_SIZE,
+    parser.add_argument("--max-image-size", type=whole_number, default=MAX_IMAGE_SIZE,
                         help="detect features in images reduced to this longer side (px; 0: full size)")
     parser.add_argument("--problem-only", action="store_true",
                         help="write the matched problem without an estimate")
@@ -484,7 +497,9 @@ def main(argv=None):
         print(f"pose_from_images: {len(points[0])} point tracks, {len(lines[0])} segment triplets")
         if len(points[0]) + len(lines[0]) < MIN_FEATURES:
             raise InputError(f"too few features seen in all three images ({', '.join(args.images)}): "
-                             f"{len(points[0])} point tracks and {len(lines[0])} segment triplets")
+                             f"{len(points[0])} point tracks and {len(lines[0])} segment triplets"
+                             + (f" (detected in the images reduced by {pixel_scale:.2f}: --max-image-size "
+                                f"{args.max_image_size})" if pixel_scale > 1 else ""))
         pose = None
         if not args.problem_only:
             try:
@@ -495,7 +510,7 @@ def main(argv=None):
                       "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
                 return 2
             print(f"pose_from_images: {pose['num_inliers']} inliers")
-        write_result(args.output, calib, points, lines, pose)
+        write_result(args.output, calib, points, lines, pose, pixel_scale, args.threshold)
     except InputError as e:
         print(f"pose_from_images: {e}", file=sys.stderr)
         return 1

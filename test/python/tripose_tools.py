@@ -2,6 +2,7 @@
 writing problem files, running tripose_estimate and checking its rejections."""
 import importlib
 import os
+import struct
 import subprocess
 from pathlib import Path
 
@@ -121,3 +122,17 @@ def expect_rejected(tmp_path, problem, names, *extra):
     assert names in proc.stderr, proc.stderr
     assert not out.exists()
     assert files_in(tmp_path) == before
+
+
+def write_turned_jpeg(image, path):
+    """@p image stored as a phone stores a portrait photo: turned a quarter counter-clockwise, with the
+    EXIF orientation 6 ("turn 90 degrees clockwise to view") that makes a reader turn it back."""
+    ok, jpeg = cv2.imencode(".jpg", cv2.rotate(image, cv2.ROTATE_90_COUNTERCLOCKWISE), [cv2.IMWRITE_JPEG_QUALITY, 95])
+    assert ok
+    # A big-endian TIFF header and one IFD entry: tag 0x0112 (Orientation), SHORT, count 1, value 6.
+    tiff = b"MM\x00\x2a" + struct.pack(">I", 8) + struct.pack(">H", 1) + struct.pack(">HHIHH", 0x0112, 3, 1, 6, 0) \
+        + struct.pack(">I", 0)
+    exif = b"Exif\x00\x00" + tiff
+    jpeg = jpeg.tobytes()
+    Path(path).write_bytes(jpeg[:2] + b"\xff\xe1" + struct.pack(">H", len(exif) + 2) + exif + jpeg[2:])
+    return path
