@@ -318,11 +318,13 @@ int main(int argc, char** argv)
         K[v] = cameraMatrixOf(calibration, v);
         dist.push_back(distortionOf(calibration, v));
     }
+    // Features found in reduced images are that much less precise in the images' pixels: every pixel
+    // tolerance, the matching's and the estimate's, grows by the reduction.
     const double pixelScale = detectionScale(images, options.features.maxImageSize);
-    if (pixelScale > 1)
-        std::cout << cv::format("tripose_images: features detected in the images reduced by %.2f (--max-image-size "
-                                "%d); pixel tolerances scaled by it\n",
-                                pixelScale, options.features.maxImageSize);
+    const std::string reduction = reductionNote(pixelScale, options.features.maxImageSize);
+    const cv::tripose::RansacParams ransac = withPixelScale(options.ransac, pixelScale);
+    if (!reduction.empty())
+        std::cout << "tripose_images: " << reduction << "; pixel tolerances scaled by it\n";
     const std::vector<ImageFeatures> extracted =
         extractFeaturesOfImages(images, { K[0], K[1], K[2] }, dist, options.features, times);
     const ImageFeatures features[3] = { extracted[0], extracted[1], extracted[2] };
@@ -339,10 +341,7 @@ int main(int argc, char** argv)
         std::cerr << "tripose_images: too few features seen in all three images (" << options.images[0] << ", "
                   << options.images[1] << ", " << options.images[2] << "): " << tracks << " point tracks and "
                   << segments << " segment triplets, at least " << kMinFeatures << " needed"
-                  << (pixelScale > 1 ? cv::format(" (detected in the images reduced by %.2f: --max-image-size %d)",
-                                                  pixelScale, options.features.maxImageSize)
-                                     : std::string())
-                  << "\n";
+                  << (reduction.empty() ? "" : " (" + reduction + ")") << "\n";
         return 1;
     }
 
@@ -362,8 +361,7 @@ int main(int argc, char** argv)
         inliers = cv::tripose::estimatePoseLinePointRansac(matched.points[0], matched.points[1], matched.points[2],
                                                            matched.lines[0], matched.lines[1], matched.lines[2],
                                                            matched.K, cv::noArray(), matched.R12, matched.t12, R, t,
-                                                           withPixelScale(options.ransac, pixelScale), pointInliers,
-                                                           lineInliers);
+                                                           ransac, pointInliers, lineInliers);
         times.estimation += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     }
     catch (const cv::Exception& e)
@@ -391,11 +389,10 @@ int main(int argc, char** argv)
             fs << "num_inliers" << inliers << "point_inliers" << inlierColumn(pointInliers) << "line_inliers"
                << inlierColumn(lineInliers);
             fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
-            // The tolerances the estimate used, in the images' pixels (--threshold and the loss scale times
-            // the detection's reduction): what tripose_estimate needs to solve the problem below again.
-            const cv::tripose::RansacParams used = withPixelScale(options.ransac, pixelScale);
-            fs << "pixel_scale" << pixelScale << "threshold" << used.threshold << "loss_scale"
-               << used.refineParams.lossScale;
+            // The tolerances the estimate used, in the images' pixels: what tripose_estimate needs to
+            // solve the problem below again.
+            fs << "pixel_scale" << pixelScale << "threshold" << ransac.threshold << "loss_scale"
+               << ransac.refineParams.lossScale;
             fs << "ms_points" << times.points << "ms_segment_detection" << times.segmentDetection
                << "ms_segment_description" << times.segmentDescription << "ms_matching" << times.matching
                << "ms_estimation" << times.estimation << "ms_features_wall" << times.featuresWall

@@ -25,6 +25,7 @@
 #include <opencv2/tripose.hpp>
 
 #include "arguments.hpp"
+#include "image_estimation.hpp"
 #include "problem_io.hpp"
 #include "sequence_tracking.hpp"
 #if TRIPOSE_HAVE_IMAGE_FRONT_END
@@ -213,10 +214,9 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
     if (maxImageSize >= 0)
         features.maxImageSize = maxImageSize;
     pixelScale = detectionScale(images, features.maxImageSize);
-    if (pixelScale > 1)
-        std::cout << cv::format("Front end: features detected in the images reduced by %.2f (--max-image-size %d); "
-                                "pixel tolerances scaled by it\n",
-                                pixelScale, features.maxImageSize);
+    const std::string reduction = reductionNote(pixelScale, features.maxImageSize);
+    if (!reduction.empty())
+        std::cout << "Front end: " << reduction << "; pixel tolerances scaled by it\n";
     SequenceObservations observations =
         observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
                                sequence.ts[1], features, withPixelScale(MatchOptions(), pixelScale), times);
@@ -272,7 +272,7 @@ int main(int argc, char** argv)
             double pixelScale = 1;
             observations = observationsFromFolderImages(options.data, sequence, options.maxImageSize, pixelScale);
             // The features of reduced images are that much less precise in the images' pixels.
-            options.track.ransac.threshold *= pixelScale;
+            options.track.ransac = tripose_samples::withPixelScale(options.track.ransac, pixelScale);
         }
         catch (const std::exception& e)
         {

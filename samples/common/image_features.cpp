@@ -108,6 +108,13 @@ double detectionScale(const std::vector<cv::Mat>& images, int maxImageSize)
     return scale;
 }
 
+std::string reductionNote(double pixelScale, int maxImageSize)
+{
+    return pixelScale > 1 ? cv::format("features detected in the images reduced by %.2f (--max-image-size %d)",
+                                       pixelScale, maxImageSize)
+                          : std::string();
+}
+
 bool parseFeatureKinds(const std::string& word, FeatureKinds& kinds)
 {
     if (word == "points")

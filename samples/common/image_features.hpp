@@ -73,6 +73,10 @@ double detectionScale(const cv::Size& imageSize, int maxImageSize);
 //! The largest detectionScale() of @p images.
 double detectionScale(const std::vector<cv::Mat>& images, int maxImageSize);
 
+//! "features detected in the images reduced by <pixelScale> (--max-image-size <maxImageSize>)" for
+//! the samples' messages; empty when @p pixelScale is 1 (nothing reduced).
+std::string reductionNote(double pixelScale, int maxImageSize);
+
 /** Detects and describes the features of a grey or colour 8-bit image (converted to grey), reduced to
 FeatureOptions::maxImageSize when it is larger; positions are in the image's own pixels. With
 non-empty @p distCoeffs, positions are undistorted with @p K (cv::undistortPoints, new camera K).

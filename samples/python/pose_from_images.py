@@ -412,12 +412,10 @@ def triplet_rows(views, K, R12, t12, pixel_scale=1.0):
 
 # --- estimate ------------------------------------------------------------------------------------
 
-def estimate_pose(points, lines, K, R12, t12, threshold, seed, pixel_scale=1.0):
+def estimate_pose(points, lines, K, R12, t12, threshold, seed, loss_scale=IMAGE_LOSS_SCALE):
     """The tripose package's robust estimator (RANSAC, then refinement), the refinement over the
     inliers repeated under the Cauchy loss of the C++ samples (the package's RANSAC refines by least
-    squares). threshold and the loss scale are in the detection image's pixels: pixel_scale
-    (detection_scale()) turns them into the image's."""
-    threshold *= pixel_scale
+    squares). threshold and loss_scale are in the images' pixels (see main())."""
     import tripose
     pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
                                                    K, R12, t12, threshold=threshold, refine=True, seed=seed)
@@ -426,13 +424,13 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed, pixel_scale=1.0):
     p, l = np.asarray(pose["point_inliers"], bool), np.asarray(pose["line_inliers"], bool)
     refined = tripose.refine_pose_line_point(points[0][p], points[1][p], points[2][p], lines[0][l], lines[1][l],
                                              lines[2][l], K, R12, t12, pose["R"], pose["t"], loss="cauchy",
-                                             loss_scale=IMAGE_LOSS_SCALE * pixel_scale)
+                                             loss_scale=loss_scale)
     # The robust estimate's other entries (inlier masks, counts) stay; its RMS is the refinement's now.
     pose["R"], pose["t"], pose["rms"] = refined["R"], refined["t"], refined["rms"]
     return pose
 
 
-def write_result(path, calib, points, lines, pose, pixel_scale, threshold):
+def write_result(path, calib, points, lines, pose, tolerances):
     fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
     if not fs.isOpened():
         raise InputError(f"cannot write {path}")
@@ -447,10 +445,8 @@ def write_result(path, calib, points, lines, pose, pixel_scale, threshold):
         fs.write("point_inliers", np.asarray(pose["point_inliers"], np.int32).reshape(-1, 1))
         fs.write("line_inliers", np.asarray(pose["line_inliers"], np.int32).reshape(-1, 1))
     fs.write("num_point_tracks", len(points[0]))
-    # The tolerances of the estimate, in the images' pixels (see estimate_pose()).
-    fs.write("pixel_scale", float(pixel_scale))
-    fs.write("threshold", float(threshold * pixel_scale))
-    fs.write("loss_scale", float(IMAGE_LOSS_SCALE * pixel_scale))
+    for key, value in tolerances.items():  # pixel_scale, and the estimate's in the images' pixels
+        fs.write(key, float(value))
     fs.write("num_segment_triplets", len(lines[0]))
     for v in range(3):
         fs.write(f"K{v + 1}", calib["K"][v])
@@ -489,28 +485,32 @@ def main(argv=None):
         with ThreadPoolExecutor(max_workers=3) as pool:
             views = list(pool.map(lambda v: extract(images[v], calib["K"][v], dist[v], args.features,
                                                     max_size=args.max_image_size), range(3)))
+        # Features found in reduced images are that much less precise in the images' pixels: every
+        # pixel tolerance, the matching's and the estimate's, grows by the reduction.
         pixel_scale = max(detection_scale(image.shape, args.max_image_size) for image in images)
-        if pixel_scale > 1:
-            print(f"pose_from_images: features detected in the images reduced by {pixel_scale:.2f} "
-                  f"(--max-image-size {args.max_image_size}); pixel tolerances scaled by it")
+        tolerances = {"pixel_scale": pixel_scale, "threshold": args.threshold * pixel_scale,
+                      "loss_scale": IMAGE_LOSS_SCALE * pixel_scale}
+        reduction = (f"features detected in the images reduced by {pixel_scale:.2f} "
+                     f"(--max-image-size {args.max_image_size})" if pixel_scale > 1 else "")
+        if reduction:
+            print(f"pose_from_images: {reduction}; pixel tolerances scaled by it")
         points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"], pixel_scale)
         print(f"pose_from_images: {len(points[0])} point tracks, {len(lines[0])} segment triplets")
         if len(points[0]) + len(lines[0]) < MIN_FEATURES:
             raise InputError(f"too few features seen in all three images ({', '.join(args.images)}): "
                              f"{len(points[0])} point tracks and {len(lines[0])} segment triplets"
-                             + (f" (detected in the images reduced by {pixel_scale:.2f}: --max-image-size "
-                                f"{args.max_image_size})" if pixel_scale > 1 else ""))
+                             + (f" ({reduction})" if reduction else ""))
         pose = None
         if not args.problem_only:
             try:
-                pose = estimate_pose(points, lines, calib["K"], calib["R12"], calib["t12"], args.threshold, args.seed,
-                                     pixel_scale)
+                pose = estimate_pose(points, lines, calib["K"], calib["R12"], calib["t12"], tolerances["threshold"],
+                                     args.seed, tolerances["loss_scale"])
             except ImportError:
                 print("pose_from_images: the tripose package is not installed (pip install tripose); "
                       "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
                 return 2
             print(f"pose_from_images: {pose['num_inliers']} inliers")
-        write_result(args.output, calib, points, lines, pose, pixel_scale, args.threshold)
+        write_result(args.output, calib, points, lines, pose, tolerances)
     except InputError as e:
         print(f"pose_from_images: {e}", file=sys.stderr)
         return 1

@@ -17,7 +17,6 @@ memory, not the accuracy a real 12-megapixel camera would give. Each row is one 
 """
 
 import argparse
-import subprocess
 import sys
 import tempfile
 import time
@@ -27,8 +26,9 @@ import cv2
 import numpy as np
 
 REPO = Path(__file__).resolve().parents[2]
-MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
-CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
+sys.path.insert(0, str(REPO / "test" / "python"))
+from tripose_tools import MERTON_CALIB as CALIB, enlarged_merton, run_with_peak_memory  # noqa: E402
+
 ENLARGEMENT = 4
 
 
@@ -39,37 +39,14 @@ def read(path, key):
     return value
 
 
-def enlarged_triplet(folder):
-    """The triplet's images enlarged, and their calibration (the original's pixel centre x at 4 x + 1.5)."""
-    to_enlarged = np.array([[ENLARGEMENT, 0, 1.5], [0, ENLARGEMENT, 1.5], [0, 0, 1]])
-    fs = cv2.FileStorage(str(folder / "calib.yml"), cv2.FILE_STORAGE_WRITE)
-    for k in (1, 2, 3):
-        fs.write(f"K{k}", to_enlarged @ read(CALIB, f"K{k}"))
-    for key in ("R12", "t12"):
-        fs.write(key, read(CALIB, key))
-    fs.release()
-    images = []
-    for k in (1, 2, 3):
-        image = cv2.imread(str(MERTON / f"00{k}.jpg"))
-        images.append(folder / f"00{k}.jpg")
-        cv2.imwrite(str(images[-1]), cv2.resize(image, None, fx=ENLARGEMENT, fy=ENLARGEMENT,
-                                                interpolation=cv2.INTER_CUBIC), [cv2.IMWRITE_JPEG_QUALITY, 92])
-    return folder / "calib.yml", images
-
-
 def run_measured(command):
-    """Wall-clock seconds and peak resident memory (MiB) of @p command, from a fresh Python so that no
-    other child counts; raises when it fails."""
-    probe = ("import resource, subprocess, sys; p = subprocess.run(sys.argv[1:], capture_output=True, text=True); "
-             "print(p.returncode); print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024); "
-             "print(p.stdout + p.stderr)")
+    """Wall-clock seconds and peak resident memory (MiB) of @p command; raises when it fails."""
     start = time.perf_counter()
-    proc = subprocess.run([sys.executable, "-c", probe, *map(str, command)], capture_output=True, text=True)
+    status, peak, output = run_with_peak_memory(command)
     seconds = time.perf_counter() - start
-    status, peak, output = proc.stdout.split("\n", 2)
-    if status != "0":
+    if status != 0:
         raise RuntimeError(f"{command[0]} failed: {output}")
-    return seconds, float(peak)
+    return seconds, peak
 
 
 def errors(result):
@@ -95,7 +72,7 @@ def main():
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        calib, images = enlarged_triplet(folder)
+        calib, images = enlarged_merton(folder, ENLARGEMENT, ".jpg", (cv2.IMWRITE_JPEG_QUALITY, 92))
         for size in args.sizes:
             for name, program in (("C++", [tool]), ("Python", [args.python, sample])):
                 out = folder / f"{name}_{size}.yml"

@@ -9,7 +9,7 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import REPO, build_tool, read_matrices, rotation_error, write_turned_jpeg
+from tripose_tools import REPO, build_tool, offsets_to_nearest, read_matrices, rotation_error, write_turned_jpeg
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
@@ -153,8 +153,7 @@ def sample_module():
 def point_shift(moved, reference):
     """Median offset (x, y) of each point of @p moved from the nearest of @p reference, over the pairs
     within 1 px, and the share of @p moved in such pairs."""
-    matches = cv2.BFMatcher(cv2.NORM_L2).match(moved.astype(np.float32), reference.astype(np.float32))
-    offsets = np.array([moved[m.queryIdx] - reference[m.trainIdx] for m in matches])
+    offsets = offsets_to_nearest(moved, reference)
     near = np.hypot(*offsets.T) < 1
     return np.median(offsets[near], axis=0), near.mean()
 
@@ -222,8 +221,7 @@ def test_reduction_maps_each_axis_by_its_own_factor():
     _, factor = sample.detection_image(image, 1600)
     assert abs(factor[0] - factor[1]) > 2e-4
     found = sample.extract(image, np.eye(3), None, "points", max_size=1600)["points"]
-    matches = cv2.BFMatcher(cv2.NORM_L2).match(centres.astype(np.float32), found.astype(np.float32))
-    offsets = np.array([found[m.trainIdx] - centres[m.queryIdx] for m in matches])
+    offsets = -offsets_to_nearest(centres, found)  # the point found nearest each centre, from it
     near = np.hypot(*offsets.T) < 2
     bottom = near & (centres[:, 1] > 1800)
     assert near.sum() > 300 and bottom.sum() > 30, (near.sum(), bottom.sum())

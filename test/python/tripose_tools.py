@@ -4,6 +4,7 @@ import importlib
 import os
 import struct
 import subprocess
+import sys
 from pathlib import Path
 
 import cv2
@@ -136,3 +137,45 @@ def write_turned_jpeg(image, path):
     jpeg = jpeg.tobytes()
     Path(path).write_bytes(jpeg[:2] + b"\xff\xe1" + struct.pack(">H", len(exif) + 2) + exif + jpeg[2:])
     return path
+
+
+MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
+MERTON_CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
+
+
+def enlarged_merton(folder, factor, suffix=".png", write_params=(cv2.IMWRITE_PNG_COMPRESSION, 1)):
+    """The bundled Merton College I triplet enlarged @p factor times (bicubic) into @p folder, and its
+    calibration, whose K puts the original's pixel centre x at factor x + (factor - 1) / 2:
+    (calibration path, image paths)."""
+    values = read_matrices(MERTON_CALIB, ["K1", "K2", "K3", "R12", "t12"])
+    offset = (factor - 1) / 2
+    to_enlarged = np.array([[factor, 0, offset], [0, factor, offset], [0, 0, 1]])
+    for k in (1, 2, 3):
+        values[f"K{k}"] = to_enlarged @ values[f"K{k}"]
+    calib = Path(folder) / "calib.yml"
+    write_problem(calib, values)
+    images = []
+    for k in (1, 2, 3):
+        images.append(Path(folder) / f"enlarged{k}{suffix}")
+        image = cv2.resize(cv2.imread(str(MERTON / f"00{k}.jpg")), None, fx=factor, fy=factor,
+                           interpolation=cv2.INTER_CUBIC)
+        cv2.imwrite(str(images[-1]), image, list(write_params))
+    return calib, images
+
+
+def run_with_peak_memory(command, timeout=None):
+    """The exit status, output and peak resident memory (MiB) of @p command, run from a fresh Python so
+    that no earlier child counts."""
+    probe = ("import resource, subprocess, sys; p = subprocess.run(sys.argv[1:], capture_output=True, text=True); "
+             "print(p.returncode); print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024); "
+             "print(p.stdout + p.stderr)")
+    proc = subprocess.run([sys.executable, "-c", probe, *map(str, command)], capture_output=True, text=True,
+                          timeout=timeout)
+    status, peak, output = proc.stdout.split("\n", 2)
+    return int(status), float(peak), output
+
+
+def offsets_to_nearest(points, reference):
+    """Each of @p points (N x 2) minus the nearest of @p reference (M x 2)."""
+    matches = cv2.BFMatcher(cv2.NORM_L2).match(points.astype(np.float32), reference.astype(np.float32))
+    return np.array([points[m.queryIdx] - reference[m.trainIdx] for m in matches])
