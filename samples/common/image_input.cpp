@@ -15,6 +15,22 @@
 
 namespace tripose_samples {
 
+namespace {
+
+/** @p image, of more than 8 bits per channel, in 8 bits: its values from @p lowest to @p highest
+stretched linearly onto 0-255. The detectors take 8-bit images, and keeping the top byte alone (as
+OpenCV's own conversion to 8 bits does) would leave a camera's 12 bits stored in 16 (0-4095) with 16
+grey levels, too few for SIFT's contrast threshold. */
+cv::Mat stretchedToEightBits(const cv::Mat& image, double lowest, double highest)
+{
+    const double scale = 255.0 / (highest - lowest);
+    cv::Mat out;
+    image.convertTo(out, CV_8U, scale, -lowest * scale);
+    return out;
+}
+
+} // namespace
+
 cv::Mat readImage(const std::string& path)
 {
     std::error_code error;
@@ -28,14 +44,14 @@ cv::Mat readImage(const std::string& path)
     const cv::Mat image = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
     if (image.empty())
         throw std::runtime_error("image " + path + ": cannot be decoded (not an image OpenCV reads)");
-    if (image.depth() != CV_8U)
-        throw std::runtime_error("image " + path + ": expected 8 bits per channel");
+    if (!cv::checkRange(image))
+        throw std::runtime_error("image " + path + ": holds values that are not finite numbers");
     double lowest = 0, highest = 0;
     cv::minMaxLoc(image.reshape(1), &lowest, &highest);
     if (lowest == highest)
         throw std::runtime_error("image " + path + ": blank (every pixel has the value " +
-                                 std::to_string((int)lowest) + ")");
-    return image;
+                                 cv::format("%g", lowest) + ")");
+    return image.depth() == CV_8U ? image : stretchedToEightBits(image, lowest, highest);
 }
 
 void checkImageFitsCalibration(const cv::Mat& image, const std::string& path, const cv::Matx33d& K,

@@ -14,8 +14,11 @@
 
 namespace tripose_samples {
 
-/** The 8-bit image in @p path (grey or colour as stored), turned as its EXIF orientation says. Throws std::runtime_error naming the file
-when it is missing, cannot be decoded, is not 8-bit, or is blank (every pixel the same value). */
+/** The image in @p path (grey or colour as stored) in 8 bits per channel, turned as its EXIF
+orientation says. An image of more bits (16-bit PNG or TIFF, 32-bit float TIFF) has its values
+stretched from its lowest to its highest onto 0-255. Throws std::runtime_error naming the file when
+it is missing, cannot be decoded, holds values that are not finite, or is blank (every pixel the
+same value). */
 cv::Mat readImage(const std::string& path);
 
 /** Throws std::runtime_error naming the file and @p key when the principal point of @p K is far from

@@ -16,7 +16,8 @@ pixels). With --problem-only the matched problem is written without an estimate 
 package is then not needed; tripose_estimate solves the file). Images larger than --max-image-size
 (default 1600 px on the longer side; 0: no limit) are detected in a reduced copy: the positions
 come back in the images' pixels, and the pixel tolerances (--threshold among them) grow by the
-reduction.
+reduction. Images of more than 8 bits (16-bit PNG or TIFF) are stretched from their lowest to
+their highest value onto 8 bits.
 
 Exit status: 0 on success, 1 on bad input (the message names the file, key or argument), 2 when the
 tripose package is missing.
@@ -99,14 +100,28 @@ def read_calibration(path):
     return calib
 
 
+def stretched_to_eight_bits(image, lowest, highest):
+    """An image of more than 8 bits (16-bit PNG or TIFF, float TIFF) in 8 bits, its values from lowest
+    to highest stretched onto 0-255, as the C++ samples (samples/common/image_input.cpp): keeping the
+    top byte alone, as OpenCV's own conversion does, leaves a camera's 12 bits stored in 16 with 16
+    grey levels, too few for SIFT."""
+    scale = 255.0 / (float(highest) - float(lowest))
+    return np.clip(np.rint((image.astype(np.float64) - float(lowest)) * scale), 0, 255).astype(np.uint8)
+
+
 def read_image(path, K, key):
     if not Path(path).is_file():
         raise InputError(f"image {path}: no such file")
-    image = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE)
+    image = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE | cv2.IMREAD_ANYDEPTH)
     if image is None:
         raise InputError(f"image {path}: cannot be decoded")
-    if image.min() == image.max():
+    if not np.all(np.isfinite(image)):
+        raise InputError(f"image {path}: holds values that are not finite numbers")
+    lowest, highest = image.min(), image.max()
+    if lowest == highest:
         raise InputError(f"image {path}: blank")
+    if image.dtype != np.uint8:
+        image = stretched_to_eight_bits(image, lowest, highest)
     # The principal point of real cameras lies near the image centre; an image scaled against its
     # calibration moves it a quarter of the image or more away.
     h, w = image.shape

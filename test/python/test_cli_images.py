@@ -11,8 +11,8 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import (REPO, build_tool, enlarged_merton, files_in, offsets_to_nearest, read_matrices,
-                           rotation_error, run_with_peak_memory, write_problem, write_turned_jpeg)
+from tripose_tools import (REPO, build_tool, enlarged_merton, files_in, merton_greys_in_bits, offsets_to_nearest,
+                           read_matrices, rotation_error, run_with_peak_memory, write_problem, write_turned_jpeg)
 
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
 CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
@@ -215,6 +215,34 @@ def test_exif_orientation_is_applied(tmp_path):
     proc, out = run_images(tmp_path, images=[IMAGES[0], IMAGES[1], turned])
     assert proc.returncode == 0, proc.stderr
     assert pose_error_deg(out) < BOUND_DEG  # measured 0.017 deg
+
+
+@pytest.mark.parametrize("bits", [12, 16])
+def test_images_of_more_than_eight_bits(tmp_path, bits):
+    # A camera's 12 bits stored in 16-bit PNGs (0-4080 here), or 16 bits: stretched from their lowest
+    # to their highest value, they give the features of the same greys in 8 bits, to the pixel. Before,
+    # the front end refused them; keeping the top byte alone, as OpenCV's conversion to 8 bits does,
+    # leaves 16 grey levels of 12 bits and no point track (measured with the Python sample: 0 tracks).
+    deeper, eight = merton_greys_in_bits(tmp_path, bits)
+    proc, out = run_images(tmp_path, images=deeper, name="deeper.yml")
+    assert proc.returncode == 0, proc.stderr
+    proc, reference = run_images(tmp_path, images=eight, name="eight.yml")
+    assert proc.returncode == 0, proc.stderr
+    keys = ["points1", "points3", "lines1", "lines3", "R"]
+    values, expected = read_matrices(out, keys), read_matrices(reference, keys)
+    for key in keys:
+        np.testing.assert_array_equal(values[key], expected[key], err_msg=key)
+    assert pose_error_deg(out) < BOUND_DEG  # measured 0.014 deg
+
+
+def test_image_with_values_that_are_not_numbers(tmp_path):
+    # A float TIFF with a NaN cannot be stretched onto 8 bits.
+    image = cv2.imread(str(IMAGES[2]), cv2.IMREAD_GRAYSCALE).astype(np.float32)
+    image[10, 20] = np.nan
+    broken = tmp_path / "nan.tiff"
+    assert cv2.imwrite(str(broken), image)
+    expect_rejected(tmp_path, "not finite", images=[IMAGES[0], IMAGES[1], broken])
+    expect_rejected(tmp_path, str(broken), images=[IMAGES[0], IMAGES[1], broken])
 
 
 def expect_rejected(tmp_path, names, *options, **inputs):

@@ -9,7 +9,8 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import REPO, build_tool, offsets_to_nearest, read_matrices, rotation_error, write_turned_jpeg
+from tripose_tools import (REPO, build_tool, merton_greys_in_bits, offsets_to_nearest, read_matrices, rotation_error,
+                           write_turned_jpeg)
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
@@ -88,6 +89,35 @@ def test_exif_orientation_is_applied(tmp_path):
     assert proc.returncode == 0, proc.stderr
     R = solve_with_tripose_estimate(out, tmp_path / "estimate.yml")
     assert np.degrees(rotation_error(R, read_matrices(CALIB, ["R_gt"])["R_gt"])) < 0.1
+
+
+def test_images_of_twelve_bits(tmp_path):
+    # As the C++ front end (test_cli_images.py): 12 bits stored in 16-bit PNGs are stretched onto 8
+    # bits and give the features of the same greys in 8 bits. OpenCV's own conversion (the top byte)
+    # left 16 grey levels and no point track.
+    deeper, eight = merton_greys_in_bits(tmp_path, 12)
+    problems = []
+    for images, name in ((deeper, "deeper.yml"), (eight, "eight.yml")):
+        problems.append(tmp_path / name)
+        proc = run_script(problems[-1], "--problem-only", images=images)
+        assert proc.returncode == 0, proc.stderr
+    keys = ["points1", "points3", "lines1", "lines3"]
+    values, expected = read_matrices(problems[0], keys), read_matrices(problems[1], keys)
+    for key in keys:
+        np.testing.assert_array_equal(values[key], expected[key], err_msg=key)
+    R = solve_with_tripose_estimate(problems[0], tmp_path / "estimate.yml")
+    assert np.degrees(rotation_error(R, read_matrices(CALIB, ["R_gt"])["R_gt"])) < 0.1
+
+
+def test_image_with_values_that_are_not_numbers_is_rejected(tmp_path):
+    image = cv2.imread(str(IMAGES[2]), cv2.IMREAD_GRAYSCALE).astype(np.float32)
+    image[10, 20] = np.nan
+    broken = tmp_path / "nan.tiff"
+    assert cv2.imwrite(str(broken), image)
+    out = tmp_path / "problem.yml"
+    proc = run_script(out, "--problem-only", images=[IMAGES[0], IMAGES[1], broken])
+    assert proc.returncode == 1 and str(broken) in proc.stderr and "not finite" in proc.stderr, proc.stderr
+    assert not out.exists()
 
 
 @pytest.mark.parametrize("axis", [0, 1])

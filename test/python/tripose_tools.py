@@ -163,6 +163,22 @@ def enlarged_merton(folder, factor, suffix=".png", write_params=(cv2.IMWRITE_PNG
     return calib, images
 
 
+def merton_greys_in_bits(folder, bits):
+    """The bundled Merton College I triplet's grey images stored as a camera of @p bits bits per pixel
+    stores them in 16-bit PNGs (each grey level times 2^(bits - 8)), and the same greys as 8-bit PNGs:
+    (deeper image paths, 8-bit image paths). The greys span 0-255, so a reader that stretches a deeper
+    image from its lowest to its highest value gets the 8-bit images back exactly."""
+    deeper, eight = [], []
+    for k in (1, 2, 3):
+        grey = cv2.imread(str(MERTON / f"00{k}.jpg"), cv2.IMREAD_GRAYSCALE)
+        assert grey.min() == 0 and grey.max() == 255
+        deeper.append(Path(folder) / f"grey{k}_{bits}bit.png")
+        eight.append(Path(folder) / f"grey{k}_8bit.png")
+        assert cv2.imwrite(str(deeper[-1]), grey.astype(np.uint16) << (bits - 8))
+        assert cv2.imwrite(str(eight[-1]), grey)
+    return deeper, eight
+
+
 def run_with_peak_memory(command, timeout=None):
     """The exit status, output and peak resident memory (MiB) of @p command, run from a fresh Python so
     that no earlier child counts."""
