@@ -148,6 +148,10 @@ Problem readCalibration(const std::string& path)
     }
     if (calibration.stereo)
         throw std::runtime_error("calibration " + path + ": holds a stereo rig (points4/lines4); three views expected");
+    // Views 1 and 2 are matched under their epipolar geometry and the structure is triangulated
+    // between them: checked here, before the features' time is spent, as the solver would after it.
+    if (!(cv::norm(calibration.t12) > 0))
+        throw std::runtime_error("calibration " + path + ": key 't12': must be non-zero (views 1 and 2 need a baseline)");
     return calibration;
 }
 

@@ -79,3 +79,21 @@ def test_large_images_through_the_package(tmp_path):
                            str(loss_scale)], capture_output=True, text=True, timeout=120)
     assert tool.returncode == 0, tool.stderr
     assert rotation_error_deg(result["R"], read(again, ["R"])["R"]) < 1e-3
+
+
+def test_input_the_package_rejects_is_bad_input(tmp_path):
+    # R12 that is no rotation passes the sample's own reading; the package rejects it naming the key.
+    # The sample reports that as bad input (exit status 1), not as a traceback.
+    values = read(CALIB, ["K1", "K2", "K3", "R12", "t12"])
+    values["R12"] = 1.1 * values["R12"]
+    calib = tmp_path / "calib.yml"
+    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_WRITE)
+    for key, value in values.items():
+        fs.write(key, value)
+    fs.release()
+    out = tmp_path / "result.yml"
+    proc = subprocess.run([sys.executable, str(SCRIPT), "--calib", str(calib), "--images", *map(str, IMAGES),
+                           "--output", str(out)], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 1, proc.stderr
+    assert "R12" in proc.stderr and str(calib) in proc.stderr and "Traceback" not in proc.stderr
+    assert not out.exists()

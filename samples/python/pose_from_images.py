@@ -96,6 +96,10 @@ def read_calibration(path):
     if calib["R12"].size == 3:
         calib["R12"] = cv2.Rodrigues(calib["R12"])[0]
     calib["t12"] = calib["t12"].reshape(3, 1)
+    # Views 1 and 2 are matched under their epipolar geometry and the structure is triangulated
+    # between them: checked before the features' time is spent, as the solver would after it.
+    if not np.linalg.norm(calib["t12"]) > 0:
+        raise InputError(f"calibration {path}: key 't12': must be non-zero (views 1 and 2 need a baseline)")
     fs.release()
     return calib
 
@@ -524,6 +528,8 @@ def main(argv=None):
                 print("pose_from_images: the tripose package is not installed (pip install tripose); "
                       "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
                 return 2
+            except (ValueError, TypeError) as e:  # the package names the argument it rejects
+                raise InputError(f"the solver rejected the input of {args.calib}: {e}")
             print(f"pose_from_images: {pose['num_inliers']} inliers")
         write_result(args.output, calib, points, lines, pose, tolerances)
     except InputError as e:

@@ -235,6 +235,22 @@ def test_images_of_more_than_eight_bits(tmp_path, bits):
     assert pose_error_deg(out) < BOUND_DEG  # measured 0.014 deg
 
 
+def test_unrelated_third_image_gives_no_pose(tmp_path):
+    # A third image of blurred noise shares a handful of chance matches with the other two (2 point
+    # tracks and 5 segment triplets here): no pose, said so, and a result without R and t. Before,
+    # the estimate settled on one inlier and was written as the pose.
+    rng = np.random.default_rng(0)
+    noise = tmp_path / "noise.png"
+    cv2.imwrite(str(noise), cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2))
+    proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png", images=[IMAGES[0], IMAGES[1], noise])
+    assert proc.returncode == 0, proc.stderr
+    assert "no pose found" in proc.stderr
+    fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
+    assert fs.getNode("num_solutions").real() == 0 and fs.getNode("num_inliers").real() == 0
+    assert fs.getNode("R").empty() and fs.getNode("t").empty()
+    assert not (tmp_path / "overlay.png").exists()
+
+
 def test_image_with_values_that_are_not_numbers(tmp_path):
     # A float TIFF with a NaN cannot be stretched onto 8 bits.
     image = cv2.imread(str(IMAGES[2]), cv2.IMREAD_GRAYSCALE).astype(np.float32)
@@ -313,6 +329,20 @@ def test_calibration_without_a_needed_key(tmp_path, key):
     assert proc.returncode == 1, proc.stdout
     assert str(calib) in proc.stderr and f"'{key}'" in proc.stderr
     assert not out.exists() and files_in(tmp_path) == before
+
+
+def test_calibration_without_a_baseline(tmp_path):
+    # Views 1 and 2 at one place: rejected as bad input before the features are computed. Before, the
+    # solver rejected it after them, with exit status 2.
+    values = read_matrices(CALIB, ["K1", "K2", "K3", "R12"])
+    values["t12"] = np.zeros((3, 1))
+    calib = tmp_path / "calib.yml"
+    write_problem(calib, values)
+    proc, out = run_images(tmp_path, calib=calib)
+    assert proc.returncode == 1, proc.stdout + proc.stderr
+    assert str(calib) in proc.stderr and "'t12'" in proc.stderr and "non-zero" in proc.stderr
+    assert "points" not in proc.stdout  # no feature was detected
+    assert not out.exists()
 
 
 def test_missing_calibration_file(tmp_path):

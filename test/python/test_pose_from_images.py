@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from tripose_tools import (REPO, build_tool, merton_greys_in_bits, offsets_to_nearest, read_matrices, rotation_error,
-                           write_turned_jpeg)
+                           write_problem, write_turned_jpeg)
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
@@ -66,6 +66,19 @@ def test_calibration_without_t12_is_rejected(tmp_path):
     out = tmp_path / "result.yml"
     proc = run_script(out, "--problem-only", calib=calib)
     assert proc.returncode == 1 and "'t12'" in proc.stderr and str(calib) in proc.stderr
+    assert not out.exists()
+
+
+def test_calibration_without_a_baseline_is_rejected(tmp_path):
+    # As the C++ front end: views 1 and 2 at one place is bad input, found before the features.
+    values = read_matrices(CALIB, ["K1", "K2", "K3", "R12"])
+    values["t12"] = np.zeros((3, 1))
+    calib = tmp_path / "calib.yml"
+    write_problem(calib, values)
+    out = tmp_path / "result.yml"
+    proc = run_script(out, calib=calib)
+    assert proc.returncode == 1 and "'t12'" in proc.stderr and str(calib) in proc.stderr, proc.stderr
+    assert "Traceback" not in proc.stderr and "point tracks" not in proc.stdout
     assert not out.exists()
 
 

@@ -86,6 +86,32 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
         }
 }
 
+// Every view-3 observation a wrong match, as an unrelated third image gives: a pose is returned only
+// with the three inliers that determine one at least (a minimal sample). Before, the refinement could
+// settle on one or two inliers, which leave the pose free, and return it as found.
+TEST(Tripose_RansacUnrelatedView, no_pose_rests_on_fewer_than_three_inliers)
+{
+    const FeatureMix mixes[] = { { 2, 5 }, { 7, 0 }, { 0, 7 }, { 3, 3 }, { 10, 10 } };
+    for (const FeatureMix& mix : mixes)
+        for (int seed = 0; seed < 20; ++seed)
+        {
+            const cv::tripose::support::SyntheticScene s =
+                makeScene(mix, cv::tripose::support::MOTION_LARGE, 1.0, seed, 0.99);
+            cv::tripose::RansacParams params;
+            params.seed = seed;
+            Mat R, t, pointMask, lineMask;
+            const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
+            if (inliers == 0)
+            {
+                EXPECT_TRUE(R.empty() && t.empty()) << mixName(mix) << " seed " << seed;
+                EXPECT_EQ(cv::countNonZero(pointMask) + cv::countNonZero(lineMask), 0) << mixName(mix) << " seed " << seed;
+                continue;
+            }
+            EXPECT_GE(inliers, 3) << mixName(mix) << " seed " << seed;
+            EXPECT_EQ(inliers, cv::countNonZero(pointMask) + cv::countNonZero(lineMask)) << mixName(mix) << " seed " << seed;
+        }
+}
+
 TEST(Tripose_RansacDeterminism, same_seed_same_result)
 {
     const cv::tripose::support::SyntheticScene s = outlierScene(0.4, 77);

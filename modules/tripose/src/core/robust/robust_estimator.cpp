@@ -36,6 +36,10 @@ constexpr int kMaxSettleFromAll = 60;
 // against this multiple of the user's threshold. The final inliers use residuals with the feature
 // re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
+// The fewest features that determine a pose (up to finitely many): a minimal sample of three points,
+// three lines or a mix. A final estimate with fewer inliers is no pose: one or two features leave
+// it free to turn and move (an unrelated third image gave such a "pose" with one inlier of seven).
+constexpr int kMinPoseInliers = 3;
 // Mixed samples stop after this many if none gave a pose: every kind the pools allow is then
 // degenerate there (parallel lines alone), and drawing more would run to the iteration limit.
 constexpr int kMaxSamplesWithoutPose = 200;
@@ -102,7 +106,7 @@ public:
                 cost = allCost;
             }
         }
-        return estimate.numInliers > 0;
+        return estimate.numInliers >= kMinPoseInliers;
     }
 
 private:
