@@ -22,6 +22,13 @@ def read(path, keys):
     return values
 
 
+def write(path, values):
+    fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_WRITE)
+    for key, value in values.items():
+        fs.write(key, value)
+    fs.release()
+
+
 def rotation_error_deg(Ra, Rb):
     return np.degrees(np.arccos(np.clip((np.trace(Ra.T @ Rb) - 1) / 2, -1.0, 1.0)))
 
@@ -46,14 +53,10 @@ def test_large_images_through_the_package(tmp_path):
     # Images larger than --max-image-size (1600 px) are detected reduced, and the estimate's threshold
     # and loss scale grow with the reduction: the triplet enlarged twice (2048 x 1536) must still give
     # the camera's pose.
-    fs = cv2.FileStorage(str(tmp_path / "calib.yml"), cv2.FILE_STORAGE_WRITE)
     to_enlarged = np.array([[2, 0, 0.5], [0, 2, 0.5], [0, 0, 1]])  # the original's pixel centre x at 2 x + 0.5
     values = read(CALIB, ["K1", "K2", "K3", "R12", "t12", "R_gt"])
-    for key in ("K1", "K2", "K3"):
-        fs.write(key, to_enlarged @ values[key])
-    fs.write("R12", values["R12"])
-    fs.write("t12", values["t12"])
-    fs.release()
+    write(tmp_path / "calib.yml", {key: to_enlarged @ values[key] if key.startswith("K") else values[key]
+                                   for key in ("K1", "K2", "K3", "R12", "t12")})
     images = []
     for k, path in enumerate(IMAGES):
         images.append(tmp_path / f"enlarged{k + 1}.png")
@@ -87,10 +90,7 @@ def test_input_the_package_rejects_is_bad_input(tmp_path):
     values = read(CALIB, ["K1", "K2", "K3", "R12", "t12"])
     values["R12"] = 1.1 * values["R12"]
     calib = tmp_path / "calib.yml"
-    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_WRITE)
-    for key, value in values.items():
-        fs.write(key, value)
-    fs.release()
+    write(calib, values)
     out = tmp_path / "result.yml"
     proc = subprocess.run([sys.executable, str(SCRIPT), "--calib", str(calib), "--images", *map(str, IMAGES),
                            "--output", str(out)], capture_output=True, text=True, timeout=300)
