@@ -151,6 +151,7 @@ int main(int argc, char** argv)
     try
     {
         options = parseArguments(argc, argv);
+        tripose_samples::checkWritable(options.output, "--output");
         problem = tripose_samples::readProblem(options.input, options.allowUnknownKeys);
     }
     catch (const std::exception& e)

@@ -244,6 +244,11 @@ int main(int argc, char** argv)
     try
     {
         options = parseArguments(argc, argv);
+        tripose_samples::checkWritable(options.output, "--output");
+        if (!options.plot.empty())
+            tripose_samples::checkWritable(options.plot, "--plot");
+        if (!options.observations.empty())
+            tripose_samples::checkWritable(options.observations, "--observations");
         sequence = cv::tripose::support::loadVggSequence(options.data);
     }
     catch (const cv::Exception& e)

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -749,6 +750,28 @@ void commitAtomicWrite(const std::string& temporary, const std::string& path)
         std::remove(temporary.c_str());
         throw std::runtime_error("cannot write " + path);
     }
+}
+
+void checkWritable(const std::string& path, const std::string& option)
+{
+    std::error_code error;
+    const std::filesystem::path file(path);
+    const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+    std::string reason;
+    if (!std::filesystem::is_directory(folder, error))
+        reason = "no folder " + folder.string();
+    else if (std::filesystem::is_directory(file, error))
+        reason = "a folder of that name exists";
+    else
+    {
+        const std::string temporary = temporaryNameFor(path);
+        if (std::ofstream(temporary, std::ios::binary))
+            std::remove(temporary.c_str());
+        else
+            reason = "no file can be created in " + folder.string();
+    }
+    if (!reason.empty())
+        throw std::runtime_error(option + " " + path + ": cannot be written (" + reason + ")");
 }
 
 void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes)

@@ -81,6 +81,12 @@ void writeAtomically(const std::string& path, Writer write);
 
 void commitAtomicWrite(const std::string& temporary, const std::string& path);
 
+/** Throws std::runtime_error naming @p option and @p path when the file cannot be written there (no
+such folder, a folder of that name, no permission): checked before a tool's work, so that a long run
+does not end in "cannot write" with nothing, or part of its output, written. It creates and removes
+the temporary file that writeAtomically() would write. */
+void checkWritable(const std::string& path, const std::string& option);
+
 //! Writes @p bytes (an encoded image, ...) to @p path atomically, as writeAtomically().
 void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes);
 std::string temporaryNameFor(const std::string& path);

@@ -64,6 +64,24 @@ class ArgumentParser(argparse.ArgumentParser):
 
 # --- input ---------------------------------------------------------------------------------------
 
+def check_writable(path, option):
+    """Raises InputError naming option and path when the file cannot be written there, checked before
+    the work as the C++ samples do (checkWritable(), samples/common/problem_io.hpp): creates and
+    removes a file of the same folder."""
+    path = Path(path)
+    folder = path.parent
+    if not folder.is_dir():
+        raise InputError(f"{option} {path}: cannot be written (no folder {folder})")
+    if path.is_dir():
+        raise InputError(f"{option} {path}: cannot be written (a folder of that name exists)")
+    probe = path.with_name(path.stem + ".partial" + path.suffix)
+    try:
+        probe.open("wb").close()
+        probe.unlink()
+    except OSError:
+        raise InputError(f"{option} {path}: cannot be written (no file can be created in {folder})") from None
+
+
 def read_calibration(path):
     fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ) if Path(path).is_file() else None
     if fs is None or not fs.isOpened():
@@ -496,6 +514,7 @@ def main(argv=None):
     if args.max_image_size < 0:
         parser.error("argument --max-image-size: expected 0 (full size) or a positive number of pixels")
     try:
+        check_writable(args.output, "--output")
         calib = read_calibration(args.calib)
         keys = ["K"] * 3 if calib["K"][0] is calib["K"][1] else ["K1", "K2", "K3"]
         images = [read_image(p, calib["K"][v], keys[v]) for v, p in enumerate(args.images)]

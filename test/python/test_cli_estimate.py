@@ -208,6 +208,12 @@ def test_bad_arguments_are_named(tmp_path, valid_scene, args, name):
     expect_rejected(tmp_path, valid_scene, name, *args)
 
 
+def test_output_that_cannot_be_written(tmp_path, valid_scene):
+    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(valid_scene), "--output",
+                           str(tmp_path / "no_folder" / "result.yml")], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 1 and "--output" in proc.stderr and "cannot be written" in proc.stderr
+
+
 def test_loss_reaches_the_refinement(tmp_path):
     # Noisy features: a Cauchy loss weighs the residuals otherwise than least squares, so the refined
     # poses differ; the same loss named twice gives the same pose.

@@ -345,6 +345,24 @@ def test_calibration_without_a_baseline(tmp_path):
     assert not out.exists()
 
 
+@pytest.mark.parametrize("option,where", [("--output", "no_folder/result.yml"), ("--output", "a_folder"),
+                                          ("--overlay", "no_folder/overlay.png"), ("--matches", "no_folder/m.png")])
+def test_output_that_cannot_be_written(tmp_path, option, where):
+    # Found before any work: the run ended in "cannot write" after it, and with --overlay in a missing
+    # folder it had written the result, then failed (exit status 1 beside an output file).
+    (tmp_path / "a_folder").mkdir()
+    target = tmp_path / where
+    before = files_in(tmp_path)
+    if option == "--output":
+        proc, _ = run_images(tmp_path, name=where)
+    else:
+        proc, _ = run_images(tmp_path, option, target)
+    assert proc.returncode == 1, proc.stdout + proc.stderr
+    assert f"{option} {target}" in proc.stderr and "cannot be written" in proc.stderr, proc.stderr
+    assert "points" not in proc.stdout  # no feature was detected
+    assert files_in(tmp_path) == before
+
+
 def test_missing_calibration_file(tmp_path):
     expect_rejected(tmp_path, "no_calib.yml", calib=tmp_path / "no_calib.yml")
 

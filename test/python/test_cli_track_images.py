@@ -99,3 +99,12 @@ def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
     for residuals in (point_residuals(points, cameras), segment_residuals(lines, cameras)):
         seen = residuals[2][np.isfinite(residuals[2])]
         assert len(seen) >= 50 and np.median(seen) < 0.5
+
+
+def test_output_that_cannot_be_written_is_rejected(tmp_path):
+    # Before the sequence is read: a sequence's run takes seconds to minutes.
+    out = tmp_path / "no_folder" / "track.yml"
+    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(VGG / "Merton-College-I"), "--output",
+                           str(out), "--from-images"], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 1 and f"--output {out}" in proc.stderr and "cannot be written" in proc.stderr
+    assert files_in(tmp_path) == []

@@ -69,6 +69,15 @@ def test_calibration_without_t12_is_rejected(tmp_path):
     assert not out.exists()
 
 
+def test_output_that_cannot_be_written_is_rejected(tmp_path):
+    # As the C++ front end: before the features, with the option named (and no OpenCV error text).
+    out = tmp_path / "no_folder" / "problem.yml"
+    proc = run_script(out, "--problem-only")
+    assert proc.returncode == 1 and f"--output {out}" in proc.stderr and "cannot be written" in proc.stderr, \
+        proc.stderr
+    assert "point tracks" not in proc.stdout and "ERROR" not in proc.stderr
+
+
 def test_calibration_without_a_baseline_is_rejected(tmp_path):
     # As the C++ front end: views 1 and 2 at one place is bad input, found before the features.
     values = read_matrices(CALIB, ["K1", "K2", "K3", "R12"])
