@@ -37,9 +37,13 @@ constexpr int kMaxSettleFromAll = 60;
 // re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
 // The fewest features that determine a pose (up to finitely many): a minimal sample of three points,
-// three lines or a mix. A final estimate with fewer inliers is no pose: one or two features leave
-// it free to turn and move (an unrelated third image gave such a "pose" with one inlier of seven).
-constexpr int kMinPoseInliers = 3;
+// three lines or a mix. A pose is found only when one more feature agrees with it (or, where the
+// input holds no more than a minimal sample, when all of them do): one or two inliers leave it free
+// to turn and move (an unrelated third image gave such a "pose" with one inlier of seven), and a
+// minimal sample fits any observations exactly, so that three inliers alone do not tell a pose
+// from wrong matches (random observations gave poses with exactly three inliers in a third of the
+// scenes).
+constexpr int kMinimalSampleSize = 3;
 // Mixed samples stop after this many if none gave a pose: every kind the pools allow is then
 // degenerate there (parallel lines alone), and drawing more would run to the iteration limit.
 constexpr int kMaxSamplesWithoutPose = 200;
@@ -106,7 +110,7 @@ public:
                 cost = allCost;
             }
         }
-        return estimate.numInliers >= kMinPoseInliers;
+        return estimate.numInliers >= std::min(kMinimalSampleSize + 1, numFeatures_);
     }
 
 private:
