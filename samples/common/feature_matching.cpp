@@ -78,6 +78,19 @@ cv::Vec3d homogeneous(const double* x)
     return cv::Vec3d(x[0], x[1], 1);
 }
 
+//! The line @p l scaled so that l . (x, y, 1) is the distance of (x, y) from it in pixels.
+cv::Vec3d distanceNormalised(const cv::Vec3d& l)
+{
+    return l / std::max(std::hypot(l[0], l[1]), 1e-300);
+}
+
+//! Whether @p xa and @p xb each lie within @p distance of the other's epipolar line under @p F.
+bool withinEpipolarDistance(const cv::Matx33d& F, const cv::Vec3d& xa, const cv::Vec3d& xb, double distance)
+{
+    return std::abs(distanceNormalised(F * xa).dot(xb)) <= distance &&
+           std::abs(distanceNormalised(F.t() * xb).dot(xa)) <= distance;
+}
+
 /** Where segment @p s (x0 y0 x1 y1) crosses the lines @p la and @p lb, as parameters along it (0 at
 its first end, 1 at its second): @p atA where it crosses la, @p atB where lb; false when it runs
 within @p minSine of either line. */
@@ -117,15 +130,11 @@ Matches matchPointsEpipolar(const ImageFeatures& a, const ImageFeatures& b, cons
     // The epipolar lines of b's points in image a, normalised so that l . x is a distance in pixels.
     std::vector<cv::Vec3d> linesInA(nb);
     for (int j = 0; j < nb; ++j)
-    {
-        cv::Vec3d l = F.t() * homogeneous(b.points.ptr<double>(j));
-        linesInA[j] = l / std::max(std::hypot(l[0], l[1]), 1e-300);
-    }
+        linesInA[j] = distanceNormalised(F.t() * homogeneous(b.points.ptr<double>(j)));
     for (int i = 0; i < na; ++i)
     {
         const cv::Vec3d xa = homogeneous(a.points.ptr<double>(i));
-        cv::Vec3d l = F * xa;
-        l /= std::max(std::hypot(l[0], l[1]), 1e-300);
+        const cv::Vec3d l = distanceNormalised(F * xa);
         for (int j = 0; j < nb; ++j)
         {
             const double* xb = b.points.ptr<double>(j);
@@ -192,6 +201,29 @@ Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptor
                 best.add(i, j, row[j]);
     }
     return best.result(ratio);
+}
+
+EpipolarAgreement epipolarAgreement(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
+                                    const MatchOptions& options)
+{
+    // A subset keeps the descriptor distances to a few milliseconds (4000 points per Merton image).
+    const int step = std::max(1, (a.points.rows + kAgreementSample - 1) / kAgreementSample);
+    std::vector<int> rows;
+    cv::Mat descriptors;
+    for (int i = 0; i < a.points.rows; i += step)
+    {
+        rows.push_back(i);
+        descriptors.push_back(a.pointDescriptors.row(i));
+    }
+    EpipolarAgreement agreement;
+    for (const auto& m : matchByDescriptor(descriptors, b.pointDescriptors, options.pointRatio, kInf))
+    {
+        ++agreement.matches;
+        agreement.agreeing += withinEpipolarDistance(F, homogeneous(a.points.ptr<double>(rows[m.first])),
+                                                     homogeneous(b.points.ptr<double>(m.second)),
+                                                     options.epipolarDistance);
+    }
+    return agreement;
 }
 
 bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, cv::Matx33d& F)

@@ -69,6 +69,23 @@ descriptor alone (matchByDescriptor()) without enough matches for that geometry.
 void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
                       Matches& segments);
 
+/** How far the points of views a and b agree with a known epipolar geometry @p F, judged without it:
+points of a (an evenly spread subset of at most kAgreementSample) matched by descriptor alone
+(matchByDescriptor()), and how many of those matches lie within MatchOptions::epipolarDistance of
+their epipolar lines both ways. On the VGG pairs with their own cameras 78-93 % of them do; with the
+pose of view 2 inverted, the images swapped or one image twice, 1-11 %. */
+struct EpipolarAgreement
+{
+    int matches = 0;  //!< descriptor matches of the subset
+    int agreeing = 0; //!< of them, within the epipolar distance both ways
+    double fraction() const { return matches > 0 ? double(agreeing) / matches : 0.0; }
+    //! Too few matches agree for the geometry to be the images': under 30 % of 20 matches or more.
+    bool contradicts() const { return matches >= 20 && fraction() < 0.3; }
+};
+constexpr int kAgreementSample = 300;
+EpipolarAgreement epipolarAgreement(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
+                                    const MatchOptions& options);
+
 /** Rows of @p descriptorsA and @p descriptorsB (CV_32F: L2, CV_8U: Hamming), mutual best with the
 ratio test @p ratio over all rows of B, and (Hamming) at most @p maxDistance. */
 Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptorsB, double ratio,

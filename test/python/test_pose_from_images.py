@@ -35,6 +35,7 @@ def matched_problem(tmp_path_factory):
     out = tmp_path_factory.mktemp("python") / "problem.yml"
     proc = run_script(out, "--problem-only")
     assert proc.returncode == 0, proc.stderr
+    assert "warning" not in proc.stderr  # the calibration agrees with the images
     return out
 
 
@@ -76,6 +77,17 @@ def test_output_that_cannot_be_written_is_rejected(tmp_path):
     assert proc.returncode == 1 and f"--output {out}" in proc.stderr and "cannot be written" in proc.stderr, \
         proc.stderr
     assert "point tracks" not in proc.stdout and "ERROR" not in proc.stderr
+
+
+def test_inverted_pose_of_view_2_is_reported(tmp_path):
+    # As the C++ front end (test_cli_images.py): matches found without the calibration show it.
+    values = read_matrices(CALIB, ["K1", "K2", "K3", "R12", "t12"])
+    values["R12"], values["t12"] = values["R12"].T, -values["R12"].T @ values["t12"]
+    calib = tmp_path / "calib.yml"
+    write_problem(calib, values)
+    proc = run_script(tmp_path / "problem.yml", "--problem-only", calib=calib)
+    assert proc.returncode == 0, proc.stderr
+    assert "warning: images 1 and 2 do not follow R12, t12" in proc.stderr and "not its inverse" in proc.stderr
 
 
 def test_calibration_without_a_baseline_is_rejected(tmp_path):
