@@ -15,8 +15,8 @@
 // The result holds what tripose_estimate --method ransac writes, the numbers of point tracks and
 // segment triplets, the time per stage, and the matched features as a problem file (K.., R12, t12,
 // points1..3, lines1..3), so that tripose_estimate runs on it again. Exit status: 0 on success (also
-// when no pose is found: num_solutions 0), 1 on bad arguments or input (the message names the file,
-// key or argument; no output is written), 2 when the solver rejects the input.
+// when no pose is found: num_solutions 0), 1 on bad arguments or input, the solver's rejection of the
+// calibration among them (the message names the file, key or argument; no output is written).
 
 #include <algorithm>
 #include <cmath>
@@ -351,7 +351,7 @@ int main(int argc, char** argv)
     times.matching += 1e3 * double(cv::getTickCount() - agreementStart) / cv::getTickFrequency();
     if (agreement.contradicts())
         std::cerr << cv::format("tripose_images: warning: images 1 and 2 do not follow R12, t12 of %s: of %d point "
-                                "matches found without them, %d (%.0f %%) lie on their epipolar lines (75-95 %% "
+                                "matches found without them, %d (%.0f %%) lie on their epipolar lines (78-93 %% "
                                 "where the calibration is right). Is [R12 | t12] view 2's pose in view 1's frame "
                                 "(x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's "
                                 "order?\n",
@@ -395,7 +395,7 @@ int main(int argc, char** argv)
     {
         std::cerr << "tripose_images: the solver rejected the input" << problemKeyNamedBy(e.err) << " of "
                   << options.calib << ": " << e.err << "\n";
-        return 2;
+        return 1;
     }
     const int solutions = inliers > 0 ? 1 : 0;
     if (solutions == 0)

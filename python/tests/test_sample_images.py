@@ -95,5 +95,22 @@ def test_input_the_package_rejects_is_bad_input(tmp_path):
     proc = subprocess.run([sys.executable, str(SCRIPT), "--calib", str(calib), "--images", *map(str, IMAGES),
                            "--output", str(out)], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 1, proc.stderr
-    assert "R12" in proc.stderr and str(calib) in proc.stderr and "Traceback" not in proc.stderr
+    assert "the solver rejected the input" in proc.stderr and "R12" in proc.stderr and str(calib) in proc.stderr
+    assert "Traceback" not in proc.stderr
     assert not out.exists()
+
+
+def test_unrelated_third_image_gives_no_pose(tmp_path):
+    # As tripose_images (test/python/test_cli_images.py): a third image of blurred noise leaves a few
+    # chance matches, which support no pose; said so, and the result holds none.
+    rng = np.random.default_rng(0)
+    noise = tmp_path / "noise.png"
+    cv2.imwrite(str(noise), cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2))
+    out = tmp_path / "result.yml"
+    proc = subprocess.run([sys.executable, str(SCRIPT), "--calib", str(CALIB), "--images", str(IMAGES[0]),
+                           str(IMAGES[1]), str(noise), "--output", str(out)], capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "no pose found" in proc.stderr
+    fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
+    assert fs.getNode("num_solutions").real() == 0 and fs.getNode("R").empty()

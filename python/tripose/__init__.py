@@ -99,8 +99,8 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     the inliers; seed: the same seed gives the same result; covariance: also return the pose's
     uncertainty (it costs one more refinement over the inliers, about half the estimate's time).
 
-    Returns a dict: R (3x3) and t (3,) (None when no pose was found; a pose needs four inliers at
-    least: three fit wrong matches too), num_inliers, point_inliers and
+    Returns a dict: R (3x3) and t (3,) (None when no pose was found; a pose needs one inlier more
+    than a minimal sample holds, four or five: a sample fits wrong matches too), num_inliers, point_inliers and
     line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels), covariance ((6, 6)
     for 1 px noise, see help(tripose)) and noise_variance (px^2) of the refined pose over the inliers
     (None unless covariance=True, and without refinement or when no pose was found). The pose is view 3's

@@ -16,13 +16,14 @@ pixels). With --problem-only the matched problem is written without an estimate 
 package is then not needed; tripose_estimate solves the file). Images larger than --max-image-size
 (default 1600 px on the longer side; 0: no limit) are detected in a reduced copy: the positions
 come back in the images' pixels, and the pixel tolerances (--threshold among them) grow by the
-reduction. Images of more than 8 bits (16-bit PNG or TIFF) are stretched from their lowest to
-their highest value onto 8 bits.
+reduction. Images of more than 8 bits (16-bit PNG or TIFF, float TIFF) are stretched from their
+lowest to their highest value onto 8 bits.
 
 Exit status: 0 on success, 1 on bad input (the message names the file, key or argument), 2 when the
 tripose package is missing.
 """
 import argparse
+import os
 import sys
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -43,6 +44,10 @@ IMAGE_LOSS_SCALE = 0.5
 
 class InputError(Exception):
     pass
+
+
+class SolverRejection(Exception):
+    """The tripose package refused its input (its ValueError or TypeError names the argument)."""
 
 
 def whole_number(text):
@@ -66,18 +71,21 @@ class ArgumentParser(argparse.ArgumentParser):
 
 def check_writable(path, option):
     """Raises InputError naming option and path when the file cannot be written there, checked before
-    the work as the C++ samples do (checkWritable(), samples/common/problem_io.hpp): creates and
-    removes a file of the same folder."""
+    the work as the C++ samples do (checkWritable(), samples/common/problem_io.hpp): an existing file
+    must be writable, a new one is created and removed."""
     path = Path(path)
     folder = path.parent
     if not folder.is_dir():
         raise InputError(f"{option} {path}: cannot be written (no folder {folder})")
     if path.is_dir():
         raise InputError(f"{option} {path}: cannot be written (a folder of that name exists)")
-    probe = path.with_name(path.stem + ".partial" + path.suffix)
+    if path.is_file():
+        if not os.access(path, os.W_OK):
+            raise InputError(f"{option} {path}: cannot be written (no permission)")
+        return
     try:
-        probe.open("wb").close()
-        probe.unlink()
+        path.open("wb").close()
+        path.unlink()
     except OSError:
         raise InputError(f"{option} {path}: cannot be written (no file can be created in {folder})") from None
 
@@ -135,6 +143,9 @@ def read_image(path, K, key):
     if not Path(path).is_file():
         raise InputError(f"image {path}: no such file")
     image = cv2.imread(str(path), cv2.IMREAD_GRAYSCALE | cv2.IMREAD_ANYDEPTH)
+    if image is not None and image.dtype != np.uint8:
+        # A deeper image is stretched in colour as a whole, then made grey, as the C++ samples do.
+        image = cv2.imread(str(path), cv2.IMREAD_ANYCOLOR | cv2.IMREAD_ANYDEPTH)
     if image is None:
         raise InputError(f"image {path}: cannot be decoded")
     if not np.all(np.isfinite(image)):
@@ -144,6 +155,8 @@ def read_image(path, K, key):
         raise InputError(f"image {path}: blank")
     if image.dtype != np.uint8:
         image = stretched_to_eight_bits(image, lowest, highest)
+        if image.ndim == 3:
+            image = cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
     # The principal point of real cameras lies near the image centre; an image scaled against its
     # calibration moves it a quarter of the image or more away.
     h, w = image.shape
@@ -477,8 +490,11 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed, loss_scale=IMAGE_
     inliers repeated under the Cauchy loss of the C++ samples (the package's RANSAC refines by least
     squares). threshold and loss_scale are in the images' pixels (see main())."""
     import tripose
-    pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
-                                                   K, R12, t12, threshold=threshold, refine=True, seed=seed)
+    try:
+        pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
+                                                       K, R12, t12, threshold=threshold, refine=True, seed=seed)
+    except (ValueError, TypeError) as e:
+        raise SolverRejection(str(e)) from None
     if pose["num_inliers"] == 0:
         return pose
     p, l = np.asarray(pose["point_inliers"], bool), np.asarray(pose["line_inliers"], bool)
@@ -563,7 +579,7 @@ def main(argv=None):
         if contradicts(matches, agreeing):
             print(f"pose_from_images: warning: images 1 and 2 do not follow R12, t12 of {args.calib}: of {matches} "
                   f"point matches found without them, {agreeing} ({100 * agreeing / matches:.0f} %) lie on their "
-                  "epipolar lines (75-95 % where the calibration is right). Is [R12 | t12] view 2's pose in view "
+                  "epipolar lines (78-93 % where the calibration is right). Is [R12 | t12] view 2's pose in view "
                   "1's frame (x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's order?",
                   file=sys.stderr)
         points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"], pixel_scale)
@@ -581,8 +597,11 @@ def main(argv=None):
                 print("pose_from_images: the tripose package is not installed (pip install tripose); "
                       "--problem-only writes the matched problem for tripose_estimate", file=sys.stderr)
                 return 2
-            except (ValueError, TypeError) as e:  # the package names the argument it rejects
-                raise InputError(f"the solver rejected the input of {args.calib}: {e}")
+            except SolverRejection as e:
+                raise InputError(f"the solver rejected the input of {args.calib}: {e}") from None
+            if pose["num_inliers"] == 0:
+                print(f"pose_from_images: no pose found from {len(points[0])} point tracks and {len(lines[0])} "
+                      "segment triplets", file=sys.stderr)
             print(f"pose_from_images: {pose['num_inliers']} inliers")
         write_result(args.output, calib, points, lines, pose, tolerances)
     except InputError as e:

@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from tripose_tools import (REPO, build_tool, enlarged_merton, files_in, merton_greys_in_bits, offsets_to_nearest,
-                           read_matrices, rotation_error, run_with_peak_memory, write_problem, write_turned_jpeg)
+                           read_matrices, rotation_error, run_with_peak_memory, write_inverted_pose_calibration,
+                           write_nan_tiff, write_problem, write_turned_jpeg)
 
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
 CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
@@ -220,7 +221,7 @@ def test_exif_orientation_is_applied(tmp_path):
 
 @pytest.mark.parametrize("bits", [12, 16])
 def test_images_of_more_than_eight_bits(tmp_path, bits):
-    # A camera's 12 bits stored in 16-bit PNGs (0-4080 here), or 16 bits: stretched from their lowest
+    # A camera's 12 bits stored in 16-bit PNGs (15-4095 here), or 16 bits: stretched from their lowest
     # to their highest value, they give the features of the same greys in 8 bits, to the pixel. Before,
     # the front end refused them; keeping the top byte alone, as OpenCV's conversion to 8 bits does,
     # leaves 16 grey levels of 12 bits and no point track (measured with the Python sample: 0 tracks).
@@ -242,15 +243,13 @@ def test_calibration_that_contradicts_the_images_is_reported(tmp_path, mistake):
     # matches along the wrong epipolar lines and finds a pose 8 deg off (inverted, 23 inliers). The
     # descriptor matches of images 1-2, found without the calibration, show it: 2 % of them lie on
     # its epipolar lines, against 78-93 % on the VGG pairs with their own cameras.
-    values = read_matrices(CALIB, ["K1", "K2", "K3", "R12", "t12"])
     images = list(IMAGES)
+    calib = CALIB
     if mistake == "inverted pose":
-        values["R12"], values["t12"] = values["R12"].T, -values["R12"].T @ values["t12"]
+        calib = write_inverted_pose_calibration(tmp_path / "calib.yml")
     else:
         images[0], images[1] = images[1], images[0]
-    calib = tmp_path / "calib.yml"
-    write_problem(calib, values)
-    proc, out = run_images(tmp_path, calib=calib, images=images)
+    proc, _ = run_images(tmp_path, calib=calib, images=images)
     assert proc.returncode == 0, proc.stderr
     assert "warning: images 1 and 2 do not follow R12, t12" in proc.stderr and str(calib) in proc.stderr
     assert "not its inverse" in proc.stderr
@@ -274,10 +273,7 @@ def test_unrelated_third_image_gives_no_pose(tmp_path):
 
 def test_image_with_values_that_are_not_numbers(tmp_path):
     # A float TIFF with a NaN cannot be stretched onto 8 bits.
-    image = cv2.imread(str(IMAGES[2]), cv2.IMREAD_GRAYSCALE).astype(np.float32)
-    image[10, 20] = np.nan
-    broken = tmp_path / "nan.tiff"
-    assert cv2.imwrite(str(broken), image)
+    broken = write_nan_tiff(tmp_path / "nan.tiff")
     expect_rejected(tmp_path, "not finite", images=[IMAGES[0], IMAGES[1], broken])
     expect_rejected(tmp_path, str(broken), images=[IMAGES[0], IMAGES[1], broken])
 

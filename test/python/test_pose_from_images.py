@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from tripose_tools import (REPO, build_tool, merton_greys_in_bits, offsets_to_nearest, read_matrices, rotation_error,
-                           write_problem, write_turned_jpeg)
+                           write_inverted_pose_calibration, write_nan_tiff, write_problem, write_turned_jpeg)
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
 MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
@@ -81,10 +81,7 @@ def test_output_that_cannot_be_written_is_rejected(tmp_path):
 
 def test_inverted_pose_of_view_2_is_reported(tmp_path):
     # As the C++ front end (test_cli_images.py): matches found without the calibration show it.
-    values = read_matrices(CALIB, ["K1", "K2", "K3", "R12", "t12"])
-    values["R12"], values["t12"] = values["R12"].T, -values["R12"].T @ values["t12"]
-    calib = tmp_path / "calib.yml"
-    write_problem(calib, values)
+    calib = write_inverted_pose_calibration(tmp_path / "calib.yml")
     proc = run_script(tmp_path / "problem.yml", "--problem-only", calib=calib)
     assert proc.returncode == 0, proc.stderr
     assert "warning: images 1 and 2 do not follow R12, t12" in proc.stderr and "not its inverse" in proc.stderr
@@ -125,11 +122,12 @@ def test_exif_orientation_is_applied(tmp_path):
     assert np.degrees(rotation_error(R, read_matrices(CALIB, ["R_gt"])["R_gt"])) < 0.1
 
 
-def test_images_of_twelve_bits(tmp_path):
-    # As the C++ front end (test_cli_images.py): 12 bits stored in 16-bit PNGs are stretched onto 8
-    # bits and give the features of the same greys in 8 bits. OpenCV's own conversion (the top byte)
-    # left 16 grey levels and no point track.
-    deeper, eight = merton_greys_in_bits(tmp_path, 12)
+@pytest.mark.parametrize("bits", [12, 16])
+def test_images_of_more_than_eight_bits(tmp_path, bits):
+    # As the C++ front end (test_cli_images.py): 12 or 16 bits stored in 16-bit PNGs are stretched
+    # onto 8 bits and give the features of the same greys in 8 bits. OpenCV's own conversion (the top
+    # byte) left 16 grey levels of 12 bits and no point track.
+    deeper, eight = merton_greys_in_bits(tmp_path, bits)
     problems = []
     for images, name in ((deeper, "deeper.yml"), (eight, "eight.yml")):
         problems.append(tmp_path / name)
@@ -144,10 +142,7 @@ def test_images_of_twelve_bits(tmp_path):
 
 
 def test_image_with_values_that_are_not_numbers_is_rejected(tmp_path):
-    image = cv2.imread(str(IMAGES[2]), cv2.IMREAD_GRAYSCALE).astype(np.float32)
-    image[10, 20] = np.nan
-    broken = tmp_path / "nan.tiff"
-    assert cv2.imwrite(str(broken), image)
+    broken = write_nan_tiff(tmp_path / "nan.tiff")
     out = tmp_path / "problem.yml"
     proc = run_script(out, "--problem-only", images=[IMAGES[0], IMAGES[1], broken])
     assert proc.returncode == 1 and str(broken) in proc.stderr and "not finite" in proc.stderr, proc.stderr

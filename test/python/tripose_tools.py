@@ -165,18 +165,36 @@ def enlarged_merton(folder, factor, suffix=".png", write_params=(cv2.IMWRITE_PNG
 
 def merton_greys_in_bits(folder, bits):
     """The bundled Merton College I triplet's grey images stored as a camera of @p bits bits per pixel
-    stores them in 16-bit PNGs (each grey level times 2^(bits - 8)), and the same greys as 8-bit PNGs:
-    (deeper image paths, 8-bit image paths). The greys span 0-255, so a reader that stretches a deeper
-    image from its lowest to its highest value gets the 8-bit images back exactly."""
+    stores them in 16-bit PNGs (grey level g as g 2^(bits - 8) + 2^(bits - 8) - 1, so that the
+    darkest pixel is not 0), and the same greys as 8-bit PNGs: (deeper image paths, 8-bit image
+    paths). The greys span 0-255, so a reader that stretches a deeper image from its lowest to its
+    highest value gets the 8-bit images back exactly; one that ignores the lowest does not."""
     deeper, eight = [], []
+    step = 1 << (bits - 8)
     for k in (1, 2, 3):
         grey = cv2.imread(str(MERTON / f"00{k}.jpg"), cv2.IMREAD_GRAYSCALE)
         assert grey.min() == 0 and grey.max() == 255
         deeper.append(Path(folder) / f"grey{k}_{bits}bit.png")
         eight.append(Path(folder) / f"grey{k}_8bit.png")
-        assert cv2.imwrite(str(deeper[-1]), grey.astype(np.uint16) << (bits - 8))
+        assert cv2.imwrite(str(deeper[-1]), (grey.astype(np.uint16) * step + step - 1).astype(np.uint16))
         assert cv2.imwrite(str(eight[-1]), grey)
     return deeper, eight
+
+
+def write_nan_tiff(path):
+    """The third Merton image as a float TIFF with one NaN pixel."""
+    image = cv2.imread(str(MERTON / "003.jpg"), cv2.IMREAD_GRAYSCALE).astype(np.float32)
+    image[10, 20] = np.nan
+    assert cv2.imwrite(str(path), image)
+    return path
+
+
+def write_inverted_pose_calibration(path):
+    """The Merton calibration with view 2's pose given as its inverse, the usual convention mistake."""
+    values = read_matrices(MERTON_CALIB, ["K1", "K2", "K3", "R12", "t12"])
+    values["R12"], values["t12"] = values["R12"].T, -values["R12"].T @ values["t12"]
+    write_problem(path, values)
+    return path
 
 
 def run_with_peak_memory(command, timeout=None):

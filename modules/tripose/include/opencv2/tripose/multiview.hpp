@@ -90,8 +90,8 @@ Arguments as in estimatePoseMultiView().
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
 @param covariance Optional output: the returned pose's 6x6 covariance, as estimatePoseLinePointRansac() gives it.
 @param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePointRansac() gives it.
-@return The number of inliers (points + lines), four at least; 0 when no pose was found (R and t
-empty, masks zero).
+@return The number of inliers (points + lines), one more than a minimal sample at least (as
+estimatePoseLinePointRansac()); 0 when no pose was found (R and t empty, masks zero).
 */
 CV_EXPORTS_W int estimatePoseMultiViewRansac(
     InputArrayOfArrays points, InputArrayOfArrays lines,

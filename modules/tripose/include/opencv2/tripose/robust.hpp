@@ -97,8 +97,10 @@ above: a wide baseline, or more than 60 inliers); empty without refinement or wh
 @param candidateTs Optional output: the matching translations (3x1 CV_64F).
 @param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
 (px, CV_64F) over the inliers in the three views after refinement.
-@return The number of inliers (points + lines) of the returned pose, four at least (three, a minimal
-sample, fit wrong matches too); 0 when no pose was found (then R and t are empty and the masks all zero).
+@return The number of inliers (points + lines) of the returned pose: one more than a sample holds at
+least (four, or five with the samples of four features; a sample fits wrong matches too), or all
+features where there are no more; 0 when no pose was found (then R and t are empty and the masks
+all zero).
 
 @throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), and
 naming the field when a field of @p params (or of params.refineParams, when refine is set) is out of range.

@@ -93,8 +93,8 @@ Arguments as in estimatePoseLinePointStereo(); at least three features (the samp
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
 @param covariance Optional output: the returned pose's 6x6 covariance, as estimatePoseLinePointRansac() gives it.
 @param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePointRansac() gives it.
-@return The number of inliers (points + lines), four at least (all three where only three features
-are given); 0 when no pose was found (R and t empty, masks zero).
+@return The number of inliers (points + lines), four at least (one more than a sample of three; all
+three where only three features are given); 0 when no pose was found (R and t empty, masks zero).
 */
 CV_EXPORTS_W int estimatePoseLinePointStereoRansac(
     InputArray points1, InputArray points2, InputArray points3, InputArray points4,

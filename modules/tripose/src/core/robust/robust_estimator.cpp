@@ -36,14 +36,6 @@ constexpr int kMaxSettleFromAll = 60;
 // against this multiple of the user's threshold. The final inliers use residuals with the feature
 // re-triangulated from every view (PoseScorer::refitResiduals) against the threshold itself.
 constexpr double kSamplingThresholdFactor = 2.0;
-// The fewest features that determine a pose (up to finitely many): a minimal sample of three points,
-// three lines or a mix. A pose is found only when one more feature agrees with it (or, where the
-// input holds no more than a minimal sample, when all of them do): one or two inliers leave it free
-// to turn and move (an unrelated third image gave such a "pose" with one inlier of seven), and a
-// minimal sample fits any observations exactly, so that three inliers alone do not tell a pose
-// from wrong matches (random observations gave poses with exactly three inliers in a third of the
-// scenes).
-constexpr int kMinimalSampleSize = 3;
 // Mixed samples stop after this many if none gave a pose: every kind the pools allow is then
 // degenerate there (parallel lines alone), and drawing more would run to the iteration limit.
 constexpr int kMaxSamplesWithoutPose = 200;
@@ -110,7 +102,12 @@ public:
                 cost = allCost;
             }
         }
-        return estimate.numInliers >= std::min(kMinimalSampleSize + 1, numFeatures_);
+        // A pose is found only when one feature more than a minimal sample of the solver agrees with
+        // it (all of them where the input holds no more): a minimal sample fits any observations,
+        // wrong matches too (with every view-3 observation wrong, a floor of three inliers still let
+        // 11 of 100 scenes through), and one or two inliers leave the pose free (an unrelated third
+        // image gave such a "pose" with one inlier of seven).
+        return estimate.numInliers >= std::min(solver_.sampleSize() + 1, numFeatures_);
     }
 
 private:
