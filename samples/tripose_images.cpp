@@ -351,7 +351,7 @@ int main(int argc, char** argv)
     times.matching += 1e3 * double(cv::getTickCount() - agreementStart) / cv::getTickFrequency();
     if (agreement.contradicts())
         std::cerr << cv::format("tripose_images: warning: images 1 and 2 do not follow R12, t12 of %s: of %d point "
-                                "matches found without them, %d (%.0f %%) lie on their epipolar lines (78-93 %% "
+                                "matches found without them, %d (%.0f %%) lie on their epipolar lines (73-88 %% "
                                 "where the calibration is right). Is [R12 | t12] view 2's pose in view 1's frame "
                                 "(x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's "
                                 "order?\n",
