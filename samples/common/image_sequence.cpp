@@ -65,7 +65,7 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
                                             const std::vector<cv::Mat>& cameraMatrices, const cv::Mat& R0,
                                             const cv::Mat& t0, const cv::Mat& R1, const cv::Mat& t1,
                                             const FeatureOptions& featureOptions, const MatchOptions& matchOptions,
-                                            StageTimes& times)
+                                            StageTimes& times, EpipolarAgreement* givenPairAgreement)
 {
     const int F = (int)images.size();
     CV_Assert(F >= 2 && (int)cameraMatrices.size() == F);
@@ -89,6 +89,8 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
     const cv::Mat R01 = R1 * R0.t(), t01 = t1 - R01 * t0;
     const cv::Matx33d F01 = fundamentalMatrix(cv::Matx33d(cameraMatrices[0]), cv::Matx33d(cameraMatrices[1]),
                                               cv::Matx33d(R01), cv::Vec3d(t01));
+    if (givenPairAgreement)
+        *givenPairAgreement = epipolarAgreement(features[0], features[1], F01, matchOptions);
     pointTracks.add(1, matchPointsEpipolar(features[0], features[1], F01, matchOptions));
     segmentTracks.add(1, matchSegmentsEpipolar(features[0], features[1], F01, matchOptions));
     // Later frames have no pose yet: matched under the fundamental matrix of their descriptor matches

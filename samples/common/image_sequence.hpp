@@ -23,13 +23,15 @@ with the given poses of frames 0 and 1 (R0, t0, R1, t1). Frames 0-1 are matched 
 relative pose, frame k > 1 to frame k - 1 under the fundamental matrix estimated from their
 descriptor matches (by descriptor alone, mutual best and ratio test, when there are too few); a match
 extends the track of its feature in frame k - 1, or starts one. A track has a row in every frame,
-NaN where the frame does not see it. Adds the time per stage to @p times.
+NaN where the frame does not see it. Adds the time per stage to @p times. @p givenPairAgreement, when
+given, receives how far the points of frames 0-1 agree with their given poses (epipolarAgreement()),
+for the caller to warn of images out of the cameras' order.
 */
 SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
                                             const std::vector<cv::Mat>& cameraMatrices, const cv::Mat& R0,
                                             const cv::Mat& t0, const cv::Mat& R1, const cv::Mat& t1,
                                             const FeatureOptions& featureOptions, const MatchOptions& matchOptions,
-                                            StageTimes& times);
+                                            StageTimes& times, EpipolarAgreement* givenPairAgreement = nullptr);
 
 } // namespace tripose_samples
 

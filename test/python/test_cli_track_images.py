@@ -25,6 +25,7 @@ def test_merton_college_i_from_images(tmp_path):
     # doc/real_images.md).
     proc, out = track(tmp_path, VGG / "Merton-College-I")
     assert proc.returncode == 0, proc.stderr
+    assert "warning" not in proc.stderr  # frames 0-1 agree with their cameras
     values = read_matrices(out, ["poses", "status", "features", "rotation_error_deg"])
     np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 1])
     assert values["features"].ravel()[2] >= 200
@@ -67,6 +68,18 @@ def test_folder_without_images_is_rejected(tmp_path):
     assert proc.returncode == 1, proc.stdout
     assert str(data) in proc.stderr and "--from-images" in proc.stderr
     assert not out.exists() and files_in(tmp_path) == before
+
+
+def test_images_out_of_the_cameras_order_are_reported(tmp_path):
+    # The first two images swapped: frames 0 and 1 take the cameras' poses, and their descriptor
+    # matches, found without those poses, do not follow them (as tripose_images' check).
+    data = tmp_path / "Merton-College-I"
+    shutil.copytree(VGG / "Merton-College-I", data)
+    (data / "001.jpg").rename(data / "swap.jpg")
+    (data / "002.jpg").rename(data / "001.jpg")
+    (data / "swap.jpg").rename(data / "002.jpg")
+    proc, _ = track(tmp_path, data)
+    assert "warning: the images of frames 0 and 1" in proc.stderr and "001.jpg" in proc.stderr, proc.stderr
 
 
 def test_blank_image_in_the_folder_is_rejected(tmp_path):
