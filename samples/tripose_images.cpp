@@ -338,25 +338,16 @@ int main(int argc, char** argv)
     const std::vector<ImageFeatures> extracted =
         extractFeaturesOfImages(images, { K[0], K[1], K[2] }, dist, options.features, times);
     const ImageFeatures features[3] = { extracted[0], extracted[1], extracted[2] };
-    const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
-                                                   withPixelScale(MatchOptions(), pixelScale), times);
     // The most common calibration mistake, view 2's pose inverted (or the images in another order),
     // still yields matches and a pose, a wrong one: the descriptor matches of views 1-2, which do not
     // depend on the calibration, tell it.
-    const int64 agreementStart = cv::getTickCount();
-    const EpipolarAgreement agreement =
-        epipolarAgreement(features[0], features[1],
-                          fundamentalMatrix(K[0], K[1], cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12)),
-                          withPixelScale(MatchOptions(), pixelScale));
-    times.matching += 1e3 * double(cv::getTickCount() - agreementStart) / cv::getTickFrequency();
+    EpipolarAgreement agreement;
+    const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
+                                                   withPixelScale(MatchOptions(), pixelScale), times, &agreement);
     if (agreement.contradicts())
-        std::cerr << cv::format("tripose_images: warning: images 1 and 2 do not follow R12, t12 of %s: of %d point "
-                                "matches found without them, %d (%.0f %%) lie on their epipolar lines (73-88 %% "
-                                "where the calibration is right). Is [R12 | t12] view 2's pose in view 1's frame "
-                                "(x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's "
-                                "order?\n",
-                                options.calib.c_str(), agreement.matches, agreement.agreeing,
-                                100 * agreement.fraction());
+        std::cerr << "tripose_images: warning: images 1 and 2 do not follow R12, t12 of " << options.calib << ": "
+                  << agreement.summary() << ". Is [R12 | t12] view 2's pose in view 1's frame (x2 = R12 x1 + t12, "
+                  << "not its inverse), and are the images in the calibration's order?\n";
     const int tracks = triplets.points[0].rows, segments = triplets.lines[0].rows;
     std::cout << cv::format("tripose_images: %d / %d / %d points, %d / %d / %d segments; %d point pairs of views "
                             "1-2, %d point tracks; %d segment pairs, %d segment triplets\n",

@@ -224,12 +224,9 @@ tripose_samples::SequenceObservations observationsFromFolderImages(const std::st
     // Images named out of the cameras' order (img10 sorts before img2) give frames 0-1 the wrong
     // poses; the tracker would still run, on wrong tracks.
     if (agreement.contradicts())
-        std::cerr << cv::format("tripose_track: warning: the images of frames 0 and 1 (%s, %s) do not follow the "
-                                "sequence's cameras 0 and 1: of %d point matches found without them, %d (%.0f %%) "
-                                "lie on their epipolar lines (73-88 %% where they do). Are the images, in name "
-                                "order, in the order of the cameras?\n",
-                                files[0].c_str(), files[1].c_str(), agreement.matches, agreement.agreeing,
-                                100 * agreement.fraction());
+        std::cerr << "tripose_track: warning: the images of frames 0 and 1 (" << files[0] << ", " << files[1]
+                  << ") do not follow the sequence's cameras 0 and 1: " << agreement.summary()
+                  << ". Are the images, in name order, in the order of the cameras?\n";
     std::cout << cv::format("Front end on %zu images: %d point tracks, %d segment tracks; ms: points (SIFT) %.0f, "
                             "segment detection (EDLines) %.0f, segment description (LBD) %.0f, matching %.0f\n",
                             files.size(), observations.points[0].rows, observations.lines[0].rows, times.points,

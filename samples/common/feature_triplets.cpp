@@ -49,11 +49,14 @@ void tracks(const Matches& pairs12, const Matches& toView3, const cv::Mat positi
 } // namespace
 
 FeatureTriplets matchTriplets(const ImageFeatures views[3], const cv::Matx33d K[3], const cv::Matx33d& R12,
-                              const cv::Vec3d& t12, const MatchOptions& options, StageTimes& times)
+                              const cv::Vec3d& t12, const MatchOptions& options, StageTimes& times,
+                              EpipolarAgreement* pairAgreement)
 {
     const int64 start = cv::getTickCount();
     const cv::Matx33d F = fundamentalMatrix(K[0], K[1], R12, t12);
     FeatureTriplets out;
+    if (pairAgreement)
+        *pairAgreement = epipolarAgreement(views[0], views[1], F, options);
 
     const Matches points12 = matchPointsEpipolar(views[0], views[1], F, options);
     const Matches segments12 = matchSegmentsEpipolar(views[0], views[1], F, options);

@@ -27,10 +27,13 @@ struct FeatureTriplets
 then view 3 to those pairs' features in view 2 (the view a sequence saw last) under the fundamental
 matrix estimated from their descriptor matches (estimateFundamental), by descriptor alone when
 there are too few. Adds the
-matching time to @p times.
+matching time to @p times. @p pairAgreement, when given, receives how far the points of views 1-2
+agree with R12, t12 (epipolarAgreement()), for the caller to warn of a calibration that contradicts
+the images.
 */
 FeatureTriplets matchTriplets(const ImageFeatures views[3], const cv::Matx33d K[3], const cv::Matx33d& R12,
-                              const cv::Vec3d& t12, const MatchOptions& options, StageTimes& times);
+                              const cv::Vec3d& t12, const MatchOptions& options, StageTimes& times,
+                              EpipolarAgreement* pairAgreement = nullptr);
 
 //! The rows @p pairs.second (or .first, with @p first) of @p rows, in the order of @p pairs.
 cv::Mat matchedRows(const cv::Mat& rows, const Matches& pairs, bool first);

@@ -454,6 +454,12 @@ def contradicts(matches, agreeing):
     return matches >= 20 and agreeing < 0.3 * matches
 
 
+def agreement_summary(matches, agreeing):
+    """The words of the C++ samples' EpipolarAgreement::summary() for the warning."""
+    return (f"of {matches} point matches found without the poses, {agreeing} ({100 * agreeing / matches:.0f} %) "
+            "lie on their epipolar lines (73-88 % where the poses are right)")
+
+
 def triplets(views, K, R12, t12, pixel_scale=1.0):
     """Views 1-2 under their pose, view 3 against the pairs' view-2 features under the fundamental
     matrix of their descriptor matches (by descriptor alone without one): (points1..3, lines1..3).
@@ -578,10 +584,9 @@ def main(argv=None):
                                                                                calib["R12"], calib["t12"]),
                                                2.0 * pixel_scale)
         if contradicts(matches, agreeing):
-            print(f"pose_from_images: warning: images 1 and 2 do not follow R12, t12 of {args.calib}: of {matches} "
-                  f"point matches found without them, {agreeing} ({100 * agreeing / matches:.0f} %) lie on their "
-                  "epipolar lines (73-88 % where the calibration is right). Is [R12 | t12] view 2's pose in view "
-                  "1's frame (x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's order?",
+            print(f"pose_from_images: warning: images 1 and 2 do not follow R12, t12 of {args.calib}: "
+                  f"{agreement_summary(matches, agreeing)}. Is [R12 | t12] view 2's pose in view 1's frame "
+                  "(x2 = R12 x1 + t12, not its inverse), and are the images in the calibration's order?",
                   file=sys.stderr)
         points, lines = triplets(views, calib["K"], calib["R12"], calib["t12"], pixel_scale)
         print(f"pose_from_images: {len(points[0])} point tracks, {len(lines[0])} segment triplets")

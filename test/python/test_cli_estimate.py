@@ -209,8 +209,7 @@ def test_bad_arguments_are_named(tmp_path, valid_scene, args, name):
 
 
 def test_output_that_cannot_be_written(tmp_path, valid_scene):
-    proc = subprocess.run([str(build_tool("tripose_estimate")), "--input", str(valid_scene), "--output",
-                           str(tmp_path / "no_folder" / "result.yml")], capture_output=True, text=True, timeout=60)
+    proc, _ = estimate(tmp_path, valid_scene, name="no_folder/result.yml")
     assert proc.returncode == 1 and "--output" in proc.stderr and "cannot be written" in proc.stderr
 
 

@@ -11,12 +11,11 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import (REPO, build_tool, enlarged_merton, files_in, merton_greys_in_bits, offsets_to_nearest,
-                           read_matrices, rotation_error, run_with_peak_memory, write_inverted_pose_calibration,
-                           write_nan_tiff, write_problem, write_turned_jpeg)
+from tripose_tools import (MERTON, MERTON_CALIB, REPO, build_tool, enlarged_merton, files_in, merton_greys_in_bits,
+                           offsets_to_nearest, read_matrices, rotation_error, run_with_peak_memory,
+                           write_inverted_pose_calibration, write_nan_tiff, write_problem, write_turned_jpeg)
 
-MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
-CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
+CALIB = MERTON_CALIB
 IMAGES = [MERTON / f"00{k}.jpg" for k in (1, 2, 3)]
 PROBLEM_KEYS = ["K1", "K2", "K3", "R12", "t12", "points1", "points2", "points3", "lines1", "lines2", "lines3"]
 

@@ -13,8 +13,8 @@ from tripose_tools import REPO, build_tool, files_in, read_matrices
 VGG = REPO / "test" / "data" / "vgg"
 
 
-def track(tmp_path, data, *options):
-    out = tmp_path / "track.yml"
+def track(tmp_path, data, *options, name="track.yml"):
+    out = tmp_path / name
     proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(data), "--output", str(out),
                            "--from-images", *map(str, options)], capture_output=True, text=True, timeout=300)
     return proc, out
@@ -116,8 +116,6 @@ def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
 
 def test_output_that_cannot_be_written_is_rejected(tmp_path):
     # Before the sequence is read: a sequence's run takes seconds to minutes.
-    out = tmp_path / "no_folder" / "track.yml"
-    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(VGG / "Merton-College-I"), "--output",
-                           str(out), "--from-images"], capture_output=True, text=True, timeout=300)
+    proc, out = track(tmp_path, VGG / "Merton-College-I", name="no_folder/track.yml")
     assert proc.returncode == 1 and f"--output {out}" in proc.stderr and "cannot be written" in proc.stderr
     assert files_in(tmp_path) == []

@@ -9,12 +9,12 @@ import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import (REPO, build_tool, merton_greys_in_bits, offsets_to_nearest, read_matrices, rotation_error,
-                           write_inverted_pose_calibration, write_nan_tiff, write_problem, write_turned_jpeg)
+from tripose_tools import (MERTON, MERTON_CALIB, REPO, build_tool, merton_greys_in_bits, offsets_to_nearest,
+                           read_matrices, rotation_error, write_inverted_pose_calibration, write_nan_tiff, write_problem,
+                           write_turned_jpeg)
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
-MERTON = REPO / "test" / "data" / "vgg" / "Merton-College-I"
-CALIB = REPO / "test" / "data" / "images" / "merton_college_i_calib.yml"
+CALIB = MERTON_CALIB
 IMAGES = [MERTON / f"00{k}.jpg" for k in (1, 2, 3)]
 
 
