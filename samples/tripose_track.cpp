@@ -11,7 +11,8 @@
 // through the image front end instead of the sequence's files.
 //
 //   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
-//                 [--method ransac|linear] [--threshold px] [--seed n] [--check-tracks 0|1] [--from-images]
+//                 [--method ransac|linear] [--threshold px] [--seed n] [--check-tracks 0|1] [--min-inliers n]
+//                 [--from-images]
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--check-tracks 0|1] [--observations tracks.yml] [--max-image-size px]\n"
+    "                     [--check-tracks 0|1] [--min-inliers n] [--observations tracks.yml] [--max-image-size px]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
@@ -50,6 +51,8 @@ const char* kUsage =
     "  --check-tracks 1 (default): before a frame is registered, drop each feature's window observations\n"
     "                 that disagree with the window's poses by more than the threshold; after, start new\n"
     "                 tracks from the frame's observations that the registration rejected. 0: off\n"
+    "  --min-inliers n  a frame whose pose fewer than n features agree with is lost (default 15; chance\n"
+    "                 matches of an unrelated image gave up to 7)\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
     "  --max-image-size  with --from-images: detect the features in images reduced to this longer side\n"
@@ -84,7 +87,8 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--check-tracks", "--observations", "--max-image-size" };
+                                             "--local-refine", "--check-tracks", "--min-inliers", "--observations",
+                                             "--max-image-size" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -109,6 +113,8 @@ Options parseArguments(int argc, char** argv)
             o.maxImageSize = parseInteger(arg, value, 0.0);
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
+        else if (arg == "--min-inliers")
+            o.track.minInliers = parseInteger(arg, value, 1.0);
         else if (arg == "--threshold")
         {
             o.track.ransac.threshold = parseNumber(arg, value);

@@ -253,7 +253,7 @@ bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const M
     return true;
 }
 
-void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
+bool matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
                       Matches& segments)
 {
     cv::Matx33d F;
@@ -261,10 +261,11 @@ void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const Matc
     {
         points = matchPointsEpipolar(a, b, F, options);
         segments = matchSegmentsEpipolar(a, b, F, options);
-        return;
+        return true;
     }
     points = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio, kInf);
     segments = matchByDescriptor(a.lineDescriptors, b.lineDescriptors, options.lineRatio, options.maxLineDistance);
+    return false;
 }
 
 } // namespace tripose_samples

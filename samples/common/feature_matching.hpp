@@ -66,8 +66,9 @@ bool estimateFundamental(const ImageFeatures& a, const ImageFeatures& b, const M
 /** Points and segments of views a and b matched where their relative pose is unknown: under the
 fundamental matrix of their descriptor matches (estimateFundamental(), then matchPointsEpipolar()
 and matchSegmentsEpipolar()), which rejects descriptor matches that no rigid motion explains; by
-descriptor alone (matchByDescriptor()) without enough matches for that geometry. */
-void matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
+descriptor alone (matchByDescriptor()) without enough matches for that geometry. Returns true when
+the matches are under the fundamental matrix, false when by descriptor alone. */
+bool matchUnknownPose(const ImageFeatures& a, const ImageFeatures& b, const MatchOptions& options, Matches& points,
                       Matches& segments);
 
 /** How far the points of views a and b agree with a known epipolar geometry @p F, judged without it:

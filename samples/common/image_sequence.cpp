@@ -4,6 +4,7 @@
 
 #include "image_sequence.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "two_view_geometry.hpp"
@@ -11,6 +12,9 @@
 namespace tripose_samples {
 
 namespace {
+
+//! How many frames back a frame is matched when the nearer ones share too few matches with it.
+constexpr int kMaxFrameGap = 3;
 
 /** Tracks of one kind of feature: per track, its row in each frame's features (-1: not seen). */
 class TrackBuilder
@@ -22,20 +26,21 @@ public:
             trackOf_.emplace_back(n, -1);
     }
 
-    //! Matches (row in frame k - 1, row in frame k): each extends its track in frame k - 1, or starts one.
-    void add(int k, const Matches& matches)
+    //! Matches (row in frame @p from, row in frame @p to), @p from < @p to: each extends its track in
+    //! frame @p from, or starts one.
+    void add(int from, int to, const Matches& matches)
     {
         for (const auto& m : matches)
         {
-            int& track = trackOf_[k - 1][m.first];
+            int& track = trackOf_[from][m.first];
             if (track < 0)
             {
                 track = (int)rows_.size();
                 rows_.emplace_back(trackOf_.size(), -1);
-                rows_.back()[k - 1] = m.first;
+                rows_.back()[from] = m.first;
             }
-            rows_[track][k] = m.second;
-            trackOf_[k][m.second] = track;
+            rows_[track][to] = m.second;
+            trackOf_[to][m.second] = track;
         }
     }
 
@@ -91,16 +96,31 @@ SequenceObservations observationsFromImages(const std::vector<cv::Mat>& images,
                                               cv::Matx33d(R01), cv::Vec3d(t01));
     if (givenPairAgreement)
         *givenPairAgreement = epipolarAgreement(features[0], features[1], F01, matchOptions);
-    pointTracks.add(1, matchPointsEpipolar(features[0], features[1], F01, matchOptions));
-    segmentTracks.add(1, matchSegmentsEpipolar(features[0], features[1], F01, matchOptions));
+    pointTracks.add(0, 1, matchPointsEpipolar(features[0], features[1], F01, matchOptions));
+    segmentTracks.add(0, 1, matchSegmentsEpipolar(features[0], features[1], F01, matchOptions));
     // Later frames have no pose yet: matched under the fundamental matrix of their descriptor matches
-    // (as view 3 of a triplet, feature_triplets.cpp), by descriptor alone without enough of them.
+    // (as view 3 of a triplet, feature_triplets.cpp). A frame that shares too few matches with the one
+    // before for that geometry (blurred, covered, of another scene) would end every track there: the
+    // next frame is then matched to the nearest of the frames before that does share enough, at most
+    // kMaxFrameGap back, and only without any to the one before by descriptor alone.
     for (int k = 2; k < F; ++k)
     {
         Matches points, segments;
-        matchUnknownPose(features[k - 1], features[k], matchOptions, points, segments);
-        pointTracks.add(k, points);
-        segmentTracks.add(k, segments);
+        int from = k - 1;
+        bool underGeometry = matchUnknownPose(features[from], features[k], matchOptions, points, segments);
+        for (int j = k - 2; !underGeometry && j >= std::max(0, k - kMaxFrameGap); --j)
+        {
+            Matches earlierPoints, earlierSegments;
+            if (matchUnknownPose(features[j], features[k], matchOptions, earlierPoints, earlierSegments))
+            {
+                points.swap(earlierPoints);
+                segments.swap(earlierSegments);
+                from = j;
+                underGeometry = true;
+            }
+        }
+        pointTracks.add(from, k, points);
+        segmentTracks.add(from, k, segments);
     }
     times.matching += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
 

@@ -329,10 +329,12 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
         Registration r;
         const bool enough = buildRegistration(sequence, frames, k, window, checkThreshold, r);
         frame.features = (int)(r.points.size() + r.lines.size());
-        if (!enough)
+        // Fewer features than the inliers a pose needs: no estimate could be kept, so none is made
+        // (on a few chance matches the robust estimator's search of several basins takes long).
+        if (!enough || frame.features < options.minInliers)
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
-            continue; // lost: fewer than four features shared with the window
+            continue; // lost: too few features shared with the window
         }
 
         cv::Mat R, t, pointInliers, lineInliers;
@@ -342,10 +344,10 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
         else
             frame.inliers = cv::tripose::estimatePoseMultiView(r.p, r.l, r.K, cv::noArray(), r.Rs, r.ts, R, t) > 0 ?
                                 frame.features : 0;
-        if (frame.inliers == 0 || R.empty())
+        if (frame.inliers < std::max(1, options.minInliers) || R.empty())
         {
             frame.milliseconds = 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
-            continue; // lost: no pose
+            continue; // lost: no pose, or too little support for it
         }
         frame.status = FRAME_REGISTERED;
         frame.R = R;

@@ -40,13 +40,21 @@ struct TrackOptions
     features the registration rejected start new tracks, so that a wrong link does not carry on into
     the next frames' windows. */
     bool checkTracks = true;
+    /** A frame is registered only when at least this many features agree with its pose (robust: its
+    inliers; linear: its features), else it is lost. The estimators return a pose with one feature
+    more than a minimal sample, and chance matches reach that: an image of noise inside a sequence
+    was registered with 5 inliers of 7 features, and random features gave poses with up to 7
+    inliers (doc/conventions.md). The least support of a true frame over the VGG sequences is 51
+    (Model House's own correspondences, window 2). */
+    int minInliers = 15;
 };
 
 enum FrameStatus
 {
     FRAME_GIVEN = 0,      //!< Frames 0 and 1: the pose came with the sequence.
     FRAME_REGISTERED = 1, //!< Registered against the window.
-    FRAME_LOST = 2,       //!< Too few features shared with the window, or no pose found: no pose.
+    FRAME_LOST = 2,       //!< Too few features shared with the window, no pose found, or one with too
+                          //!< few inliers (TrackOptions::minInliers): no pose.
 };
 
 struct TrackedFrame

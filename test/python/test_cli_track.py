@@ -57,24 +57,30 @@ def copy_sequence(tmp_path, name):
     return target
 
 
-def test_frame_with_too_few_features_is_lost_and_tracking_resumes(tmp_path):
-    # Frame 2 of Wadham College keeps three lines and no points: fewer than the four features a
-    # registration needs. It is reported lost (status 2, NaN pose); frame 3 registers against
-    # frames 0 and 1.
-    data = copy_sequence(tmp_path, "Wadham-College")
-    for name, keep in (("nview-corners", 0), ("nview-lines", 3)):
+def keep_in_frame_2(data, corners, lines):
+    """Frame 2 of the sequence in @p data sees only the first @p corners corners and @p lines lines
+    that frames 0 and 1 see as well."""
+    for name, keep in (("nview-corners", corners), ("nview-lines", lines)):
         rows = (data / name).read_text().splitlines()
         kept = 0
         edited = []
         for row in rows:
             cells = row.split()
             if cells[2] != "*":
-                if kept < keep:
+                if kept < keep and "*" not in cells[:2]:
                     kept += 1
                 else:
                     cells[2] = "*"
             edited.append(" ".join(cells))
         (data / name).write_text("\n".join(edited) + "\n")
+
+
+def test_frame_with_too_few_features_is_lost_and_tracking_resumes(tmp_path):
+    # Frame 2 of Wadham College keeps three lines and no points: fewer than the four features a
+    # registration needs. It is reported lost (status 2, NaN pose); frame 3 registers against
+    # frames 0 and 1.
+    data = copy_sequence(tmp_path, "Wadham-College")
+    keep_in_frame_2(data, 0, 3)
     proc, out = track(tmp_path, data)
     assert proc.returncode == 0, proc.stderr
     values = read_matrices(out, ["poses", "status"])
@@ -82,6 +88,22 @@ def test_frame_with_too_few_features_is_lost_and_tracking_resumes(tmp_path):
     assert np.all(np.isnan(values["poses"][2]))
     assert np.all(np.isfinite(values["poses"][3:]))
     assert drift(out) < 0.3
+
+
+def test_frame_with_too_little_support_is_lost(tmp_path):
+    # Ten corners and two lines of frame 2 (all correct): a pose, but fewer than the 15 features a
+    # registration must keep by default (--min-inliers), so the frame is lost; asked for 8, it is
+    # registered.
+    data = copy_sequence(tmp_path, "Wadham-College")
+    keep_in_frame_2(data, 10, 2)
+    proc, out = track(tmp_path, data)
+    assert proc.returncode == 0, proc.stderr
+    np.testing.assert_array_equal(read_matrices(out, ["status"])["status"].ravel(), [0, 0, 2, 1, 1])
+    proc, out = track(tmp_path, data, "--min-inliers", 8)
+    assert proc.returncode == 0, proc.stderr
+    values = read_matrices(out, ["status", "inliers", "rotation_error_deg"])
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 1, 1, 1])
+    assert values["inliers"].ravel()[2] >= 8 and values["rotation_error_deg"].ravel()[2] < 1.0
 
 
 def expect_rejected(tmp_path, data, named, *options):
@@ -116,7 +138,7 @@ def test_missing_correspondence_file_is_rejected(tmp_path):
 
 @pytest.mark.parametrize("option,value", [("--window", "1"), ("--local-refine", "2"), ("--method", "exact"),
                                           ("--threshold", "-1"), ("--check-tracks", "2"), ("--max-image-size", "-1"),
-                                          ("--max-image-size", "800")])
+                                          ("--max-image-size", "800"), ("--min-inliers", "0")])
 def test_bad_arguments_are_named(tmp_path, option, value):
     expect_rejected(tmp_path, VGG / "Wadham-College", option, option, value)
 

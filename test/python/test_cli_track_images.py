@@ -93,6 +93,39 @@ def test_blank_image_in_the_folder_is_rejected(tmp_path):
     assert not out.exists() and files_in(tmp_path) == before
 
 
+def merton_with_frame_inserted(folder, image):
+    """Merton College I with @p image inserted as frame 2 (its camera a copy of frame 1's, no
+    correspondences): frames 001, 002, the inserted 003, then Merton's 003 as 004."""
+    source = VGG / "Merton-College-I"
+    folder.mkdir()
+    for old, new in (("001", "001"), ("002", "002"), ("003", "004")):
+        for suffix in (".P", ".corners", ".lines", ".jpg"):
+            shutil.copy(source / (old + suffix), folder / (new + suffix))
+    for suffix in (".P", ".corners", ".lines"):
+        shutil.copy(source / ("002" + suffix), folder / ("003" + suffix))
+    cv2.imwrite(str(folder / "003.jpg"), image)
+    for name in ("nview-corners", "nview-lines"):
+        rows = [line.split() for line in (source / name).read_text().splitlines() if line.strip()]
+        (folder / name).write_text("".join(" ".join(r[:2] + ["*"] + r[2:]) + "\n" for r in rows))
+    for name in ("p3d", "l3d"):
+        shutil.copy(source / name, folder / name)
+    return folder
+
+
+def test_frame_that_matches_no_neighbour_is_passed_over(tmp_path):
+    # An image of blurred noise between frames 1 and 2 shares no geometry with either: it is lost,
+    # and the frame after it is matched to frame 1 instead, so the tracks go on (before, every track
+    # ended at the noise and the frames after it were lost too).
+    rng = np.random.default_rng(3)
+    noise = cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2)
+    proc, out = track(tmp_path, merton_with_frame_inserted(tmp_path / "Merton", noise))
+    assert proc.returncode == 0, proc.stderr
+    values = read_matrices(out, ["status", "features", "rotation_error_deg"])
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 2, 1])
+    assert values["features"].ravel()[3] >= 200
+    assert values["rotation_error_deg"].ravel()[3] < 0.2
+
+
 def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
     # --observations writes the tracks the frames were registered from; most fit the sequence's
     # cameras within a pixel (test/evaluation/track_observation_residuals.py: a wrong link shows as pixels).
