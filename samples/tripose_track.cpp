@@ -12,7 +12,7 @@
 //
 //   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
 //                 [--method ransac|linear] [--threshold px] [--seed n] [--check-tracks 0|1] [--min-inliers n]
-//                 [--from-images]
+//                 [--keyframe-parallax deg] [--from-images]
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +41,8 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--check-tracks 0|1] [--min-inliers n] [--observations tracks.yml] [--max-image-size px]\n"
+    "                     [--check-tracks 0|1] [--min-inliers n] [--keyframe-parallax deg] [--observations tracks.yml]\n"
+    "                     [--max-image-size px]\n"
     "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
     "                 2 is the three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
@@ -53,6 +54,9 @@ const char* kUsage =
     "                 tracks from the frame's observations that the registration rejected. 0: off\n"
     "  --min-inliers n  a frame whose pose fewer than n features agree with is lost (default 15; chance\n"
     "                 matches of an unrelated image gave up to 7)\n"
+    "  --keyframe-parallax deg  a registered frame enters later windows (is a keyframe) when its inlier\n"
+    "                 structure's median angle between it and the window's last keyframe is at least deg\n"
+    "                 (default 0.1; a camera standing still adds none; 0: every registered frame)\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
     "  --max-image-size  with --from-images: detect the features in images reduced to this longer side\n"
@@ -63,7 +67,8 @@ const char* kUsage =
     "                 NaN where frame k does not see it\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
-    "features and inliers per frame, rotation_error_deg and position_error per frame, drift_percent.\n";
+    "keyframe (F x 1: 1 where later frames were registered against it), features and inliers per frame,\n"
+    "rotation_error_deg and position_error per frame, drift_percent.\n";
 
 struct Options
 {
@@ -87,8 +92,8 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--check-tracks", "--min-inliers", "--observations",
-                                             "--max-image-size" };
+                                             "--local-refine", "--check-tracks", "--min-inliers",
+                                             "--keyframe-parallax", "--observations", "--max-image-size" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -115,6 +120,12 @@ Options parseArguments(int argc, char** argv)
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--min-inliers")
             o.track.minInliers = parseInteger(arg, value, 1.0);
+        else if (arg == "--keyframe-parallax")
+        {
+            o.track.keyframeParallaxDeg = parseNumber(arg, value);
+            if (!(o.track.keyframeParallaxDeg >= 0 && o.track.keyframeParallaxDeg < 180))
+                throw argumentError(arg, "expected degrees from 0 to below 180, got '" + value + "'");
+        }
         else if (arg == "--threshold")
         {
             o.track.ransac.threshold = parseNumber(arg, value);
@@ -326,11 +337,12 @@ int main(int argc, char** argv)
     for (int k = 1; k < F; ++k)
         pathLength += cv::norm(-sequence.Rs[k].t() * sequence.ts[k] - (-sequence.Rs[k - 1].t() * sequence.ts[k - 1]));
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(nan)), status(F, 1, CV_32S), features(F, 1, CV_32S),
+    cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(nan)), status(F, 1, CV_32S), keyframes(F, 1, CV_32S),
+        features(F, 1, CV_32S),
         inliers(F, 1, CV_32S), rotationErrors(F, 1, CV_64F, cv::Scalar::all(nan)),
         positionErrors(F, 1, CV_64F, cv::Scalar::all(nan));
     double totalMs = 0;
-    int registered = 0, lost = 0;
+    int registered = 0, lost = 0, nonKeyframes = 0;
     std::cout << "Sequence " << options.data << ": " << F << " frames, window " << options.track.window << ", method "
               << options.method << "; path length " << pathLength << "\n"
               << "frame  status      known  features  inliers  rot.err(deg)  pos.err  pos.err(% path)  ms\n";
@@ -338,17 +350,21 @@ int main(int argc, char** argv)
     {
         const tripose_samples::TrackedFrame& f = frames[k];
         status.at<int>(k) = (int)f.status;
+        keyframes.at<int>(k) = f.keyframe ? 1 : 0;
         features.at<int>(k) = f.features;
         inliers.at<int>(k) = f.inliers;
         reference[k] = topView(sequence.Rs[k], sequence.ts[k]);
         valid[k] = f.status != tripose_samples::FRAME_LOST;
-        const char* name = f.status == tripose_samples::FRAME_GIVEN ? "given" :
-                           f.status == tripose_samples::FRAME_REGISTERED ? "registered" : "LOST";
+        const char* name = f.status == tripose_samples::FRAME_GIVEN      ? "given" :
+                           f.status == tripose_samples::FRAME_LOST       ? "LOST" :
+                           f.keyframe                                     ? "registered" :
+                                                                            "registered*";
+        nonKeyframes += f.status == tripose_samples::FRAME_REGISTERED && !f.keyframe;
         if (!valid[k])
         {
             ++lost;
             totalMs += f.milliseconds;
-            std::cout << cv::format("%5d  %-10s  %5d  %8d  %7s  %12s  %7s  %15s  %.2f\n", k, name, f.knownViews,
+            std::cout << cv::format("%5d  %-11s %5d  %8d  %7s  %12s  %7s  %15s  %.2f\n", k, name, f.knownViews,
                                     f.features, "-", "-", "-", "-", f.milliseconds);
             continue;
         }
@@ -368,13 +384,16 @@ int main(int argc, char** argv)
         {
             ++registered;
             totalMs += f.milliseconds;
-            std::cout << cv::format("%5d  %-10s  %5d  %8d  %7d  %12.4f  %7.4f  %15.3f  %.2f\n", k, name, f.knownViews,
+            std::cout << cv::format("%5d  %-11s %5d  %8d  %7d  %12.4f  %7.4f  %15.3f  %.2f\n", k, name, f.knownViews,
                                     f.features, f.inliers, error.rotationDeg, position, 100 * position / pathLength,
                                     f.milliseconds);
         }
         else
-            std::cout << cv::format("%5d  %-10s\n", k, name);
+            std::cout << cv::format("%5d  %-11s\n", k, name);
     }
+    if (nonKeyframes > 0)
+        std::cout << "* not a keyframe: too little parallax with the window's last keyframe (--keyframe-parallax); "
+                     "later frames are not registered against it\n";
     const double drift = valid[F - 1] ? 100 * positionErrors.at<double>(F - 1) / pathLength : nan;
     std::cout << cv::format("Drift of the last frame: %.3f %% of the path; %d registered, %d lost; %.2f ms per frame\n",
                             drift, registered, lost, totalMs / std::max(1, F - 2));
@@ -386,7 +405,8 @@ int main(int argc, char** argv)
                << "window" << options.track.window << "method" << options.method
                << "local_refine" << (options.track.localAdjustment ? 1 : 0)
                << "check_tracks" << (options.track.checkTracks ? 1 : 0);
-            fs << "poses" << poses << "status" << status << "features" << features << "inliers" << inliers;
+            fs << "poses" << poses << "status" << status << "keyframe" << keyframes << "features" << features
+               << "inliers" << inliers;
             fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
             fs << "path_length" << pathLength << "drift_percent" << drift;
             fs << "ms_per_frame" << totalMs / std::max(1, F - 2);

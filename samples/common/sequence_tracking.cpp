@@ -204,6 +204,45 @@ std::vector<int> rejected(const std::vector<int>& features, const cv::Mat& inlie
     return out;
 }
 
+/** The median, over the inlier structure of registration @p r triangulated from its known frames,
+of the angle (degrees) between the rays from the last known frame's centre and from the new
+frame's (pose @p R, @p t): how far the new frame has moved for that structure. Empty inlier masks
+(the linear method) count every feature; +inf without structure. */
+double medianParallaxDeg(const Registration& r, const cv::Mat& R, const cv::Mat& t, const cv::Mat& pointInliers,
+                         const cv::Mat& lineInliers)
+{
+    const size_t known = r.Rs.size();
+    const std::vector<cv::Mat> p(r.p.begin(), r.p.begin() + std::min(known, r.p.size()));
+    const std::vector<cv::Mat> l(r.l.begin(), r.l.begin() + std::min(known, r.l.size()));
+    cv::Mat points3d, lines3d, pointErrors, lineErrors;
+    cv::tripose::triangulateMultiView(p, l, std::vector<cv::Mat>(r.K.begin(), r.K.begin() + known), cv::noArray(),
+                                      r.Rs, r.ts, points3d, lines3d, pointErrors, lineErrors);
+    const cv::Vec3d last(cv::Mat(-r.Rs.back().t() * r.ts.back())), current(cv::Mat(-R.t() * t));
+    std::vector<double> angles;
+    const auto addAngles = [&](const cv::Mat& structure, const cv::Mat& inliers) {
+        for (int i = 0; i < structure.rows; ++i)
+        {
+            if (!inliers.empty() && !inliers.at<uchar>(i))
+                continue;
+            for (int c = 0; c + 3 <= structure.cols; c += 3)
+            {
+                const cv::Vec3d X(structure.at<double>(i, c), structure.at<double>(i, c + 1),
+                                  structure.at<double>(i, c + 2));
+                const cv::Vec3d a = X - last, b = X - current;
+                const double angle = std::atan2(cv::norm(a.cross(b)), a.dot(b));
+                if (std::isfinite(angle))
+                    angles.push_back(angle * 180.0 / CV_PI);
+            }
+        }
+    };
+    addAngles(points3d, pointInliers);
+    addAngles(lines3d, lineInliers);
+    if (angles.empty())
+        return std::numeric_limits<double>::infinity();
+    std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+    return angles[angles.size() / 2];
+}
+
 } // namespace
 
 bool registrationViews(const SequenceObservations& sequence, const std::vector<TrackedFrame>& frames, int frame,
@@ -311,6 +350,7 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
     CV_Assert(F >= 2 && (int)sequence.points.size() == F && (int)sequence.lines.size() == F);
     std::vector<TrackedFrame> frames(F);
     frames[0].status = frames[1].status = FRAME_GIVEN;
+    frames[0].keyframe = frames[1].keyframe = true;
     sequence.R0.convertTo(frames[0].R, CV_64F);
     sequence.t0.convertTo(frames[0].t, CV_64F);
     sequence.R1.convertTo(frames[1].R, CV_64F);
@@ -323,7 +363,7 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
         const int64 start = cv::getTickCount();
         std::vector<int> window;
         for (int j = k - 1; j >= 0 && (int)window.size() < options.window; --j)
-            if (frames[j].status != FRAME_LOST)
+            if (frames[j].keyframe)
                 window.insert(window.begin(), j);
         frame.knownViews = (int)window.size();
         Registration r;
@@ -352,6 +392,7 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
         frame.status = FRAME_REGISTERED;
         frame.R = R;
         frame.t = t;
+        frame.keyframe = !(medianParallaxDeg(r, R, t, pointInliers, lineInliers) < options.keyframeParallaxDeg);
         if (options.checkTracks && options.robust)
         {
             splitTracks(sequence.points, k, rejected(r.points, pointInliers));
@@ -367,8 +408,9 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
 std::vector<std::string> trackResultKeys()
 {
     return { "sequence",           "correspondences", "window",        "method",       "local_refine",
-             "check_tracks",       "poses",           "status",        "features",     "inliers",
-             "rotation_error_deg", "position_error",  "path_length",   "drift_percent", "ms_per_frame" };
+             "check_tracks",       "poses",           "status",        "keyframe",     "features",
+             "inliers",            "rotation_error_deg", "position_error", "path_length", "drift_percent",
+             "ms_per_frame" };
 }
 
 } // namespace tripose_samples

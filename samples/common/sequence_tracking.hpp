@@ -4,7 +4,8 @@
 
 // Tracking a camera along a sequence with cv::tripose::estimatePoseMultiView*: the first two frames
 // have given poses (they fix the world frame and the scale); every later frame is registered
-// against the registered frames of a sliding window that see its features.
+// against a sliding window of the keyframes before it (frames with a pose and parallax) that see its
+// features.
 
 #ifndef TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
 #define TRIPOSE_SAMPLES_SEQUENCE_TRACKING_HPP
@@ -26,7 +27,7 @@ struct SequenceObservations
 
 struct TrackOptions
 {
-    int window = 5;                      //!< Registered frames a new frame is registered against (>= 2).
+    int window = 5;                      //!< Keyframes a new frame is registered against (>= 2).
     bool robust = true;                  //!< estimatePoseMultiViewRansac (else the linear estimate alone).
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
     /** Local adjustment after each registration: the registered frames of the window, the new one
@@ -47,6 +48,14 @@ struct TrackOptions
     inliers (doc/conventions.md). The least support of a true frame over the VGG sequences is 51
     (Model House's own correspondences, window 2). */
     int minInliers = 15;
+    /** A registered frame becomes a keyframe, one that later frames are registered against, when
+    the median angle its inlier structure subtends between it and the last keyframe of its window is
+    at least this (degrees; 0: every registered frame). A camera that stands still adds views
+    without a baseline: a window of them registers the next frame as from one view (Merton College I
+    with its second image repeated four times: the third image, registered next, off by 33 % of the
+    path). The consecutive frames of the VGG sequences are 0.51 deg apart at the least (Corridor,
+    moving forward), the others' 5.7 deg, so all their frames are keyframes. */
+    double keyframeParallaxDeg = 0.1;
 };
 
 enum FrameStatus
@@ -64,6 +73,9 @@ struct TrackedFrame
     int features = 0;       //!< Features seen by the frame and at least two window frames.
     int inliers = 0;        //!< Robust: inlier features; linear: every feature.
     int knownViews = 0;     //!< Window frames used.
+    //! Later frames are registered against it: frames 0 and 1, and registered frames with enough
+    //! parallax (TrackOptions::keyframeParallaxDeg).
+    bool keyframe = false;
     double milliseconds = 0; //!< Time of the registration (selection of features included).
 };
 

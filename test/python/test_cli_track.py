@@ -138,7 +138,8 @@ def test_missing_correspondence_file_is_rejected(tmp_path):
 
 @pytest.mark.parametrize("option,value", [("--window", "1"), ("--local-refine", "2"), ("--method", "exact"),
                                           ("--threshold", "-1"), ("--check-tracks", "2"), ("--max-image-size", "-1"),
-                                          ("--max-image-size", "800"), ("--min-inliers", "0")])
+                                          ("--max-image-size", "800"), ("--min-inliers", "0"),
+                                          ("--keyframe-parallax", "-1")])
 def test_bad_arguments_are_named(tmp_path, option, value):
     expect_rejected(tmp_path, VGG / "Wadham-College", option, option, value)
 

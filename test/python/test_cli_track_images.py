@@ -93,20 +93,22 @@ def test_blank_image_in_the_folder_is_rejected(tmp_path):
     assert not out.exists() and files_in(tmp_path) == before
 
 
-def merton_with_frame_inserted(folder, image):
-    """Merton College I with @p image inserted as frame 2 (its camera a copy of frame 1's, no
-    correspondences): frames 001, 002, the inserted 003, then Merton's 003 as 004."""
+def merton_with_frames_inserted(folder, images):
+    """Merton College I with @p images inserted after its second frame (their cameras copies of that
+    frame's, no correspondences): 001, 002, the inserted ones from 003 on, then Merton's 003."""
     source = VGG / "Merton-College-I"
     folder.mkdir()
-    for old, new in (("001", "001"), ("002", "002"), ("003", "004")):
+    names = ["001", "002"] + [f"{3 + i:03d}" for i in range(len(images))] + [f"{3 + len(images):03d}"]
+    for old, new in (("001", names[0]), ("002", names[1]), ("003", names[-1])):
         for suffix in (".P", ".corners", ".lines", ".jpg"):
             shutil.copy(source / (old + suffix), folder / (new + suffix))
-    for suffix in (".P", ".corners", ".lines"):
-        shutil.copy(source / ("002" + suffix), folder / ("003" + suffix))
-    cv2.imwrite(str(folder / "003.jpg"), image)
+    for name, image in zip(names[2:-1], images):
+        for suffix in (".P", ".corners", ".lines"):
+            shutil.copy(source / ("002" + suffix), folder / (name + suffix))
+        cv2.imwrite(str(folder / (name + ".jpg")), image)
     for name in ("nview-corners", "nview-lines"):
         rows = [line.split() for line in (source / name).read_text().splitlines() if line.strip()]
-        (folder / name).write_text("".join(" ".join(r[:2] + ["*"] + r[2:]) + "\n" for r in rows))
+        (folder / name).write_text("".join(" ".join(r[:2] + ["*"] * len(images) + r[2:]) + "\n" for r in rows))
     for name in ("p3d", "l3d"):
         shutil.copy(source / name, folder / name)
     return folder
@@ -118,12 +120,29 @@ def test_frame_that_matches_no_neighbour_is_passed_over(tmp_path):
     # ended at the noise and the frames after it were lost too).
     rng = np.random.default_rng(3)
     noise = cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2)
-    proc, out = track(tmp_path, merton_with_frame_inserted(tmp_path / "Merton", noise))
+    proc, out = track(tmp_path, merton_with_frames_inserted(tmp_path / "Merton", [noise]))
     assert proc.returncode == 0, proc.stderr
     values = read_matrices(out, ["status", "features", "rotation_error_deg"])
     np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 2, 1])
     assert values["features"].ravel()[3] >= 200
     assert values["rotation_error_deg"].ravel()[3] < 0.2
+
+
+def test_camera_standing_still_adds_no_keyframes(tmp_path):
+    # The second image four times more: a camera that stood still. Those frames are registered at
+    # frame 1's pose but add no baseline, so they are not keyframes, and the third image is registered
+    # against frames 0 and 1 (measured 0.065 deg; registered against the four copies, as every frame
+    # was a keyframe before, it was 0.31 deg and 33 % of the path off).
+    still = cv2.imread(str(VGG / "Merton-College-I" / "002.jpg"))
+    data = merton_with_frames_inserted(tmp_path / "Merton", [still] * 4)
+    proc, out = track(tmp_path, data)
+    assert proc.returncode == 0, proc.stderr
+    assert "not a keyframe" in proc.stdout
+    values = read_matrices(out, ["status", "keyframe", "rotation_error_deg", "position_error"])
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 1, 1, 1, 1, 1])
+    np.testing.assert_array_equal(values["keyframe"].ravel(), [1, 1, 0, 0, 0, 0, 1])
+    assert np.all(values["rotation_error_deg"].ravel()[2:6] < 0.05)
+    assert values["rotation_error_deg"].ravel()[6] < 0.2
 
 
 def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
