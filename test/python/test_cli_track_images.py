@@ -145,6 +145,28 @@ def test_camera_standing_still_adds_no_keyframes(tmp_path):
     assert values["rotation_error_deg"].ravel()[6] < 0.2
 
 
+def test_camera_that_only_turns_is_no_keyframe(tmp_path):
+    # Frame 1's image turned by 2 degrees about its camera's centre (the homography K R K^-1; its
+    # camera turned the same way), inserted after it: registered, but without a baseline to frame 1
+    # it is no keyframe, and the third image is registered against frames 0 and 1 (measured 0.002
+    # and 0.027 deg; 0.074 deg for the third with the turned frame a keyframe).
+    source = VGG / "Merton-College-I"
+    camera = np.loadtxt(source / "002.P")
+    K = cv2.decomposeProjectionMatrix(camera)[0]
+    H = K @ cv2.Rodrigues(np.array([0.0, np.radians(2.0), 0.0]))[0] @ np.linalg.inv(K)
+    image = cv2.imread(str(source / "002.jpg"))
+    turned = cv2.warpPerspective(image, H, (image.shape[1], image.shape[0]))
+    data = merton_with_frames_inserted(tmp_path / "Merton", [turned])
+    np.savetxt(data / "003.P", H @ camera)
+    proc, out = track(tmp_path, data)
+    assert proc.returncode == 0, proc.stderr
+    values = read_matrices(out, ["status", "keyframe", "rotation_error_deg"])
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 1, 1])
+    np.testing.assert_array_equal(values["keyframe"].ravel(), [1, 1, 0, 1])
+    errors = values["rotation_error_deg"].ravel()
+    assert errors[2] < 0.05 and errors[3] < 0.2
+
+
 def test_observations_are_the_tracks_at_the_sequence_cameras(tmp_path):
     # --observations writes the tracks the frames were registered from; most fit the sequence's
     # cameras within a pixel (test/evaluation/track_observation_residuals.py: a wrong link shows as pixels).
