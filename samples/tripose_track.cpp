@@ -4,8 +4,8 @@
 
 // tripose_track: tracks the camera along a sequence in the Oxford VGG multi-view format. Frames 0 and
 // 1 take their poses from the sequence (they fix the world frame and the scale); every later frame
-// is registered against the frames of a sliding window that see its features, points and lines
-// together (cv::tripose::estimatePoseMultiViewRansac). Writes the poses, prints per-frame errors
+// is registered against a sliding window of the keyframes before it that see its features, points
+// and lines together (cv::tripose::estimatePoseMultiViewRansac). Writes the poses, prints per-frame errors
 // against the sequence's cameras and, with --plot, draws both trajectories seen from above. With
 // --from-images the correspondences come from the folder's images (one per camera, in name order)
 // through the image front end instead of the sequence's files.
@@ -41,10 +41,10 @@ namespace {
 const char* kUsage =
     "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
     "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--check-tracks 0|1] [--min-inliers n] [--keyframe-parallax deg] [--observations tracks.yml]\n"
-    "                     [--max-image-size px]\n"
-    "  --window N     register each frame against the last N frames with a pose (default 5, at least 2;\n"
-    "                 2 is the three-view chain)\n"
+    "                     [--check-tracks 0|1] [--min-inliers n] [--keyframe-parallax deg]\n"
+    "                     [--observations tracks.yml] [--max-image-size px]\n"
+    "  --window N     register each frame against the last N keyframes (default 5, at least 2; 2 is the\n"
+    "                 three-view chain)\n"
     "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
     "  --local-refine 1: after each registration, refine the window's registered frames, the new one and\n"
     "                 the structure together against the earlier frames (a local bundle adjustment;\n"
@@ -54,9 +54,10 @@ const char* kUsage =
     "                 tracks from the frame's observations that the registration rejected. 0: off\n"
     "  --min-inliers n  a frame whose pose fewer than n features agree with is lost (default 15; chance\n"
     "                 matches of an unrelated image gave up to 7)\n"
-    "  --keyframe-parallax deg  a registered frame enters later windows (is a keyframe) when its inlier\n"
-    "                 structure's median angle between it and the window's last keyframe is at least deg\n"
-    "                 (default 0.1; a camera standing still adds none; 0: every registered frame)\n"
+    "  --keyframe-parallax deg  a registered frame may enter later windows (is a keyframe) when the median\n"
+    "                 angle between the rays from it and from the window's last keyframe, over its inlier\n"
+    "                 points and inlier lines' end points, is at least deg (default 0.1; a camera standing\n"
+    "                 still adds none; 0: every registered frame)\n"
     "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
     "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
     "  --max-image-size  with --from-images: detect the features in images reduced to this longer side\n"
@@ -67,7 +68,8 @@ const char* kUsage =
     "                 NaN where frame k does not see it\n"
     "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
     "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
-    "keyframe (F x 1: 1 where later frames were registered against it), features and inliers per frame,\n"
+    "keyframe (F x 1: 1 for frames 0 and 1 and registered frames with enough parallax, which later\n"
+    "windows may hold), features and inliers per frame,\n"
     "rotation_error_deg and position_error per frame, drift_percent.\n";
 
 struct Options

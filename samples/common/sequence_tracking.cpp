@@ -204,10 +204,11 @@ std::vector<int> rejected(const std::vector<int>& features, const cv::Mat& inlie
     return out;
 }
 
-/** The median, over the inlier structure of registration @p r triangulated from its known frames,
-of the angle (degrees) between the rays from the last known frame's centre and from the new
-frame's (pose @p R, @p t): how far the new frame has moved for that structure. Empty inlier masks
-(the linear method) count every feature; +inf without structure. */
+/** The median, over the inlier points of registration @p r and the two end points of its inlier
+lines, triangulated from its known frames, of the angle (degrees) between the rays from the last
+known frame's centre and from the new frame's (pose @p R, @p t): how far the new frame has moved
+for that structure. Empty inlier masks (the linear method) count every feature; +inf without
+structure. */
 double medianParallaxDeg(const Registration& r, const cv::Mat& R, const cv::Mat& t, const cv::Mat& pointInliers,
                          const cv::Mat& lineInliers)
 {
@@ -333,7 +334,7 @@ void adjustWindow(const SequenceObservations& sequence, std::vector<TrackedFrame
     free.push_back(k);
     std::vector<int> fixed;
     for (int j = 0; j < k; ++j)
-        if (frames[j].status != FRAME_LOST && std::find(free.begin(), free.end(), j) == free.end())
+        if (frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
             fixed.push_back(j);
     cv::tripose::RefineParams params;
     params.loss = cv::tripose::LOSS_HUBER;
@@ -392,6 +393,8 @@ std::vector<TrackedFrame> trackSequence(SequenceObservations& sequence, const Tr
         frame.status = FRAME_REGISTERED;
         frame.R = R;
         frame.t = t;
+        // Judged on the registration's own poses, which the local adjustment below moves by a small
+        // fraction of any parallax that matters here.
         frame.keyframe = !(medianParallaxDeg(r, R, t, pointInliers, lineInliers) < options.keyframeParallaxDeg);
         if (options.checkTracks && options.robust)
         {

@@ -32,7 +32,7 @@ struct TrackOptions
     cv::tripose::RansacParams ransac;    //!< With robust: threshold, refinement, seed.
     /** Local adjustment after each registration: the registered frames of the window, the new one
     included, and the structure refined together (adjustPosesMultiView, Huber loss at the RANSAC
-    threshold) against every earlier frame with a pose, held fixed (frames 0 and 1 among them). */
+    threshold) against every earlier keyframe, held fixed (frames 0 and 1 among them). */
     bool localAdjustment = false;
     /** Track checks with robust registration, at the RANSAC threshold: before a frame is registered, each feature's
     observations in the window are measured against the window's poses (triangulateMultiView()) and

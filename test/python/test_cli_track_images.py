@@ -1,12 +1,14 @@
 """End-to-end tests of `tripose_track --from-images`: the correspondences come from the folder's
 images through the image front end (frames 0 and 1 keep the sequence's poses). Run on the bundled
-Merton College I images; bad input (a folder whose images do not match its cameras) is rejected
-with exit status 1, the folder or image named, and nothing written."""
+Merton College I images, also with frames inserted (noise, a camera that stands still or only
+turns); bad input (a folder whose images do not match its cameras) is rejected with exit status 1,
+the folder or image named, and nothing written."""
 import shutil
 import subprocess
 
 import cv2
 import numpy as np
+import pytest
 
 from tripose_tools import REPO, build_tool, files_in, read_matrices
 
@@ -114,25 +116,28 @@ def merton_with_frames_inserted(folder, images):
     return folder
 
 
-def test_frame_that_matches_no_neighbour_is_passed_over(tmp_path):
-    # An image of blurred noise between frames 1 and 2 shares no geometry with either: it is lost,
-    # and the frame after it is matched to frame 1 instead, so the tracks go on (before, every track
-    # ended at the noise and the frames after it were lost too).
+@pytest.mark.parametrize("frames_of_noise", [1, 2])
+def test_frame_that_matches_no_neighbour_is_passed_over(tmp_path, frames_of_noise):
+    # Images of blurred noise between frames 1 and 2 share no geometry with them: they are lost, and
+    # the frame after them is matched to frame 1, two or three frames back, so the tracks go on.
+    # Matched to the frame before it alone, every track would end at the noise and every later frame
+    # would be lost.
     rng = np.random.default_rng(3)
-    noise = cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2)
-    proc, out = track(tmp_path, merton_with_frames_inserted(tmp_path / "Merton", [noise]))
+    noise = [cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2)
+             for _ in range(frames_of_noise)]
+    proc, out = track(tmp_path, merton_with_frames_inserted(tmp_path / "Merton", noise))
     assert proc.returncode == 0, proc.stderr
     values = read_matrices(out, ["status", "features", "rotation_error_deg"])
-    np.testing.assert_array_equal(values["status"].ravel(), [0, 0, 2, 1])
-    assert values["features"].ravel()[3] >= 200
-    assert values["rotation_error_deg"].ravel()[3] < 0.2
+    np.testing.assert_array_equal(values["status"].ravel(), [0, 0] + [2] * frames_of_noise + [1])
+    assert values["features"].ravel()[-1] >= 200
+    assert values["rotation_error_deg"].ravel()[-1] < 0.2
 
 
 def test_camera_standing_still_adds_no_keyframes(tmp_path):
     # The second image four times more: a camera that stood still. Those frames are registered at
     # frame 1's pose but add no baseline, so they are not keyframes, and the third image is registered
-    # against frames 0 and 1 (measured 0.065 deg; registered against the four copies, as every frame
-    # was a keyframe before, it was 0.31 deg and 33 % of the path off).
+    # against frames 0 and 1 (measured 0.065 deg; registered against the four copies, with every
+    # registered frame a keyframe, it is 0.31 deg and 33 % of the path off).
     still = cv2.imread(str(VGG / "Merton-College-I" / "002.jpg"))
     data = merton_with_frames_inserted(tmp_path / "Merton", [still] * 4)
     proc, out = track(tmp_path, data)
