@@ -300,10 +300,8 @@ int main(int argc, char** argv)
     {
         options = parseArguments(argc, argv);
         checkWritable(options.output, "--output");
-        if (!options.overlay.empty())
-            checkWritable(options.overlay, "--overlay");
-        if (!options.matches.empty())
-            checkWritable(options.matches, "--matches");
+        checkWritable(options.overlay, "--overlay");
+        checkWritable(options.matches, "--matches");
         calibration = readCalibration(options.calib);
         for (int v = 0; v < 3; ++v)
         {

@@ -271,10 +271,8 @@ int main(int argc, char** argv)
     {
         options = parseArguments(argc, argv);
         tripose_samples::checkWritable(options.output, "--output");
-        if (!options.plot.empty())
-            tripose_samples::checkWritable(options.plot, "--plot");
-        if (!options.observations.empty())
-            tripose_samples::checkWritable(options.observations, "--observations");
+        tripose_samples::checkWritable(options.plot, "--plot");
+        tripose_samples::checkWritable(options.observations, "--observations");
         sequence = cv::tripose::support::loadVggSequence(options.data);
     }
     catch (const cv::Exception& e)

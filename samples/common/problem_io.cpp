@@ -754,6 +754,8 @@ void commitAtomicWrite(const std::string& temporary, const std::string& path)
 
 void checkWritable(const std::string& path, const std::string& option)
 {
+    if (path.empty())
+        return;
     std::error_code error;
     const std::filesystem::path file(path);
     const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");

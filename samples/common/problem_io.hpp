@@ -84,7 +84,8 @@ void commitAtomicWrite(const std::string& temporary, const std::string& path);
 /** Throws std::runtime_error naming @p option and @p path when the file cannot be written there (no
 such folder, a folder of that name, no permission): checked before a tool's work, so that a long run
 does not end in "cannot write" with nothing, or part of its output, written. It creates and removes
-the temporary file that writeAtomically() would write. */
+the temporary file that writeAtomically() would write. An empty @p path (an optional output not
+asked for) passes. */
 void checkWritable(const std::string& path, const std::string& option);
 
 //! Writes @p bytes (an encoded image, ...) to @p path atomically, as writeAtomically().

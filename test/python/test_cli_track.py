@@ -64,7 +64,7 @@ def keep_in_frame_2(data, corners, lines, wrong_corners=0):
     for name, keep, wrong in (("nview-corners", corners, wrong_corners), ("nview-lines", lines, 0)):
         rows = [row.split() for row in (data / name).read_text().splitlines()]
         shared = [i for i, cells in enumerate(rows) if "*" not in cells[:3]]
-        kept, shifted = shared[:keep], shared[keep:keep + wrong]
+        kept, shifted = set(shared[:keep]), shared[keep:keep + wrong]
         shifted_to = {i: rows[shifted[(n + 1) % len(shifted)]][2] for n, i in enumerate(shifted)}
         for i, cells in enumerate(rows):
             if i in shifted_to:
