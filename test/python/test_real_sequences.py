@@ -102,7 +102,7 @@ def test_herz_jesus_p8_agrees_with_its_images():
 def test_temple_ring_agrees_with_its_images():
     seq = rs.temple_ring()
     assert len(seq) == 47 and (seq.width, seq.height) == (640, 480)
-    # The neighbours 33 and 32 on the ring (2.7 degrees apart); wrong: 32's pose replaced by that of
+    # The neighbours 33 and 32 on the ring (5.1 degrees apart); wrong: 32's pose replaced by that of
     # file 13, 57 degrees further round (all neighbours on the ring have nearly one relative pose).
     check_ground_truth(seq, 1, 2, (seq.R[1], seq.t[1], seq.R[9], seq.t[9]))
 
@@ -110,6 +110,9 @@ def test_temple_ring_agrees_with_its_images():
 def test_kitti_06_forward_agrees_with_its_images():
     seq = rs.kitti_06_forward()
     assert seq.ids == ["12-cam2", "13-cam2", "14-cam2", "17-cam2"] and (seq.width, seq.height) == (1226, 370)
+    # The colour camera's K is P0's: the rectified cameras share their intrinsics.
+    calib = rs.read_kitti_calib(rs.data_dir() / "kitti-06-frames" / "calib.txt")
+    np.testing.assert_array_equal(seq.K[0], calib["P0"][:, :3])
     # Along a straight road every pose pair has its epipole ahead, and only the in-front test tells
     # the direction of travel; the stereo rig's sideways pose is the wrong one.
     rig = rs.relative_to_first(rs.kitti_06_stereo())
@@ -162,7 +165,9 @@ def test_temple_ring_steps_are_the_documented_ones():
     offsets = centres - centres.mean(axis=0)
     angles = [math.degrees(math.acos(np.clip(a @ b / np.linalg.norm(a) / np.linalg.norm(b), -1, 1)))
               for a, b in zip(offsets, np.roll(offsets, -1, axis=0))]
-    documented = {(34, 33): 5.1, (33, 32): 2.7, (42, 13): 4.4, (30, 1): 0.0, (1, 31): 4.8, (31, 2): 2.6,
+    # PROVENANCE.txt gives 5.1 and 2.7 degrees to 34->33 and 33->32; the cameras have them one step
+    # later (33->32, 32->47), and 34->33 is a regular step.
+    documented = {(33, 32): 5.1, (32, 47): 2.7, (42, 13): 4.4, (30, 1): 0.0, (1, 31): 4.8, (31, 2): 2.6,
                   (5, 41): 32.2, (41, 40): 7.2, (40, 6): 3.9, (12, 39): 10.8}
     for (a, b), angle in zip(zip(seq.ids, seq.ids[1:] + seq.ids[:1]), angles):
         expected = documented.get((a, b))
@@ -210,7 +215,8 @@ def test_pose_helpers():
 
 def test_tum_round_trip(tmp_path):
     rng = np.random.default_rng(7)
-    Rs = [random_rotation(rng) for _ in range(6)] + [np.diag([1.0, -1, -1]), np.diag([-1.0, -1, 1])]
+    Rs = [random_rotation(rng) for _ in range(6)] + [np.diag([1.0, -1, -1]), np.diag([-1.0, 1, -1]),
+                                                   np.diag([-1.0, -1, 1])]
     ts = [rng.normal(size=3) * 5 for _ in Rs]
     stamps = np.arange(len(Rs)) * 0.1 + 1e9
     path = tmp_path / "trajectory.txt"
