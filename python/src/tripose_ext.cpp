@@ -26,6 +26,7 @@
 #include "pipeline/posed_structure.hpp"
 #include "problem/view_set_builder.hpp"
 #include "support/error.hpp"
+#include "tracker_bindings.hpp"
 
 namespace nb = nanobind;
 
@@ -655,6 +656,8 @@ NB_MODULE(_tripose_ext, m)
             PyErr_SetString(e.code() == tripose::ErrorCode::Internal ? PyExc_RuntimeError : PyExc_ValueError, e.what());
         }
     });
+
+    bindTracker(m);
 
     m.def("estimate_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,

@@ -35,6 +35,8 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _tripose_ext as _ext
+from .tracking import (Features, FrameResult, FrameStatus, MatchOptions, RansacOptions, RefineOptions, Tracker,
+                       TrackerOptions)
 
 __all__ = [
     "estimate_pose_line_point",
@@ -48,6 +50,14 @@ __all__ = [
     "refine_pose_multiview",
     "adjust_poses_multiview",
     "triangulate_multiview",
+    "Tracker",
+    "TrackerOptions",
+    "RansacOptions",
+    "RefineOptions",
+    "MatchOptions",
+    "Features",
+    "FrameStatus",
+    "FrameResult",
 ]
 
 ArrayLike = Union[np.ndarray, Sequence[Any], None]

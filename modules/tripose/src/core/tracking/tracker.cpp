@@ -1,0 +1,346 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "tracker.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "../problem/view_set_builder.hpp"
+#include "../support/error.hpp"
+#include "window_registration.hpp"
+
+namespace tripose {
+
+namespace {
+
+double nowSeconds()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void checkCameraMatrix(const Eigen::Matrix3d& K, const char* name)
+{
+    if (!K.allFinite() || !(K(0, 0) > 0) || !(K(1, 1) > 0) || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 ||
+        K(2, 2) != 1)
+        fail(ErrorCode::BadArgument, "%s must be a camera matrix [fx s cx; 0 fy cy; 0 0 1] with fx, fy > 0", name);
+}
+
+//! The pose the caller gave, its rotation checked and made exact as every rotation argument is.
+CameraPose checkedPose(const CameraPose& pose)
+{
+    ArgumentMatrix R, t;
+    R.name = "R";
+    R.rows = R.cols = 3;
+    t.name = "t";
+    t.rows = 3;
+    t.cols = 1;
+    for (int i = 0; i < 9; ++i)
+        R.values.push_back(pose.R(i / 3, i % 3));
+    t.values.assign(pose.t.data(), pose.t.data() + 3);
+    CameraPose out;
+    out.R = readRotation(R);
+    out.t = readTranslation(t, false);
+    return out;
+}
+
+//! The pose of frame b relative to frame a.
+CameraPose relativePose(const CameraPose& a, const CameraPose& b)
+{
+    CameraPose out;
+    out.R = b.R * a.R.transpose();
+    out.t = b.t - out.R * a.t;
+    return out;
+}
+
+} // namespace
+
+Tracker::Tracker(const Eigen::Matrix3d& K, const std::vector<double>& distortion, const TrackerOptions& options)
+    : options_(options), K_(K)
+{
+    checkCameraMatrix(K, "K");
+    const size_t n = distortion.size();
+    if (!(n == 0 || n == 4 || n == 5 || n == 8 || n == 12 || n == 14))
+        fail(ErrorCode::BadArgument, "dist must hold 4, 5, 8, 12 or 14 coefficients (OpenCV's model), got %d", (int)n);
+    for (size_t i = 0; i < n; ++i)
+    {
+        if (!std::isfinite(distortion[i]))
+            fail(ErrorCode::BadArgument, "dist[%d] is not finite", (int)i);
+        distortion_.k[i] = distortion[i];
+        distorted_ = distorted_ || distortion[i] != 0;
+    }
+    checkTrackerOptions(options);
+}
+
+int Tracker::startFrame(const std::vector<Eigen::Vector2d>& points, const std::vector<Eigen::Vector4d>& segments,
+                        const CameraPose* pose, const Eigen::Matrix3d* K)
+{
+    const int index = numFrames();
+    if (K)
+        checkCameraMatrix(*K, "K");
+    for (size_t i = 0; i < points.size(); ++i)
+        if (!points[i].allFinite())
+            fail(ErrorCode::BadArgument, "points[%d] of frame %d is not finite", (int)i, index);
+    for (size_t i = 0; i < segments.size(); ++i)
+        if (!segments[i].allFinite())
+            fail(ErrorCode::BadArgument, "segments[%d] of frame %d is not finite", (int)i, index);
+    if (!pose && index < 2)
+        fail(ErrorCode::BadArgument, "pose: a monocular tracker needs the poses of its first two frames, which fix "
+             "the world frame and the scale; frame %d has none", index);
+    StoredFrame frame;
+    frame.K = K ? *K : K_;
+    frame.points = points;
+    frame.segments = segments;
+    if (distorted_)
+    {
+        distortion_.undistortPixels(frame.points, frame.K);
+        std::vector<Eigen::Vector2d> ends;
+        for (const Eigen::Vector4d& s : segments)
+        {
+            ends.emplace_back(s[0], s[1]);
+            ends.emplace_back(s[2], s[3]);
+        }
+        distortion_.undistortPixels(ends, frame.K);
+        for (size_t i = 0; i < segments.size(); ++i)
+            frame.segments[i] << ends[2 * i], ends[2 * i + 1];
+    }
+    if (pose)
+    {
+        frame.pose = checkedPose(*pose);
+        frame.status = FrameStatus::Given;
+        frame.keyframe = true;
+        if (index == 1 && !((frame.pose.centre() - store_.frames[0].pose.centre()).norm() >
+                            1e-12 * std::max(1.0, frame.pose.centre().norm())))
+            fail(ErrorCode::BadArgument, "pose: frames 0 and 1 have the same centre: no baseline fixes the scale");
+    }
+    frame.pointTrack.assign(points.size(), -1);
+    frame.lineTrack.assign(segments.size(), -1);
+    store_.frames.push_back(frame);
+    return index;
+}
+
+void Tracker::link(FeatureKind kind, int from, int to, const Matches& matches)
+{
+    for (const auto& m : matches)
+    {
+        const StoredFrame& source = store_.frames[from];
+        int track = (kind == FeatureKind::Point ? source.pointTrack : source.lineTrack)[m.first];
+        if (track < 0)
+        {
+            track = store_.newTrack(kind);
+            store_.observe(kind, track, from, m.first);
+        }
+        store_.observe(kind, track, to, m.second);
+    }
+}
+
+void Tracker::associateByMatching(int frame, const FrameFeatures& features)
+{
+    const StoredFrame& current = store_.frames[frame];
+    if (!recent_.empty() && recent_.back().first == frame - 1)
+    {
+        const int previous = frame - 1;
+        const StoredFrame& before = store_.frames[previous];
+        Matches points, segments;
+        int from = previous;
+        if (current.status == FrameStatus::Given && before.hasPose())
+        {
+            // Both poses known: matched under their epipolar geometry.
+            const Eigen::Matrix3d F =
+                fundamentalFromPose(before.K, current.K, relativePose(before.pose, current.pose));
+            const FrameFeatures& a = recent_.back().second;
+            if (frame == 1)
+                givenPairAgreement_ = epipolarAgreement(a, features, F, options_.matching);
+            points = matchPointsEpipolar(a, features, F, options_.matching);
+            segments = matchSegmentsEpipolar(a, features, F, options_.matching);
+        }
+        else
+        {
+            bool underGeometry = matchUnknownPose(recent_.back().second, features, options_.matching, points, segments);
+            // A frame that shares too few matches with the one before for their geometry (blurred,
+            // covered, of another scene) would end every track: the nearest earlier frame that does
+            // share enough takes its place.
+            for (auto it = recent_.rbegin() + 1; !underGeometry && it != recent_.rend(); ++it)
+            {
+                Matches earlierPoints, earlierSegments;
+                if (matchUnknownPose(it->second, features, options_.matching, earlierPoints, earlierSegments))
+                {
+                    points.swap(earlierPoints);
+                    segments.swap(earlierSegments);
+                    from = it->first;
+                    underGeometry = true;
+                }
+            }
+        }
+        link(FeatureKind::Point, from, frame, points);
+        link(FeatureKind::Line, from, frame, segments);
+    }
+}
+
+FrameResult Tracker::addFeatures(const FrameFeatures& features, const CameraPose* pose, const Eigen::Matrix3d* K)
+{
+    const double start = nowSeconds();
+    if (byIds_)
+        fail(ErrorCode::BadArgument, "features: this tracker was given linked observations; a tracker takes either "
+             "features or observations");
+    const int n = (int)features.points.size(), m = (int)features.segments.size();
+    if (features.pointDescriptors.rows != n)
+        fail(ErrorCode::BadSize, "point_descriptors must have one row per point: %d rows for %d points",
+             features.pointDescriptors.rows, n);
+    if (features.lineDescriptors.rows != m)
+        fail(ErrorCode::BadSize, "line_descriptors must have one row per segment: %d rows for %d segments",
+             features.lineDescriptors.rows, m);
+    for (const Descriptors* d : { &features.pointDescriptors, &features.lineDescriptors })
+        if (!d->binary)
+            for (float v : d->real)
+                if (!std::isfinite(v))
+                    fail(ErrorCode::BadArgument, "%s holds a value that is not finite",
+                         d == &features.pointDescriptors ? "point_descriptors" : "line_descriptors");
+    for (const auto& r : recent_)
+        for (int kind = 0; kind < 2; ++kind)
+        {
+            const Descriptors& a = kind == 0 ? r.second.pointDescriptors : r.second.lineDescriptors;
+            const Descriptors& b = kind == 0 ? features.pointDescriptors : features.lineDescriptors;
+            if (!a.empty() && !b.empty() && (a.binary != b.binary || a.cols != b.cols))
+                fail(ErrorCode::BadArgument, "%s: every frame's descriptors must be of one kind and length (%s of "
+                     "%d, got %s of %d)", kind == 0 ? "point_descriptors" : "line_descriptors",
+                     a.binary ? "bytes" : "values", a.cols, b.binary ? "bytes" : "values", b.cols);
+        }
+    byFeatures_ = true;
+    const int frame = startFrame(features.points, features.segments, pose, K);
+    FrameFeatures undistorted = features;
+    undistorted.points = store_.frames[frame].points;
+    undistorted.segments = store_.frames[frame].segments;
+    associateByMatching(frame, undistorted);
+    recent_.emplace_back(frame, std::move(undistorted));
+    while ((int)recent_.size() > options_.maxFrameGap)
+        recent_.pop_front();
+    return finishFrame(frame, start);
+}
+
+FrameResult Tracker::addObservations(const std::vector<Eigen::Vector2d>& points, const std::vector<int64_t>& pointIds,
+                                     const std::vector<Eigen::Vector4d>& segments, const std::vector<int64_t>& lineIds,
+                                     const CameraPose* pose, const Eigen::Matrix3d* K)
+{
+    const double start = nowSeconds();
+    if (byFeatures_)
+        fail(ErrorCode::BadArgument, "point_ids: this tracker was given features; a tracker takes either features or "
+             "observations");
+    if (pointIds.size() != points.size())
+        fail(ErrorCode::BadSize, "point_ids must hold one id per point: %d ids for %d points", (int)pointIds.size(),
+             (int)points.size());
+    if (lineIds.size() != segments.size())
+        fail(ErrorCode::BadSize, "line_ids must hold one id per segment: %d ids for %d segments", (int)lineIds.size(),
+             (int)segments.size());
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const std::vector<int64_t>& ids = kind == 0 ? pointIds : lineIds;
+        if (std::set<int64_t>(ids.begin(), ids.end()).size() != ids.size())
+            fail(ErrorCode::BadArgument, "%s: an id appears twice in one frame", kind == 0 ? "point_ids" : "line_ids");
+    }
+    byIds_ = true;
+    const int frame = startFrame(points, segments, pose, K);
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
+        const std::vector<int64_t>& ids = kind == 0 ? pointIds : lineIds;
+        std::map<int64_t, int>& idTrack = kind == 0 ? pointIdTrack_ : lineIdTrack_;
+        for (size_t i = 0; i < ids.size(); ++i)
+        {
+            auto it = idTrack.find(ids[i]);
+            const int track = it != idTrack.end() ? it->second : (idTrack[ids[i]] = store_.newTrack(k));
+            store_.observe(k, track, frame, (int)i);
+        }
+    }
+    pointIdsOfFrame_.push_back(pointIds);
+    lineIdsOfFrame_.push_back(lineIds);
+    return finishFrame(frame, start);
+}
+
+FrameResult Tracker::finishFrame(int frame, double startSeconds)
+{
+    StoredFrame& f = store_.frames[frame];
+    FrameResult result;
+    result.frame = frame;
+    if (f.status != FrameStatus::Given)
+    {
+        std::vector<int> window;
+        for (int j = frame - 1; j >= 0 && (int)window.size() < options_.window; --j)
+            if (store_.frames[j].keyframe)
+                window.insert(window.begin(), j);
+        result.knownViews = (int)window.size();
+        Registration r;
+        if (window.size() < 2)
+            r.reason = "fewer than two keyframes to register against";
+        else
+        {
+            try
+            {
+                r = registerAgainstWindow(store_, frame, window, options_);
+            }
+            catch (const Error& e)
+            {
+                // The window's own geometry can be degenerate (keyframes at one centre): the frame is
+                // lost, not the tracker.
+                if (e.code() == ErrorCode::Internal)
+                    throw;
+                r = Registration();
+                r.reason = e.what();
+            }
+        }
+        result.features = r.features;
+        result.inliers = r.inliers;
+        result.reason = r.reason;
+        if (r.registered)
+        {
+            f.status = FrameStatus::Registered;
+            f.pose = r.pose;
+            f.keyframe = r.keyframe;
+            for (int kind = 0; kind < 2; ++kind)
+            {
+                const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
+                for (int track : kind == 0 ? r.rejectedPoints : r.rejectedLines)
+                {
+                    const int row = store_.rowIn(k, track, frame);
+                    const int newTrack = store_.split(k, frame, row);
+                    // The caller's id now names the new track in the frames that follow.
+                    if (byIds_)
+                        (kind == 0 ? pointIdTrack_ : lineIdTrack_)[(kind == 0 ? pointIdsOfFrame_
+                                                                              : lineIdsOfFrame_)[frame][row]] = newTrack;
+                }
+            }
+            if (options_.localAdjustment)
+            {
+                std::vector<int> free, fixed;
+                for (int j : window)
+                    if (store_.frames[j].status == FrameStatus::Registered)
+                        free.push_back(j);
+                free.push_back(frame);
+                for (int j = 0; j < frame; ++j)
+                    if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
+                        fixed.push_back(j);
+                try
+                {
+                    adjustFrames(store_, free, fixed, options_);
+                }
+                catch (const Error& e)
+                {
+                    if (e.code() == ErrorCode::Internal)
+                        throw;
+                }
+            }
+        }
+    }
+    result.status = f.status;
+    result.pose = f.pose;
+    result.keyframe = f.keyframe;
+    result.pointTracks = f.pointTrack;
+    result.lineTracks = f.lineTrack;
+    result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
+    return result;
+}
+
+} // namespace tripose

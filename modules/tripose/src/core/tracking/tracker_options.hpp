@@ -1,0 +1,71 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_TRACKING_TRACKER_OPTIONS_HPP
+#define TRIPOSE_CORE_TRACKING_TRACKER_OPTIONS_HPP
+
+#include <string>
+#include <vector>
+
+#include "../geometry/camera.hpp"
+#include "../support/options.hpp"
+#include "epipolar_matching.hpp"
+
+namespace tripose {
+
+//! Options of the Tracker; every adapter binds these fields under its own names.
+struct TrackerOptions
+{
+    int window = 5;     //!< Keyframes a new frame is registered against (>= 2).
+    //! A frame is registered only when at least this many features agree with its pose: chance
+    //! matches give poses with a handful of inliers (doc/conventions.md, "Support").
+    int minInliers = 15;
+    //! A registered frame becomes a keyframe when the median angle its inlier structure subtends
+    //! between it and the window's last keyframe is at least this (deg; 0: every registered frame):
+    //! a camera that stands still or only turns adds no baseline.
+    double keyframeParallaxDeg = 0.1;
+    //! Before a registration, observations of the window that disagree with the window's poses by
+    //! more than the RANSAC threshold are dropped; after it, the features it rejects start new
+    //! tracks, so that a wrong link does not carry on into later windows.
+    bool checkTracks = true;
+    //! After each registration, the window's registered frames, the new one and their structure are
+    //! refined together (Huber loss at the RANSAC threshold) against the earlier keyframes, held fixed.
+    bool localAdjustment = false;
+    bool robust = true; //!< The robust multi-view estimator (else the linear one on every feature).
+    RansacOptions ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
+    MatchOptions matching; //!< Of the features of consecutive frames.
+    //! A frame that shares too few matches with the one before for their epipolar geometry is matched
+    //! to the nearest of the frames up to this many back that does.
+    int maxFrameGap = 3;
+};
+
+//! Checks @p options: Error(BadArgument) naming "<name>.<field>" for the first field out of range.
+void checkTrackerOptions(const TrackerOptions& options, const char* name = "options");
+
+enum class FrameStatus
+{
+    Given = 0,      //!< The pose came with the frame.
+    Registered = 1, //!< Registered against the window of keyframes.
+    Lost = 2,       //!< No pose: too few features shared with the window, or too few agree with a pose.
+};
+
+//! What the tracker made of one frame.
+struct FrameResult
+{
+    int frame = -1; //!< The frame's index in the order the tracker received them.
+    FrameStatus status = FrameStatus::Lost;
+    CameraPose pose;        //!< Meaningful unless lost.
+    int features = 0;       //!< Features seen by the frame and at least two window keyframes.
+    int inliers = 0;        //!< Of them, those that agree with the pose (robust); every one (linear).
+    int knownViews = 0;     //!< Window keyframes registered against.
+    bool keyframe = false;  //!< Later frames are registered against it.
+    double milliseconds = 0; //!< Matching and registration.
+    std::string reason;     //!< Why the frame is lost; empty otherwise.
+    //! Per point and per segment of the frame, in the order given: its track (-1: matched to none).
+    std::vector<int> pointTracks, lineTracks;
+};
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_TRACKING_TRACKER_OPTIONS_HPP

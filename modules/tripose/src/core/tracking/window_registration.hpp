@@ -1,0 +1,48 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_TRACKING_WINDOW_REGISTRATION_HPP
+#define TRIPOSE_CORE_TRACKING_WINDOW_REGISTRATION_HPP
+
+#include <string>
+#include <vector>
+
+#include "track_store.hpp"
+#include "tracker_options.hpp"
+
+namespace tripose {
+
+//! The registration of one frame against a window of posed frames.
+struct Registration
+{
+    bool registered = false;
+    CameraPose pose;
+    int features = 0, inliers = 0;
+    bool keyframe = false;
+    std::string reason; //!< Why it was not registered.
+    //! Tracks whose observation in the frame the estimate rejected (robust estimation only).
+    std::vector<int> rejectedPoints, rejectedLines;
+};
+
+/** Registers frame @p frame of @p store against the frames @p window (which have poses) with the
+multi-view estimator, on the tracks the frame sees with at least two window frames. With
+TrackerOptions::checkTracks, the window's observations that disagree with its poses are dropped
+first (feature by feature, the furthest while it exceeds the RANSAC threshold). Registered only with
+TrackerOptions::minInliers inliers; then a keyframe when its inlier structure, triangulated from
+the window, subtends TrackerOptions::keyframeParallaxDeg between it and the window's last frame.
+*/
+Registration registerAgainstWindow(const TrackStore& store, int frame, const std::vector<int>& window,
+                                   const TrackerOptions& options);
+
+/** Refines the poses of frames @p free and the structure of the tracks they see with at least one
+other frame of @p free or @p fixed, with @p fixed held (Huber loss at the RANSAC threshold). False,
+poses unchanged, when fewer than four features qualify or the refinement fails. @p fixed must hold
+two frames at distinct centres.
+*/
+bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
+                  const TrackerOptions& options);
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_TRACKING_WINDOW_REGISTRATION_HPP

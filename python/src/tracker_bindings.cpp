@@ -1,0 +1,337 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// The tracker and its options and results, bound as classes: the options' defaults are the core's
+// structs', declared once; python/tripose/tracking.py checks and converts the caller's arrays.
+
+#include "tracker_bindings.hpp"
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include "support/error.hpp"
+
+#include "tracking/tracker.hpp"
+
+namespace nb = nanobind;
+
+namespace {
+
+/** A C-contiguous array of the caller's as python/tripose/tracking.py passes it: its bytes and its
+shape (that layer has checked both). */
+struct Block
+{
+    const char* data;
+    size_t rows, cols;
+
+    Block(const nb::bytes& bytes, size_t rows, size_t cols, size_t itemSize)
+        : data(bytes.c_str()), rows(rows), cols(cols)
+    {
+        if (bytes.size() != rows * cols * itemSize)
+            throw nb::value_error("array bytes do not match their shape");
+    }
+    template <class T>
+    T at(size_t r, size_t c) const
+    {
+        T value;
+        std::memcpy(&value, data + (r * cols + c) * sizeof(T), sizeof(T));
+        return value;
+    }
+};
+
+nb::object array(const double* values, std::initializer_list<size_t> shape)
+{
+    size_t n = 1;
+    for (size_t s : shape)
+        n *= s;
+    double* data = new double[n];
+    std::memcpy(data, values, n * sizeof(double));
+    nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<double*>(p); });
+    return nb::cast(nb::ndarray<nb::numpy, double>(data, shape, owner));
+}
+
+nb::object intArray(const std::vector<int>& values)
+{
+    int64_t* data = new int64_t[values.size() ? values.size() : 1];
+    for (size_t i = 0; i < values.size(); ++i)
+        data[i] = values[i];
+    nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<int64_t*>(p); });
+    return nb::cast(nb::ndarray<nb::numpy, int64_t>(data, { values.size() }, owner));
+}
+
+nb::object rotation(const Eigen::Matrix3d& R)
+{
+    const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMajor = R;
+    return array(rowMajor.data(), { 3, 3 });
+}
+
+//! Float64 rows of width @p W.
+template <int W>
+std::vector<Eigen::Matrix<double, W, 1>> vectors(const nb::bytes& bytes, size_t rows)
+{
+    const Block block(bytes, rows, W, sizeof(double));
+    std::vector<Eigen::Matrix<double, W, 1>> out(rows);
+    for (size_t i = 0; i < rows; ++i)
+        for (int c = 0; c < W; ++c)
+            out[i][c] = block.at<double>(i, c);
+    return out;
+}
+
+//! Float32 rows, or uint8 rows when @p binary.
+tripose::Descriptors descriptors(const nb::bytes& bytes, size_t rows, size_t cols, bool binary)
+{
+    const Block block(bytes, rows, cols, binary ? 1 : sizeof(float));
+    tripose::Descriptors d;
+    d.rows = (int)rows;
+    d.cols = (int)cols;
+    d.binary = binary;
+    if (binary)
+        d.bits.assign(block.data, block.data + rows * cols);
+    else
+    {
+        d.real.resize(rows * cols);
+        std::memcpy(d.real.data(), block.data, rows * cols * sizeof(float));
+    }
+    return d;
+}
+
+//! A 3x3 float64 matrix.
+Eigen::Matrix3d matrix3(const nb::bytes& bytes)
+{
+    const Block block(bytes, 3, 3, sizeof(double));
+    Eigen::Matrix3d M;
+    for (int i = 0; i < 9; ++i)
+        M(i / 3, i % 3) = block.at<double>(i / 3, i % 3);
+    return M;
+}
+
+//! The optional pose (R 3x3, t 3) and camera matrix of a frame.
+struct FrameExtras
+{
+    bool hasPose = false, hasK = false;
+    tripose::CameraPose pose;
+    Eigen::Matrix3d K;
+
+    FrameExtras(const nb::handle R, const nb::handle t, const nb::handle K)
+    {
+        if (!R.is_none())
+        {
+            pose.R = matrix3(nb::cast<nb::bytes>(R));
+            const Block tv(nb::cast<nb::bytes>(t), 3, 1, sizeof(double));
+            for (int i = 0; i < 3; ++i)
+                pose.t[i] = tv.at<double>(i, 0);
+            hasPose = true;
+        }
+        if (!K.is_none())
+        {
+            this->K = matrix3(nb::cast<nb::bytes>(K));
+            hasK = true;
+        }
+    }
+    const tripose::CameraPose* posePtr() const { return hasPose ? &pose : nullptr; }
+    const Eigen::Matrix3d* KPtr() const { return hasK ? &K : nullptr; }
+};
+
+const char* statusName(tripose::FrameStatus status)
+{
+    switch (status)
+    {
+    case tripose::FrameStatus::Given: return "GIVEN";
+    case tripose::FrameStatus::Registered: return "REGISTERED";
+    default: return "LOST";
+    }
+}
+
+} // namespace
+
+void bindTracker(nb::module_& m)
+{
+    nb::class_<tripose::RefineOptions>(m, "RefineOptions",
+                                       "Options of the maximum-likelihood refinement (Levenberg-Marquardt).")
+        .def(nb::init<>())
+        .def_rw("max_iterations", &tripose::RefineOptions::maxIterations, "Levenberg-Marquardt steps, accepted or rejected (> 0).")
+        .def_prop_rw("loss",
+                     [](const tripose::RefineOptions& o) {
+                         return std::string(o.loss == tripose::Loss::Huber ? "huber"
+                                            : o.loss == tripose::Loss::Cauchy ? "cauchy" : "squared");
+                     },
+                     [](tripose::RefineOptions& o, const std::string& loss) {
+                         if (loss == "squared")
+                             o.loss = tripose::Loss::Squared;
+                         else if (loss == "huber")
+                             o.loss = tripose::Loss::Huber;
+                         else if (loss == "cauchy")
+                             o.loss = tripose::Loss::Cauchy;
+                         else
+                             throw nb::value_error(("loss must be 'squared', 'huber' or 'cauchy', got '" + loss + "'").c_str());
+                     },
+                     "The loss of each reprojection error: 'squared', 'huber' or 'cauchy'.")
+        .def_rw("loss_scale", &tripose::RefineOptions::lossScale, "Scale of the robust loss in pixels (> 0).")
+        .def_rw("tolerance", &tripose::RefineOptions::tolerance,
+                "Stop when an accepted step lowers the cost by less than this fraction (>= 0).")
+        .def("__repr__", [](const tripose::RefineOptions& o) {
+            return tripose::formatString("RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, tolerance=%g)",
+                                         o.maxIterations,
+                                         o.loss == tripose::Loss::Huber ? "huber" : o.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
+                                         o.lossScale, o.tolerance);
+        });
+
+    nb::class_<tripose::RansacOptions>(m, "RansacOptions", "Options of the robust estimators (LO-MSAC).")
+        .def(nb::init<>())
+        .def_rw("threshold", &tripose::RansacOptions::threshold, "Inlier threshold in pixels (> 0).")
+        .def_rw("confidence", &tripose::RansacOptions::confidence,
+                "Probability, in (0, 1), of drawing an all-inlier sample before stopping.")
+        .def_rw("max_iterations", &tripose::RansacOptions::maxIterations, "Most samples drawn (> 0).")
+        .def_rw("local_optimization", &tripose::RansacOptions::localOptimization,
+                "Re-estimate from the inliers of every new best model.")
+        .def_rw("refine", &tripose::RansacOptions::refine,
+                "Finish with the maximum-likelihood refinement over the inliers.")
+        .def_rw("refine_options", &tripose::RansacOptions::refineOptions, "Options of that refinement.")
+        .def_rw("seed", &tripose::RansacOptions::seed, "Seed of the sampler: the same seed gives the same result.")
+        .def("__repr__", [](const tripose::RansacOptions& o) {
+            return tripose::formatString("RansacOptions(threshold=%g, confidence=%g, max_iterations=%d, "
+                                         "local_optimization=%s, refine=%s, seed=%llu)",
+                                         o.threshold, o.confidence, o.maxIterations,
+                                         o.localOptimization ? "True" : "False", o.refine ? "True" : "False",
+                                         (unsigned long long)o.seed);
+        });
+
+    nb::class_<tripose::MatchOptions>(m, "MatchOptions", "How the features of two frames are matched.")
+        .def(nb::init<>())
+        .def_rw("epipolar_distance", &tripose::MatchOptions::epipolarDistance,
+                "Largest distance (px) of a point from the other's epipolar line; also the fundamental "
+                "matrix's inlier distance.")
+        .def_rw("min_band_overlap", &tripose::MatchOptions::minBandOverlap,
+                "Fraction of a segment that must overlap the epipolar band of the other.")
+        .def_rw("min_epipolar_angle_deg", &tripose::MatchOptions::minEpipolarAngleDeg,
+                "Segments closer than this to the epipolar lines are not matched under the geometry.")
+        .def_rw("point_ratio", &tripose::MatchOptions::pointRatio, "Ratio test of point descriptors.")
+        .def_rw("line_ratio", &tripose::MatchOptions::lineRatio, "Ratio test of line descriptors.")
+        .def_rw("max_line_distance", &tripose::MatchOptions::maxLineDistance,
+                "Binary line descriptors further apart than this many bits never match.")
+        .def_rw("min_fundamental_inliers", &tripose::MatchOptions::minFundamentalInliers,
+                "Matches that must agree with the fundamental matrix for two frames to be matched under it.")
+        .def("__repr__", [](const tripose::MatchOptions& o) {
+            return tripose::formatString("MatchOptions(epipolar_distance=%g, point_ratio=%g, line_ratio=%g, "
+                                         "min_fundamental_inliers=%d)",
+                                         o.epipolarDistance, o.pointRatio, o.lineRatio, o.minFundamentalInliers);
+        });
+
+    nb::class_<tripose::TrackerOptions>(m, "TrackerOptions", "Options of tripose.Tracker.")
+        .def(nb::init<>())
+        .def_rw("window", &tripose::TrackerOptions::window, "Keyframes a new frame is registered against (>= 2).")
+        .def_rw("min_inliers", &tripose::TrackerOptions::minInliers,
+                "A frame is registered only when at least this many features agree with its pose.")
+        .def_rw("keyframe_parallax_deg", &tripose::TrackerOptions::keyframeParallaxDeg,
+                "A registered frame is a keyframe when its structure's median parallax to the window's last "
+                "keyframe is at least this (degrees; 0: every registered frame).")
+        .def_rw("check_tracks", &tripose::TrackerOptions::checkTracks,
+                "Drop the window's observations that disagree with its poses, and split the tracks a "
+                "registration rejects.")
+        .def_rw("local_adjustment", &tripose::TrackerOptions::localAdjustment,
+                "Refine the window's registered frames and their structure after each registration.")
+        .def_rw("robust", &tripose::TrackerOptions::robust,
+                "Register with the robust estimator (else the linear one on every feature).")
+        .def_rw("ransac", &tripose::TrackerOptions::ransac, "RansacOptions of the registration.")
+        .def_rw("matching", &tripose::TrackerOptions::matching, "MatchOptions of consecutive frames.")
+        .def_rw("max_frame_gap", &tripose::TrackerOptions::maxFrameGap,
+                "How many frames back a frame is matched when the nearer ones share too few matches with it.")
+        .def("__repr__", [](const tripose::TrackerOptions& o) {
+            return tripose::formatString("TrackerOptions(window=%d, min_inliers=%d, keyframe_parallax_deg=%g, "
+                                         "check_tracks=%s, local_adjustment=%s, robust=%s, max_frame_gap=%d, ...)",
+                                         o.window, o.minInliers, o.keyframeParallaxDeg,
+                                         o.checkTracks ? "True" : "False", o.localAdjustment ? "True" : "False",
+                                         o.robust ? "True" : "False", o.maxFrameGap);
+        });
+
+    nb::enum_<tripose::FrameStatus>(m, "FrameStatus", "What the tracker made of a frame.")
+        .value("GIVEN", tripose::FrameStatus::Given, "The pose came with the frame.")
+        .value("REGISTERED", tripose::FrameStatus::Registered, "Registered against the window of keyframes.")
+        .value("LOST", tripose::FrameStatus::Lost, "No pose: too little support (see FrameResult.reason).");
+
+    nb::class_<tripose::FrameResult>(m, "FrameResult", "What the tracker made of one frame.")
+        .def_ro("frame", &tripose::FrameResult::frame, "The frame's index, in the order given.")
+        .def_ro("status", &tripose::FrameResult::status, "FrameStatus.GIVEN, REGISTERED or LOST.")
+        .def_prop_ro("R", [](const tripose::FrameResult& r) -> nb::object {
+            return r.status == tripose::FrameStatus::Lost ? nb::none() : rotation(r.pose.R);
+        }, "The rotation (3, 3) of x_cam = R @ X + t; None when lost.")
+        .def_prop_ro("t", [](const tripose::FrameResult& r) -> nb::object {
+            return r.status == tripose::FrameStatus::Lost ? nb::none() : array(r.pose.t.data(), { 3 });
+        }, "The translation (3,); None when lost.")
+        .def_ro("features", &tripose::FrameResult::features,
+                "Features the frame shares with at least two window keyframes.")
+        .def_ro("inliers", &tripose::FrameResult::inliers, "Of them, those that agree with the pose.")
+        .def_ro("known_views", &tripose::FrameResult::knownViews, "Window keyframes registered against.")
+        .def_ro("keyframe", &tripose::FrameResult::keyframe, "Later frames are registered against it.")
+        .def_ro("milliseconds", &tripose::FrameResult::milliseconds, "Time of matching and registration.")
+        .def_ro("reason", &tripose::FrameResult::reason, "Why the frame is lost; empty otherwise.")
+        .def_prop_ro("point_tracks", [](const tripose::FrameResult& r) { return intArray(r.pointTracks); },
+                     "Per point of the frame, its track (-1: none).")
+        .def_prop_ro("line_tracks", [](const tripose::FrameResult& r) { return intArray(r.lineTracks); },
+                     "Per segment of the frame, its track (-1: none).")
+        .def("__repr__", [](const tripose::FrameResult& r) {
+            std::string text = tripose::formatString("FrameResult(frame=%d, status=%s", r.frame, statusName(r.status));
+            if (r.status == tripose::FrameStatus::Lost)
+                return text + ", reason='" + r.reason + "')";
+            const Eigen::Vector3d c = r.pose.centre();
+            return text + tripose::formatString(", centre=[%.4g, %.4g, %.4g], inliers=%d/%d, keyframe=%s)", c[0], c[1],
+                                                c[2], r.inliers, r.features, r.keyframe ? "True" : "False");
+        });
+
+    nb::class_<tripose::Tracker>(m, "_Tracker")
+        .def("__init__",
+             [](tripose::Tracker* self, const nb::bytes& K, const std::vector<double>& dist,
+                const tripose::TrackerOptions& options) { new (self) tripose::Tracker(matrix3(K), dist, options); })
+        .def("add_features",
+             [](tripose::Tracker& self, const nb::bytes& points, size_t numPoints, const nb::bytes& pointDescriptors,
+                size_t pointWidth, bool pointBinary, const nb::bytes& segments, size_t numSegments,
+                const nb::bytes& lineDescriptors, size_t lineWidth, bool lineBinary, nb::handle R, nb::handle t,
+                nb::handle K) {
+                 tripose::FrameFeatures f;
+                 f.points = vectors<2>(points, numPoints);
+                 f.segments = vectors<4>(segments, numSegments);
+                 f.pointDescriptors = descriptors(pointDescriptors, numPoints, pointWidth, pointBinary);
+                 f.lineDescriptors = descriptors(lineDescriptors, numSegments, lineWidth, lineBinary);
+                 const FrameExtras extras(R, t, K);
+                 nb::gil_scoped_release release;
+                 return self.addFeatures(f, extras.posePtr(), extras.KPtr());
+             },
+             nb::arg("points"), nb::arg("num_points"), nb::arg("point_descriptors"), nb::arg("point_width"),
+             nb::arg("point_binary"), nb::arg("segments"), nb::arg("num_segments"), nb::arg("line_descriptors"),
+             nb::arg("line_width"), nb::arg("line_binary"), nb::arg("R").none(), nb::arg("t").none(),
+             nb::arg("K").none())
+        .def("add_observations",
+             [](tripose::Tracker& self, const nb::bytes& points, const std::vector<int64_t>& pi,
+                const nb::bytes& segments, const std::vector<int64_t>& li, nb::handle R, nb::handle t, nb::handle K) {
+                 const std::vector<Eigen::Vector2d> p = vectors<2>(points, pi.size());
+                 const std::vector<Eigen::Vector4d> s = vectors<4>(segments, li.size());
+                 const FrameExtras extras(R, t, K);
+                 nb::gil_scoped_release release;
+                 return self.addObservations(p, pi, s, li, extras.posePtr(), extras.KPtr());
+             },
+             nb::arg("points"), nb::arg("point_ids"), nb::arg("segments"), nb::arg("line_ids"), nb::arg("R").none(),
+             nb::arg("t").none(), nb::arg("K").none())
+        .def_prop_ro("num_frames", &tripose::Tracker::numFrames)
+        .def("pose", [](const tripose::Tracker& self, int frame) -> nb::object {
+            if (frame < 0 || frame >= self.numFrames())
+                throw nb::index_error(("frame " + std::to_string(frame) + " is not one of the " +
+                                       std::to_string(self.numFrames()) + " frames tracked").c_str());
+            const tripose::StoredFrame& f = self.frame(frame);
+            if (!f.hasPose())
+                return nb::none();
+            return nb::make_tuple(rotation(f.pose.R), array(f.pose.t.data(), { 3 }));
+        })
+        .def("status", [](const tripose::Tracker& self, int frame) { return self.frame(frame).status; })
+        .def("keyframe", [](const tripose::Tracker& self, int frame) { return self.frame(frame).keyframe; })
+        .def_prop_ro("options", &tripose::Tracker::options)
+        .def_prop_ro("given_pair_agreement", [](const tripose::Tracker& self) {
+            return nb::make_tuple(self.givenPairAgreement().matches, self.givenPairAgreement().agreeing);
+        });
+}

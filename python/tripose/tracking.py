@@ -1,0 +1,196 @@
+"""Tracking a camera frame by frame: tripose.Tracker, its options and its results.
+
+A monocular tracker is built from a camera (K, optional distortion) and TrackerOptions, and fed one
+frame at a time: features (points and segments with descriptors, from tripose.images or any
+detector), or observations of tracks the caller already linked. The first two frames need their
+poses (they fix the world frame and the scale); every later frame is registered against a window of
+keyframes and returns a FrameResult.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Mapping, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _tripose_ext as _ext
+
+TrackerOptions = _ext.TrackerOptions
+RansacOptions = _ext.RansacOptions
+RefineOptions = _ext.RefineOptions
+MatchOptions = _ext.MatchOptions
+FrameStatus = _ext.FrameStatus
+FrameResult = _ext.FrameResult
+
+__all__ = ["Features", "Tracker", "TrackerOptions", "RansacOptions", "RefineOptions", "MatchOptions",
+           "FrameStatus", "FrameResult"]
+
+
+def _rows(value: Any, name: str, width: int) -> np.ndarray:
+    """(N, width) float64, C-contiguous; None or empty: (0, width)."""
+    if value is None:
+        return np.zeros((0, width))
+    try:
+        a = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name} must be an array of numbers: {e}") from None
+    if a.size == 0:
+        return np.zeros((0, width))
+    if a.ndim != 2 or a.shape[1] != width:
+        raise ValueError(f"{name} must have shape (N, {width}), got {a.shape}")
+    return np.ascontiguousarray(a)
+
+
+def _descriptors(value: Any, name: str, rows: int) -> np.ndarray:
+    """float32 rows (L2) or uint8 rows (Hamming), one per feature."""
+    if value is None:
+        if rows:
+            raise ValueError(f"{name} is missing: one descriptor row per feature is needed")
+        return np.zeros((0, 1), np.float32)
+    a = np.asarray(value)
+    if a.dtype == np.uint8:
+        out = np.ascontiguousarray(a)
+    elif np.issubdtype(a.dtype, np.floating):
+        out = np.ascontiguousarray(a, dtype=np.float32)
+    else:
+        raise TypeError(f"{name} must be float (L2 distance) or uint8 (Hamming distance), got {a.dtype}")
+    if a.size == 0 and rows == 0:
+        return out.reshape(0, out.shape[-1] if out.ndim == 2 and out.shape[-1] else 1)
+    if out.ndim != 2 or out.shape[0] != rows:
+        raise ValueError(f"{name} must have shape ({rows}, D), one row per feature, got {a.shape}")
+    return out
+
+
+@dataclass
+class Features:
+    """What a detector found in one image: points (N, 2) and segments (M, 4: x0 y0 x1 y1) in
+    pixels, each with a descriptor row (float: L2 distance, such as SIFT; uint8: Hamming distance,
+    such as ORB, AKAZE or LBD). Segments of a front end that orients them by their edge's polarity
+    are matched with that test."""
+
+    points: Any = None
+    point_descriptors: Any = None
+    segments: Any = None
+    line_descriptors: Any = None
+
+
+FeaturesLike = Union[Features, Mapping[str, Any], None]
+
+
+def _pose(R: Any, t: Any) -> Tuple[Optional[np.ndarray], Optional[np.ndarray]]:
+    if R is None and t is None:
+        return None, None
+    if R is None or t is None:
+        raise ValueError("R and t must be given together (the frame's pose), or neither")
+    R = np.asarray(R, dtype=np.float64)
+    if R.shape != (3, 3):
+        raise ValueError(f"R must have shape (3, 3), got {R.shape}")
+    t = np.asarray(t, dtype=np.float64).reshape(-1)
+    if t.shape != (3,):
+        raise ValueError(f"t must hold 3 elements, got {t.size}")
+    return np.ascontiguousarray(R), np.ascontiguousarray(t.reshape(3, 1))
+
+
+def _pose_bytes(R: Optional[np.ndarray], t: Optional[np.ndarray]) -> Tuple[Optional[bytes], Optional[bytes]]:
+    return (None, None) if R is None else (R.tobytes(), t.tobytes())
+
+
+def _camera(K: Any, name: str = "K") -> np.ndarray:
+    K = np.asarray(K, dtype=np.float64)
+    if K.shape != (3, 3):
+        raise ValueError(f"{name} must have shape (3, 3), got {K.shape}")
+    return np.ascontiguousarray(K)
+
+
+class Tracker:
+    """A monocular camera tracked frame by frame from points and line segments.
+
+    Tracker(K, dist=None, options=None): K the (3, 3) camera matrix, dist OpenCV's distortion
+    coefficients (None: none; the features are undistorted with them), options a TrackerOptions.
+
+    Each call of track() (features) or track_observations() (linked observations) takes the next
+    frame and returns its FrameResult: status (FrameStatus.GIVEN, REGISTERED or LOST), R and t
+    (x_cam = R @ X + t; None when lost), features and inliers, keyframe, and, per feature of the
+    frame, its track. The first two frames need R and t; a later frame may have them too.
+    Bad input raises ValueError or TypeError naming the argument; a frame with too little support
+    is LOST (FrameResult.reason says why), never given a wrong pose.
+    """
+
+    def __init__(self, K: Any, dist: Any = None, options: Optional[TrackerOptions] = None):
+        if options is None:
+            options = TrackerOptions()
+        if not isinstance(options, TrackerOptions):
+            raise TypeError(f"options must be a tripose.TrackerOptions, got {type(options).__name__}")
+        coefficients = [] if dist is None else [float(v) for v in np.asarray(dist, dtype=np.float64).ravel()]
+        self._tracker = _ext._Tracker(_camera(K).tobytes(), coefficients, options)
+
+    def track(self, features: FeaturesLike, R: Any = None, t: Any = None, K: Any = None) -> FrameResult:
+        """The next frame from its features (a Features, or a dict with the same keys such as
+        tripose.images.extract_features returns; None for a frame that could not be read, which is
+        then lost). R, t: the frame's pose when known. K: this frame's camera matrix, when it differs."""
+        if features is None:
+            features = Features()
+        if isinstance(features, Mapping):
+            unknown = set(features) - {"points", "point_descriptors", "segments", "line_descriptors"}
+            if unknown:
+                raise ValueError(f"features has unknown keys {sorted(unknown)}: expected points, point_descriptors, "
+                                 "segments, line_descriptors")
+            features = Features(**features)
+        if not isinstance(features, Features):
+            raise TypeError(f"features must be a tripose.Features or a dict, got {type(features).__name__}")
+        points = _rows(features.points, "points", 2)
+        segments = _rows(features.segments, "segments", 4)
+        point_descriptors = _descriptors(features.point_descriptors, "point_descriptors", len(points))
+        line_descriptors = _descriptors(features.line_descriptors, "line_descriptors", len(segments))
+        R, t = _pose(R, t)
+        return self._tracker.add_features(points.tobytes(), len(points), point_descriptors.tobytes(),
+                                          point_descriptors.shape[1], bool(point_descriptors.dtype == np.uint8),
+                                          segments.tobytes(), len(segments), line_descriptors.tobytes(),
+                                          line_descriptors.shape[1], bool(line_descriptors.dtype == np.uint8),
+                                          *_pose_bytes(R, t), None if K is None else _camera(K).tobytes())
+
+    def track_observations(self, points: Any, point_ids: Any, segments: Any = None, line_ids: Any = None,
+                           R: Any = None, t: Any = None, K: Any = None) -> FrameResult:
+        """The next frame from observations of tracks the caller linked: points (N, 2) with
+        point_ids (N integers), segments (M, 4) with line_ids (M integers); an id names the same
+        feature in every frame."""
+        points = _rows(points, "points", 2)
+        segments = _rows(segments, "segments", 4)
+        ids = []
+        for value, name, n in ((point_ids, "point_ids", len(points)), (line_ids, "line_ids", len(segments))):
+            a = np.zeros(0, np.int64) if value is None else np.asarray(value)
+            if a.size and not np.issubdtype(a.dtype, np.integer):
+                raise TypeError(f"{name} must be integers, got {a.dtype}")
+            a = np.ascontiguousarray(a.reshape(-1), dtype=np.int64)
+            if len(a) != n:
+                raise ValueError(f"{name} must hold one id per feature: {len(a)} ids for {n} features")
+            ids.append(a)
+        R, t = _pose(R, t)
+        return self._tracker.add_observations(points.tobytes(), ids[0].tolist(), segments.tobytes(), ids[1].tolist(),
+                                              *_pose_bytes(R, t), None if K is None else _camera(K).tobytes())
+
+    @property
+    def num_frames(self) -> int:
+        """Frames given so far."""
+        return self._tracker.num_frames
+
+    def pose(self, frame: int) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+        """The current (R, t) of frame `frame` (a local adjustment may have moved it since its
+        result); None when the frame is lost."""
+        return self._tracker.pose(int(frame))
+
+    def trajectory(self):
+        """Every frame's current pose, in order: a list of (R, t), None for a lost frame."""
+        return [self._tracker.pose(k) for k in range(self.num_frames)]
+
+    @property
+    def options(self) -> TrackerOptions:
+        return self._tracker.options
+
+    @property
+    def given_pair_agreement(self) -> Tuple[int, int]:
+        """(matches, agreeing): of the points of frames 0 and 1 matched by descriptor alone, how many
+        lie on their epipolar lines under the given poses. Under 30 % of 20 or more says the images
+        are not in the poses' order or the calibration is wrong."""
+        return self._tracker.given_pair_agreement
