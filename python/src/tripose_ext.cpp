@@ -120,7 +120,6 @@ public:
             n *= s;
         return n;
     }
-    bool singlePrecision() const { return single_; }
     //! Element (r, c) of a two-dimensional array.
     double at(size_t r, size_t c) const { return value((int64_t)r * strideBytes_[0] + (int64_t)c * strideBytes_[1]); }
     //! Element @p i in row-major order, any number of dimensions.
@@ -168,7 +167,6 @@ tripose::ArgumentMatrix copyMatrix(const ArrayView& a, const std::string& name, 
     m.name = name;
     m.rows = rows;
     m.cols = cols;
-    m.singlePrecision = a.singlePrecision();
     m.values.resize((size_t)rows * cols);
     double* out = m.values.data();
     if (a.ndim() == 2)

@@ -136,6 +136,7 @@ SHARED_CASES = {
     # The known pose of view 2.
     "R12_not_a_rotation": ("R12", ValueError, dict(R12=SCENE.R12 * 1.1)),
     "R12_reflection": ("R12", ValueError, dict(R12=-SCENE.R12)),
+    "R12_off_by_1e-3": ("R12", ValueError, dict(R12=edited(SCENE.R12, (0, 1), SCENE.R12[0, 1] + 1e-3))),
     "R12_nan": ("R12", ValueError, dict(R12=edited(SCENE.R12, (0, 1), NAN))),
     "t12_zero": ("t12", ValueError, dict(t12=np.zeros(3))),
     "t12_inf": ("t12", ValueError, dict(t12=edited(SCENE.t12, 2, -INF))),
@@ -194,6 +195,7 @@ REFINE_CASES = [("max_iterations", dict(max_iterations=-1)), ("max_iterations", 
                 ("loss_scale", dict(loss_scale=INF)), ("tolerance", dict(tolerance=-1e-3)),
                 ("tolerance", dict(tolerance=NAN)),
                 ("R", dict(R=2.0 * SCENE.R)), ("R", dict(R=edited(SCENE.R, (2, 2), NAN))), ("R", dict(R=np.eye(2))),
+                ("R", dict(R=edited(SCENE.R, (1, 2), SCENE.R[1, 2] + 1e-3))),
                 ("t", dict(t=np.ones(2))), ("t", dict(t=edited(SCENE.t, 0, INF)))]
 
 
@@ -284,6 +286,8 @@ MULTIVIEW_CASES = {
     "one_known_view": ("Rs", ValueError, dict(Rs=MULTI.Rs[:1], ts=MULTI.ts[:1], points=[MULTI.points[0], MULTI.points[3]],
                                              lines=[MULTI.lines[0], MULTI.lines[3]])),
     "Rs_element_not_a_rotation": ("Rs[0]", ValueError, dict(Rs=[MULTI.Rs[0] * 1.1] + MULTI.Rs[1:])),
+    "Rs_element_off_by_1e-3": ("Rs[1]", ValueError, dict(Rs=[MULTI.Rs[0], edited(MULTI.Rs[1], (2, 0), MULTI.Rs[1][2, 0]
+                                                                                  + 1e-3), MULTI.Rs[2]])),
     "ts_element_wrong_size": ("ts[2]", ValueError, dict(ts=MULTI.ts[:2] + [np.ones(2)])),
     "ts_element_int": ("ts[1]", TypeError, dict(ts=[MULTI.ts[0], np.array([1, 2, 3]), MULTI.ts[2]])),
     "points_element_wrong_width": ("points[1]", ValueError, dict(points=[MULTI.points[0], np.zeros((6, 3))] +
@@ -369,8 +373,8 @@ def assert_same_candidates(a, b):
 
 def test_float32_equals_float64_of_the_same_values():
     args, s = noisy_args()
-    # R12 is kept in float64: rounded to float32 it is no longer a rotation to 1e-6 (float32 input
-    # is allowed 1e-4), and both are projected onto SO(3), which changes its values.
+    # R12 is kept in float64: rounded to float32 it is no longer a rotation, and its nearest
+    # rotation differs from the float64 one in the last digits.
     values = {k: (float32_exact(v) if k != "R12" else v) for k, v in args.items()}
     reference = tripose.estimate_pose_line_point(**values)
     single = {k: (v.astype(np.float32) if k != "R12" else v) for k, v in values.items()}
@@ -384,6 +388,32 @@ def test_float32_equals_float64_of_the_same_values():
 def test_float32_rotation_within_float32_rounding_is_accepted():
     args, s = noisy_args()
     tripose.estimate_pose_line_point(**dict(args, R12=args["R12"].astype(np.float32)))
+
+
+def six_digits(R):
+    """R with every element rounded to 6 significant digits, as a camera file prints it."""
+    R = np.asarray(R, dtype=np.float64)
+    return np.array([float(f"{v:.6g}") for v in R.ravel()]).reshape(R.shape)
+
+
+def rotation_angle(A, B):
+    """The angle (radians) of A B^T, from the chord |A - B| = 2 sqrt(2) sin(angle / 2)."""
+    return 2.0 * np.arcsin(min(1.0, np.linalg.norm(A - B) / (2.0 * np.sqrt(2.0))))
+
+
+def test_rotations_rounded_to_six_digits_give_the_pose_of_the_exact_ones():
+    # A rotation printed with 6 digits is a rotation: each function reads its nearest one.
+    R12 = six_digits(SCENE.R12)
+    assert np.linalg.norm(R12.T @ R12 - np.eye(3)) > 1e-6
+    exact, rounded = three_view_args(), three_view_args(R12=R12)
+    assert rotation_angle(linear(**rounded)[0][0], linear(**exact)[0][0]) < 1e-5
+    assert rotation_angle(ransac(**rounded)["R"], ransac(**exact)["R"]) < 1e-5
+    assert rotation_angle(refine(**rounded, R=six_digits(SCENE.R))["R"], refine(**exact)["R"]) < 1e-5
+    stereo = tripose.estimate_pose_line_point_stereo
+    assert rotation_angle(stereo(**stereo_args(R12=six_digits(STEREO.R12)))[0][0], stereo(**stereo_args())[0][0]) < 1e-5
+    multiview = tripose.estimate_pose_multiview
+    assert rotation_angle(multiview(**multiview_args(Rs=[six_digits(R) for R in MULTI.Rs]))[0][0],
+                          multiview(**multiview_args())[0][0]) < 1e-5
 
 
 def layouts(a):

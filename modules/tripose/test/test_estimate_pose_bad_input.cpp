@@ -192,6 +192,70 @@ TEST_F(Tripose_BadInput, homogeneous_line_with_zero_normal)
 
 // The known pose of view 2.
 TEST_F(Tripose_BadInput, R12_not_a_rotation) { call.R12 = call.R12 * 1.1; expectRejected(call, "R12"); }
+
+//! @p R with every element rounded to 6 significant digits, as a camera file prints it.
+Mat roundedToSixDigits(const Mat& R)
+{
+    Mat out(R.size(), CV_64F);
+    for (int i = 0; i < (int)R.total(); ++i)
+        out.at<double>(i) = std::stod(cv::format("%.6g", R.at<double>(i)));
+    return out;
+}
+
+double orthogonality(const Mat& R)
+{
+    return cv::norm(R.t() * R, Mat::eye(3, 3, CV_64F), NORM_L2);
+}
+
+// A rotation printed with 6 digits is a rotation: each entry point takes its nearest one and gives
+// the pose of the exact rotation.
+TEST_F(Tripose_BadInput, R12_rounded_to_six_digits_gives_the_pose_of_the_exact_one)
+{
+    const Mat exact = call.R12.clone();
+    Call rounded = call;
+    rounded.R12 = roundedToSixDigits(exact);
+    rounded.R0 = roundedToSixDigits(call.R0);
+    ASSERT_GT(orthogonality(rounded.R12), 1e-6); // far more than rounding to double precision leaves
+    const double maxDeg = 1e-5 * 180.0 / CV_PI;
+
+    Mat R, t, Rr, tr;
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(call.p1, call.p2, call.p3, call.l1, call.l2, call.l3, call.K,
+                                                 noArray(), exact, call.t12, R, t), 0);
+    ASSERT_GT(cv::tripose::estimatePoseLinePoint(rounded.p1, rounded.p2, rounded.p3, rounded.l1, rounded.l2,
+                                                 rounded.l3, rounded.K, noArray(), rounded.R12, rounded.t12, Rr, tr), 0);
+    EXPECT_LT(poseError(Rr, tr, R, t).rotationDeg, maxDeg);
+
+    ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(call.p1, call.p2, call.p3, call.l1, call.l2, call.l3, call.K,
+                                                       noArray(), exact, call.t12, R, t, call.ransac), 0);
+    ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(rounded.p1, rounded.p2, rounded.p3, rounded.l1, rounded.l2,
+                                                       rounded.l3, rounded.K, noArray(), rounded.R12, rounded.t12, Rr,
+                                                       tr, rounded.ransac), 0);
+    EXPECT_LT(poseError(Rr, tr, R, t).rotationDeg, maxDeg);
+
+    // The refinement from a rounded initial R as well.
+    R = call.R0.clone();
+    t = call.t0.clone();
+    Rr = rounded.R0.clone();
+    tr = rounded.t0.clone();
+    cv::tripose::refinePoseLinePoint(call.p1, call.p2, call.p3, call.l1, call.l2, call.l3, call.K, noArray(), exact,
+                                     call.t12, R, t);
+    cv::tripose::refinePoseLinePoint(rounded.p1, rounded.p2, rounded.p3, rounded.l1, rounded.l2, rounded.l3,
+                                     rounded.K, noArray(), rounded.R12, rounded.t12, Rr, tr);
+    EXPECT_LT(poseError(Rr, tr, R, t).rotationDeg, maxDeg);
+}
+
+// Further off than rounding (1e-3 in one element) is not a rotation.
+TEST_F(Tripose_BadInput, R12_off_by_1e3_is_rejected)
+{
+    call.R12.at<double>(0, 1) += 1e-3;
+    expectRejected(call, "R12");
+}
+TEST_F(Tripose_BadInput, refine_initial_R_off_by_1e3_is_rejected)
+{
+    call.R0.at<double>(1, 2) += 1e-3;
+    expectRejectedBy(REFINE, call, "R");
+}
+
 TEST_F(Tripose_BadInput, R12_reflection) { call.R12 = -call.R12; expectRejected(call, "R12"); }
 TEST_F(Tripose_BadInput, R12_wrong_shape) { call.R12 = Mat::eye(2, 2, CV_64F); expectRejected(call, "R12"); }
 TEST_F(Tripose_BadInput, R12_integer_type) { call.R12 = Mat::eye(3, 3, CV_32S); expectRejected(call, "R12"); }

@@ -28,7 +28,6 @@ core::ArgumentMatrix copyValues(const Mat& m, const std::string& name, int rows,
     out.name = name;
     out.rows = rows;
     out.cols = cols;
-    out.singlePrecision = m.depth() == CV_32F;
     out.values.resize((size_t)rows * cols);
     const int width = m.cols * m.channels();
     double* dst = out.values.data();

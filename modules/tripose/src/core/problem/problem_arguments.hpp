@@ -19,7 +19,6 @@ struct ArgumentMatrix
     std::string name;
     int rows = 0, cols = 0;
     std::vector<double> values;
-    bool singlePrecision = false; //!< The caller's values were single precision (tolerances follow).
 
     bool empty() const { return rows == 0 || cols == 0; }
     int size() const { return rows * cols; }

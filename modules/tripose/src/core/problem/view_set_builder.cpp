@@ -18,6 +18,9 @@ namespace tripose {
 
 namespace {
 
+//! Largest |R^T R - I| (Frobenius) of an accepted rotation: a matrix printed with 4-6 significant digits.
+constexpr double kRotationTolerance = 1e-4;
+
 bool allFinite(const std::vector<double>& values)
 {
     for (double v : values)
@@ -397,12 +400,11 @@ Eigen::Matrix3d readRotation(const ArgumentMatrix& m)
         R = rotationFromVector(Eigen::Vector3d(m.values[0], m.values[1], m.values[2]));
     else
         R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(m.values.data());
-    const double tolerance = m.singlePrecision ? 1e-4 : 1e-6;
     const double orthogonality = (R.transpose() * R - Eigen::Matrix3d::Identity()).norm();
-    if (!(orthogonality < tolerance) || R.determinant() < 0)
+    if (!(orthogonality <= kRotationTolerance) || !(R.determinant() > 0))
         fail(ErrorCode::BadArgument, "%s is not a rotation: |R^T R - I| = %g, det = %g", m.name.c_str(), orthogonality,
              R.determinant());
-    // Remove rounding so that later algebra sees an exact rotation (det > 0 was checked).
+    // The nearest rotation (the SVD's U V^T; det > 0 was checked) replaces the rounded one.
     return nearestRotation(R);
 }
 

@@ -65,7 +65,7 @@ ViewSet buildPosedViewSet(const ProblemArguments& arguments, const std::vector<A
                           const std::vector<ArgumentMatrix>& ts);
 
 /** A rotation given as a 3x3 matrix or a 3-element rotation vector (axis times angle), checked
-(finite, orthonormal within the input precision, det +1) and returned as the nearest exact rotation.
+(finite, |R^T R - I| <= 1e-4, det > 0) and returned as the nearest exact rotation.
 */
 Eigen::Matrix3d readRotation(const ArgumentMatrix& rotation);
 
