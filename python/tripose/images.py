@@ -5,7 +5,8 @@
   stretched from their lowest to their highest value onto 0-255.
 * extract_features(image, K, dist, options): SIFT points with their descriptors and EDLines segments
   fitted to their edges and oriented with the brighter side on their right, with LBD descriptors;
-  positions in the image's own pixels, undistorted when dist is given.
+  positions in the image's own pixels, undistorted when dist is given (not for tripose.Tracker,
+  which undistorts the features with its own dist).
 * open_frames(source): (timestamp, name, image) of a folder of images, a list file or a video.
 
 It needs OpenCV with its contrib modules (ximgproc, line_descriptor): pip install tripose[images].
@@ -322,7 +323,11 @@ def extract_features(image, K, dist=None, options: Optional[FeatureOptions] = No
     Images larger than options.max_image_size are detected in a reduced copy; positions are in the
     image's own pixels either way. With dist (OpenCV's distortion coefficients), positions are
     undistorted with K (cv2.undistortPoints with new camera matrix K): they are those of an ideal
-    pinhole camera K. Kinds not asked for (options.kinds) come back empty."""
+    pinhole camera K. Kinds not asked for (options.kinds) come back empty.
+
+    For tripose.Tracker, call it without dist: the tracker undistorts the features it is given
+    with its own dist (tripose.Tracker(K, dist)), so features undistorted here would be undistorted
+    twice."""
     cv2 = _cv2()
     options = FeatureOptions() if options is None else options
     if not isinstance(options, FeatureOptions):

@@ -1,0 +1,500 @@
+"""tripose-track: the trajectory of a calibrated camera through a sequence of images.
+
+    tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
+                  --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
+                  [--threshold PX] [--local-adjustment] [--max-image-size PX]
+
+The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
+file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
+segments with LBD), given to tripose.Tracker with the calibration's K and dist (the tracker
+undistorts them).
+
+calib.yml (OpenCV FileStorage YAML, JSON or XML) holds K (3x3), optionally dist (OpenCV's
+distortion coefficients), and the pose of frame 1 relative to frame 0 as R12 (3x3 rotation or
+rotation vector) and t12 (x_1 = R12 x_0 + t12); frame 0 is then the world's origin and |t12| its
+unit of length. Instead of R12 and t12, --poses gives a TUM trajectory (timestamp tx ty tz qx qy qz
+qw per line: the camera's position and orientation in the world) whose lines are the poses of the
+first frames, in order (at least two; its timestamps are not used); --poses takes precedence.
+
+The output is a TUM trajectory of every frame with a pose (lost frames are left out), stamped with
+the frames' timestamps; --yaml writes per frame its status (0 given, 1 registered, 2 lost), keyframe,
+features, inliers, R and t (x_cam = R X + t; absent for a lost frame) and the reason it is lost.
+
+Pixel tolerances (--threshold, default 2 px, and the matching's epipolar distance) are those of
+features detected at full size: when the images are detected in a reduced copy (--max-image-size),
+they grow by the reduction factor, as the features are that much less precise in the images' pixels.
+
+A frame that cannot be read or decoded is reported on stderr and lost; tracking goes on. A source,
+calibration or pose file that cannot be used, an image whose size contradicts the calibration, or an
+output that cannot be written ends the program with exit status 1 before anything is written: the
+outputs are written only at the end, each through a temporary file renamed onto it.
+
+Also run as `python -m tripose.track_cli`.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import tempfile
+from pathlib import Path
+from typing import List, Optional, Sequence, Tuple
+
+import numpy as np
+
+PROGRAM = "tripose-track"
+
+# A rotation read from a file is accepted when R R^T is this close to the identity (printed rotations
+# carry a few digits less than double precision).
+_ROTATION_TOLERANCE = 1e-6
+
+# The given pair's check (Tracker.given_pair_agreement): with at least this many matches, fewer than
+# this fraction on their epipolar lines means images out of the poses' order or a wrong calibration.
+_AGREEMENT_MIN_MATCHES = 20
+_AGREEMENT_MIN_FRACTION = 0.3
+
+STATUS_CODES = {"GIVEN": 0, "REGISTERED": 1, "LOST": 2}
+
+
+class InputError(Exception):
+    """Input the program cannot work with: the message names the option, file, key or frame."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse whose usage errors exit with status 1, as every other bad input of the program."""
+
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: error: {message}\n")
+
+
+def _whole_number(minimum):
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected a whole number >= {minimum}, got {text!r}") from None
+        if value < minimum:
+            raise argparse.ArgumentTypeError(f"expected a whole number >= {minimum}, got {value}")
+        return value
+    return parse
+
+
+def _positive_number(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of pixels > 0, got {text!r}") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"expected a finite number of pixels > 0, got {text!r}")
+    return value
+
+
+def _parser():
+    p = _Parser(prog=PROGRAM, description="The trajectory of a calibrated camera through a sequence of images, "
+                                          "from their points and line segments (tripose.Tracker).")
+    p.add_argument("--images", required=True, help="a folder of images, a video, or a text file listing images")
+    p.add_argument("--calib", required=True, type=Path,
+                   help="OpenCV YAML with K, optional dist, and R12, t12 (frame 1's pose relative to frame 0)")
+    p.add_argument("--poses", type=Path, help="TUM trajectory whose lines are the poses of the first frames (>= 2); "
+                                              "replaces R12, t12")
+    p.add_argument("--output", required=True, type=Path, help="the TUM trajectory written (frames with a pose)")
+    p.add_argument("--yaml", type=Path, help="also write every frame's result to this YAML file")
+    p.add_argument("--window", type=_whole_number(2), help="keyframes a frame is registered against (default 5)")
+    p.add_argument("--min-inliers", type=_whole_number(1),
+                   help="features that must agree with a frame's pose for it to be registered (default 15)")
+    p.add_argument("--threshold", type=_positive_number,
+                   help="RANSAC inlier threshold in px of full-size detection (default 2; grows with the "
+                        "reduction of --max-image-size)")
+    p.add_argument("--local-adjustment", action="store_true",
+                   help="refine the window's frames and structure after each registration")
+    p.add_argument("--max-image-size", type=_whole_number(0),
+                   help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
+    return p
+
+
+# --- outputs -----------------------------------------------------------------------------------------
+
+def _check_writable(path: Path, option: str):
+    """InputError naming the option unless a file can be created at path (tried with a temporary
+    file beside it, removed at once)."""
+    if path.is_dir():
+        raise InputError(f"{option} {path}: is a folder, not a file")
+    folder = path.parent
+    if not folder.is_dir():
+        raise InputError(f"{option} {path}: the folder {folder} does not exist")
+    if path.exists() and not os.access(path, os.W_OK):
+        raise InputError(f"{option} {path}: cannot be written (permission denied)")
+    try:
+        handle, probe = tempfile.mkstemp(dir=folder, prefix=f".{path.name}.", suffix=".tmp")
+    except OSError as error:
+        raise InputError(f"{option} {path}: cannot be written ({error.strerror or error})") from None
+    os.close(handle)
+    os.unlink(probe)
+
+
+def _write_atomically(path: Path, text: str):
+    """text as path's content, through a temporary file in path's folder renamed onto it: a reader
+    never sees half a file, and a failure leaves no file."""
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+# --- rotations -----------------------------------------------------------------------------------------
+
+def _quaternion_to_rotation(q):
+    """The rotation of the unit quaternion (qx, qy, qz, qw), Hamilton convention."""
+    x, y, z, w = np.asarray(q, np.float64) / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def _rotation_to_quaternion(R):
+    """The unit quaternion (qx, qy, qz, qw) of the rotation R with qw >= 0; the component of largest
+    magnitude is taken from the diagonal, the others from it, so that no division is by a small number."""
+    R = np.asarray(R, np.float64)
+    trace = R[0, 0] + R[1, 1] + R[2, 2]
+    four_squares = [1 + 2 * R[0, 0] - trace, 1 + 2 * R[1, 1] - trace, 1 + 2 * R[2, 2] - trace, 1 + trace]
+    k = int(np.argmax(four_squares))
+    big = 0.5 * math.sqrt(max(four_squares[k], 0.0))
+    f = 0.25 / big
+    if k == 0:
+        q = [big, (R[0, 1] + R[1, 0]) * f, (R[0, 2] + R[2, 0]) * f, (R[2, 1] - R[1, 2]) * f]
+    elif k == 1:
+        q = [(R[0, 1] + R[1, 0]) * f, big, (R[1, 2] + R[2, 1]) * f, (R[0, 2] - R[2, 0]) * f]
+    elif k == 2:
+        q = [(R[0, 2] + R[2, 0]) * f, (R[1, 2] + R[2, 1]) * f, big, (R[1, 0] - R[0, 1]) * f]
+    else:
+        q = [(R[2, 1] - R[1, 2]) * f, (R[0, 2] - R[2, 0]) * f, (R[1, 0] - R[0, 1]) * f, big]
+    q = np.array(q) / np.linalg.norm(q)
+    return q if q[3] >= 0 else -q
+
+
+def _is_rotation(R):
+    return bool(np.all(np.isfinite(R)) and np.abs(R @ R.T - np.eye(3)).max() < _ROTATION_TOLERANCE
+                and np.linalg.det(R) > 0)
+
+
+# --- inputs ------------------------------------------------------------------------------------------
+
+def _cv2():
+    from .images import _cv2 as images_cv2
+    return images_cv2()
+
+
+def _matrix(fs, key):
+    """The numbers under key as an array (a matrix, a sequence or one number), or None when the key
+    is absent or empty; InputError naming the key for anything else."""
+    node = fs.getNode(key)
+    if node.empty() or node.isNone():
+        return None
+    value = None
+    if node.isMap():
+        value = node.mat()
+    elif node.isSeq():
+        items = [node.at(i) for i in range(node.size())]
+        if all(item.isReal() or item.isInt() for item in items):
+            value = np.array([item.real() for item in items], np.float64)
+    elif node.isReal() or node.isInt():
+        value = np.array([node.real()])
+    if value is None:
+        raise InputError(f"key {key}: expected a matrix of numbers")
+    return np.asarray(value, np.float64)
+
+
+def read_calibration(path: Path):
+    """(K, dist or None, (R12, t12) or None) of the calibration file; InputError naming the file and
+    the key otherwise."""
+    cv2 = _cv2()
+    if not path.is_file():
+        raise InputError(f"--calib {path}: no such file")
+    try:
+        fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ)
+    except (cv2.error, SystemError) as error:
+        # cv2 reports a parse error as a SystemError whose cause is the cv2.error.
+        error = error.__cause__ or error
+        raise InputError(f"--calib {path}: cannot be parsed as OpenCV YAML, JSON or XML "
+                         f"({str(error).strip().splitlines()[-1]})") from None
+    if not fs.isOpened():
+        raise InputError(f"--calib {path}: cannot be opened as OpenCV YAML, JSON or XML")
+    try:
+        values = {key: _matrix(fs, key) for key in ("K", "dist", "R12", "t12")}
+    except InputError as error:
+        raise InputError(f"--calib {path}: {error}") from None
+    finally:
+        fs.release()
+    K = values["K"]
+    if K is None:
+        raise InputError(f"--calib {path}: no key K (the 3x3 camera matrix)")
+    if K.size != 9 or not np.all(np.isfinite(K)):
+        raise InputError(f"--calib {path}: key K: expected a finite 3x3 camera matrix, got {K.size} values")
+    K = K.reshape(3, 3)
+    if not (K[0, 0] > 0 and K[1, 1] > 0 and K[2, 2] != 0):
+        raise InputError(f"--calib {path}: key K: the focal lengths K[0,0], K[1,1] must be > 0 and K[2,2] non-zero")
+    dist = values["dist"]
+    if dist is not None:
+        dist = dist.ravel()
+        if dist.size == 0:
+            dist = None
+        elif dist.size not in (4, 5, 8, 12, 14) or not np.all(np.isfinite(dist)):
+            raise InputError(f"--calib {path}: key dist: expected 4, 5, 8, 12 or 14 finite distortion coefficients, "
+                             f"got {dist.size}")
+    R12, t12 = values["R12"], values["t12"]
+    relative = None
+    if R12 is not None or t12 is not None:
+        if R12 is None or t12 is None:
+            raise InputError(f"--calib {path}: key {'R12' if R12 is None else 't12'} is missing "
+                             f"({'t12' if R12 is None else 'R12'} is given; frame 1's pose needs both)")
+        if R12.size == 3:
+            R12 = cv2.Rodrigues(R12.reshape(3, 1))[0]
+        if R12.size != 9 or not _is_rotation(R12.reshape(3, 3)):
+            raise InputError(f"--calib {path}: key R12: expected a 3x3 rotation or a rotation vector")
+        if t12.size != 3 or not np.all(np.isfinite(t12)):
+            raise InputError(f"--calib {path}: key t12: expected 3 finite numbers, got {t12.size} values")
+        if not np.any(t12):
+            raise InputError(f"--calib {path}: key t12 is zero: frames 0 and 1 must be apart (their baseline "
+                             "fixes the scale)")
+        relative = (np.ascontiguousarray(R12.reshape(3, 3)), t12.reshape(3).copy())
+    return K, dist, relative
+
+
+def read_initial_poses(path: Path) -> List[Tuple[np.ndarray, np.ndarray]]:
+    """The poses (R, t), x_cam = R X + t, of a TUM trajectory's lines (camera-to-world: position
+    and orientation of the camera in the world); InputError naming the file and line otherwise."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError(f"--poses {path}: cannot be read ({getattr(error, 'strerror', None) or error})") from None
+    poses = []
+    for number, line in enumerate(text.splitlines(), 1):
+        fields = line.split()
+        if not fields or fields[0].startswith("#"):
+            continue
+        try:
+            values = [float(v) for v in fields]
+        except ValueError:
+            values = []
+        if len(values) != 8 or not all(math.isfinite(v) for v in values):
+            raise InputError(f"--poses {path}:{number}: expected 8 finite numbers (timestamp tx ty tz qx qy qz qw)")
+        q = np.array(values[4:8])
+        if abs(np.linalg.norm(q) - 1) > 1e-3:
+            raise InputError(f"--poses {path}:{number}: the quaternion (qx qy qz qw) is not of unit length "
+                             f"({np.linalg.norm(q):.6g})")
+        R = _quaternion_to_rotation(q).T
+        poses.append((R, -R @ np.array(values[1:4])))
+    if len(poses) < 2:
+        raise InputError(f"--poses {path}: holds {len(poses)} pose(s); the first two frames need theirs (they fix "
+                         "the world frame and the scale)")
+    centres = np.array([-R.T @ t for R, t in poses])
+    if np.all(np.abs(centres - centres[0]).max(axis=1) == 0):
+        raise InputError(f"--poses {path}: every pose is at the same position: the given frames must be apart "
+                         "(their baseline fixes the scale)")
+    return poses
+
+
+def check_image_fits(K, shape, frame: int, name: str, calib: Path):
+    """InputError unless K's principal point lies inside the image (at most half the image's width
+    and height from its centre). A calibrated camera's optical axis meets its image, so the rule
+    rejects no real calibration; it catches one made for another image size, such as a full-size K
+    with images reduced to a third."""
+    cx, cy = K[0, 2] / K[2, 2], K[1, 2] / K[2, 2]
+    height, width = shape[:2]
+    if not (0 <= cx <= width and 0 <= cy <= height):
+        raise InputError(f"frame {frame} ({name}) is {width}x{height} but the principal point of K in {calib} is "
+                         f"({cx:.1f}, {cy:.1f}), outside it: the calibration is for another image size")
+
+
+# --- tracking --------------------------------------------------------------------------------------
+
+def tracker_options(args, pixel_scale: float = 1.0):
+    """tripose.TrackerOptions of the command line, the pixel tolerances grown by pixel_scale (the
+    reduction of the detection images)."""
+    import tripose
+
+    options = tripose.TrackerOptions()
+    if args.window is not None:
+        options.window = args.window
+    if args.min_inliers is not None:
+        options.min_inliers = args.min_inliers
+    if args.threshold is not None:
+        options.ransac.threshold = args.threshold
+    options.local_adjustment = bool(args.local_adjustment)
+    options.ransac.threshold *= pixel_scale
+    options.ransac.refine_options.loss_scale *= pixel_scale
+    options.matching.epipolar_distance *= pixel_scale
+    return options
+
+
+def _tum_text(rows):
+    lines = ["# timestamp tx ty tz qx qy qz qw"]
+    for stamp, R, t in rows:
+        values = [*(-R.T @ t), *_rotation_to_quaternion(R.T)]
+        lines.append(f"{stamp:.9f} " + " ".join(f"{v:.17g}" for v in values))
+    return "\n".join(lines) + "\n"
+
+
+def _yaml_text(args, pixel_scale, options, frames, poses):
+    cv2 = _cv2()
+    fs = cv2.FileStorage("", cv2.FILE_STORAGE_WRITE | cv2.FILE_STORAGE_MEMORY | cv2.FILE_STORAGE_FORMAT_YAML)
+    fs.write("images", str(args.images))
+    fs.write("calib", str(args.calib))
+    if args.poses is not None:
+        fs.write("poses", str(args.poses))
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
+    fs.write("num_frames", len(frames))
+    fs.write("given", counts[0])
+    fs.write("registered", counts[1])
+    fs.write("lost", counts[2])
+    fs.write("window", options.window)
+    fs.write("min_inliers", options.min_inliers)
+    fs.write("threshold", options.ransac.threshold)
+    fs.write("local_adjustment", int(options.local_adjustment))
+    fs.write("pixel_scale", float(pixel_scale))
+    fs.startWriteStruct("frames", cv2.FileNode_SEQ)
+    for f, pose in zip(frames, poses):
+        fs.startWriteStruct("", cv2.FileNode_MAP)
+        fs.write("frame", f["frame"])
+        fs.write("name", f["name"])
+        fs.write("timestamp", f["timestamp"])
+        fs.write("status", f["status"])
+        fs.write("keyframe", int(f["keyframe"]))
+        fs.write("features", f["features"])
+        fs.write("inliers", f["inliers"])
+        if pose is not None:
+            fs.write("R", np.ascontiguousarray(pose[0]))
+            fs.write("t", np.ascontiguousarray(pose[1]).reshape(3, 1))
+        fs.write("reason", f["reason"])
+        fs.endWriteStruct()
+    fs.endWriteStruct()
+    return fs.releaseAndGetString()
+
+
+def run(args) -> int:
+    import tripose
+    from . import images
+
+    _check_writable(args.output, "--output")
+    if args.yaml is not None:
+        _check_writable(args.yaml, "--yaml")
+        if args.yaml.resolve() == args.output.resolve():
+            raise InputError(f"--yaml {args.yaml}: the same file as --output")
+    K, dist, relative = read_calibration(args.calib)
+    if args.poses is not None:
+        given = read_initial_poses(args.poses)
+        if relative is not None:
+            print(f"The first poses come from {args.poses} (--poses), not from R12, t12 of {args.calib}.")
+    elif relative is not None:
+        given = [(np.eye(3), np.zeros(3)), relative]
+    else:
+        raise InputError(f"--calib {args.calib}: no key R12 (with t12), the pose of frame 1 relative to frame 0; "
+                         "give them there or the first frames' poses with --poses")
+    feature_options = images.FeatureOptions()
+    if args.max_image_size is not None:
+        feature_options.max_image_size = args.max_image_size
+    try:
+        tripose.Tracker(K, dist, tracker_options(args))  # K and dist as the tracker checks them
+    except (ValueError, TypeError) as error:
+        raise InputError(f"--calib {args.calib}: {error}") from None
+    try:
+        source = images.open_frames(args.images)
+    except ValueError as error:
+        raise InputError(f"--images {error}") from None
+
+    tracker, pixel_scale, options = None, 1.0, None
+    frames, waiting = [], []
+
+    def start(image_shape):
+        nonlocal tracker, pixel_scale, options
+        pixel_scale = images.detection_scale(image_shape, feature_options.max_image_size) if image_shape else 1.0
+        options = tracker_options(args, pixel_scale)
+        tracker = tripose.Tracker(K, dist, options)
+        if pixel_scale != 1.0:
+            print(f"Features detected in images reduced by {pixel_scale:.2f}; pixel tolerances grown by as much "
+                  f"(threshold {options.ransac.threshold:.3g} px).")
+        print(f"{'frame':>5}  {'name':<28} {'status':<10} {'inliers/features':>16} {'ms':>7}")
+
+    def track(index, stamp, name, features):
+        pose = given[index] if index < len(given) else (None, None)
+        result = tracker.track(features, *pose)
+        status = result.status.name
+        frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
+                       "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
+                       "reason": result.reason})
+        share = f"{result.inliers}/{result.features}"
+        print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
+              + (f"  {result.reason}" if result.reason else ""), flush=True)
+        if index == 1 and features is not None:
+            matches, agreeing = tracker.given_pair_agreement
+            if matches >= _AGREEMENT_MIN_MATCHES and agreeing < _AGREEMENT_MIN_FRACTION * matches:
+                print(f"{PROGRAM}: warning: of {matches} matches between frames 0 and 1 only {agreeing} agree with "
+                      "their given poses: are the images in the poses' order, and the calibration theirs?",
+                      file=sys.stderr)
+
+    index = 0
+    for stamp, name, image in source:
+        features = None
+        if image is None:
+            kept = "; its given pose is kept" if index < len(given) else ""
+            print(f"{PROGRAM}: frame {index} ({name}): cannot be read or decoded: lost{kept}", file=sys.stderr)
+        else:
+            check_image_fits(K, image.shape, index, name, args.calib)
+            # The tracker undistorts the features with dist: they are extracted without it.
+            features = images.extract_features(image, K, options=feature_options)
+        if tracker is None:
+            if features is None:
+                waiting.append((index, stamp, name))
+                index += 1
+                continue
+            start(image.shape)
+            for w in waiting:
+                track(*w, None)
+        track(index, stamp, name, features)
+        index += 1
+    if tracker is None:
+        start(None)
+        for w in waiting:
+            track(*w, None)
+    if len(given) > len(frames):
+        print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
+
+    poses = tracker.trajectory()
+    rows = [(f["timestamp"], R, t) for f, pose in zip(frames, poses) if pose is not None for R, t in [pose]]
+    texts = [(args.output, _tum_text(rows))]
+    if args.yaml is not None:
+        texts.append((args.yaml, _yaml_text(args, pixel_scale, options, frames, poses)))
+    for path, text in texts:
+        try:
+            _write_atomically(path, text)
+        except OSError as error:
+            raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
+    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
+          f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
+    return 0
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """The program: exit status 0 when the sequence was tracked (frames may be lost), 1 on bad input
+    (the message on stderr names the option, file, key or frame; nothing is written)."""
+    args = _parser().parse_args(argv)
+    try:
+        return run(args)
+    except InputError as error:
+        print(f"{PROGRAM}: error: {error}", file=sys.stderr)
+        return 1
+    except ImportError as error:
+        print(f"{PROGRAM}: error: {error}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
