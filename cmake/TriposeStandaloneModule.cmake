@@ -34,7 +34,6 @@ function(tripose_add_module_targets)
     PRIVATE opencv_calib3d $<BUILD_INTERFACE:Eigen3::Eigen>)
   target_compile_options(opencv_tripose PRIVATE
     $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>)
-  tripose_define_missing_cv_nd(opencv_tripose)
 
   tripose_add_support_library("${module_dir}/support")
 
@@ -81,24 +80,4 @@ function(tripose_link_ts_shim target)
     Eigen3::Eigen GTest::gtest)
   target_compile_definitions(${target} PRIVATE
     TRIPOSE_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data")
-endfunction()
-
-# The public headers mark the per-view arrays (cameraMatrix, distCoeffs) with OpenCV's CV_ND, which
-# tells OpenCV 4.8+'s Python binding generator to pass a 3x3 array whole. Older OpenCV (Debian's
-# 4.6) has no such marker, and no binding is generated in a standalone build, so the marker expands
-# to nothing there: defined on the target (PUBLIC, so installed consumers get it too), never in a
-# public header, where it would shadow OpenCV's own definition.
-function(tripose_define_missing_cv_nd target)
-  include(CheckCXXSourceCompiles)
-  get_target_property(opencv_includes opencv_core INTERFACE_INCLUDE_DIRECTORIES)
-  set(CMAKE_REQUIRED_INCLUDES ${opencv_includes} ${OpenCV_INCLUDE_DIRS})
-  set(CMAKE_REQUIRED_QUIET ON)
-  check_cxx_source_compiles("#include <opencv2/core.hpp>
-    #ifndef CV_ND
-    #error CV_ND missing
-    #endif
-    int main() { return 0; }" TRIPOSE_OPENCV_HAS_CV_ND)
-  if(NOT TRIPOSE_OPENCV_HAS_CV_ND)
-    target_compile_definitions(${target} PUBLIC CV_ND=)
-  endif()
 endfunction()

@@ -40,6 +40,8 @@ cmake --install build >/dev/null
 cmake -S test/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$root/build/install" >/dev/null
 cmake --build build/consumer
 build/consumer/tripose_consumer
+# The installed headers on a plain compiler line, without anything the CMake target defines.
+c++ -std=c++17 $(pkg-config --cflags opencv4) -I"$root/build/install/include" -fsyntax-only test/consumer/main.cpp
 
 (cd build && ctest --output-on-failure)
 .venv/bin/python codegen/generate.py --check

@@ -6,6 +6,7 @@
 #define OPENCV_TRIPOSE_POSE_HPP
 
 #include "opencv2/core.hpp"
+#include "opencv2/tripose/detail/cv_nd.hpp"
 
 namespace cv {
 namespace tripose {
