@@ -426,12 +426,15 @@ def run(args) -> int:
         pose = given[index] if index < len(given) else (None, None)
         result = tracker.track(features, *pose)
         status = result.status.name
+        reason = result.reason
+        if features is None and status == "LOST":
+            reason = "the image cannot be read or decoded"
         frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
                        "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
-                       "reason": result.reason})
+                       "reason": reason})
         share = f"{result.inliers}/{result.features}"
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
-              + (f"  {result.reason}" if result.reason else ""), flush=True)
+              + (f"  {reason}" if reason else ""), flush=True)
         if index == 1 and features is not None:
             matches, agreeing = tracker.given_pair_agreement
             if matches >= _AGREEMENT_MIN_MATCHES and agreeing < _AGREEMENT_MIN_FRACTION * matches:
