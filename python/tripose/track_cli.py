@@ -414,7 +414,7 @@ def run(args) -> int:
 
     def start(image_shape):
         nonlocal tracker, pixel_scale, options
-        pixel_scale = images.detection_scale(image_shape, feature_options.max_image_size) if image_shape else 1.0
+        pixel_scale = images.detection_scale(image_shape, feature_options.max_image_size)
         options = tracker_options(args, pixel_scale)
         tracker = tripose.Tracker(K, dist, options)
         if pixel_scale != 1.0:
@@ -446,8 +446,8 @@ def run(args) -> int:
     for stamp, name, image in source:
         features = None
         if image is None:
-            kept = "; its given pose is kept" if index < len(given) else ""
-            print(f"{PROGRAM}: frame {index} ({name}): cannot be read or decoded: lost{kept}", file=sys.stderr)
+            outcome = "its given pose is kept, without features" if index < len(given) else "lost"
+            print(f"{PROGRAM}: frame {index} ({name}): cannot be read or decoded; {outcome}", file=sys.stderr)
         else:
             check_image_fits(K, image.shape, index, name, args.calib)
             # The tracker undistorts the features with dist: they are extracted without it.
@@ -463,10 +463,8 @@ def run(args) -> int:
         track(index, stamp, name, features)
         index += 1
     if tracker is None:
-        start(None)
-        for w in waiting:
-            track(*w, None)
-    if len(given) > len(frames):
+        raise InputError(f"--images {args.images}: none of its {index} frame(s) can be read or decoded")
+    if args.poses is not None and len(given) > len(frames):
         print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
 
     poses = tracker.trajectory()
