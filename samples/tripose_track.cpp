@@ -2,126 +2,96 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// tripose_track: tracks the camera along a sequence in the Oxford VGG multi-view format. Frames 0 and
-// 1 take their poses from the sequence (they fix the world frame and the scale); every later frame
-// is registered against a sliding window of the keyframes before it that see its features, points
-// and lines together (cv::tripose::estimatePoseMultiViewRansac). Writes the poses, prints per-frame errors
-// against the sequence's cameras and, with --plot, draws both trajectories seen from above. With
-// --from-images the correspondences come from the folder's images (one per camera, in name order)
-// through the image front end instead of the sequence's files.
+// tripose_track: tracks a camera through a folder of images, a video or a list of image files with
+// cv::tripose::Tracker, and writes its trajectory in the TUM format. Points (SIFT) and segments
+// (EDLines fitted to their edges, LBD) are detected in each frame; the first two frames take their
+// poses from the calibration (frame 0 at the origin, frame 1 at R12, t12) or from a trajectory file.
 //
-//   tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]
-//                 [--method ransac|linear] [--threshold px] [--seed n] [--check-tracks 0|1] [--min-inliers n]
-//                 [--keyframe-parallax deg] [--from-images]
+//   tripose_track --images <folder | video | list> --calib calib.yml [--poses initial.txt]
+//                 --output trajectory.txt [--yaml result.yml] [options]
 
-#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
-#include <limits>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/tripose.hpp>
 
 #include "arguments.hpp"
-#include "image_estimation.hpp"
-#include "problem_io.hpp"
-#include "sequence_tracking.hpp"
-#if TRIPOSE_HAVE_IMAGE_FRONT_END
+#include "frame_source.hpp"
+#include "image_features.hpp"
 #include "image_input.hpp"
-#include "image_sequence.hpp"
-#endif
-#include "tripose_support/pose_error.hpp"
-#include "tripose_support/vgg_dataset.hpp"
+#include "problem_io.hpp"
+#include "trajectory_io.hpp"
 
 namespace {
 
 const char* kUsage =
-    "usage: tripose_track --data <VGG sequence folder> --output track.yml [--window N] [--plot trajectory.png]\n"
-    "                     [--method ransac|linear] [--threshold px] [--seed n] [--local-refine 0|1] [--from-images]\n"
-    "                     [--check-tracks 0|1] [--min-inliers n] [--keyframe-parallax deg]\n"
-    "                     [--observations tracks.yml] [--max-image-size px]\n"
-    "  --window N     register each frame against the last N keyframes (default 5, at least 2; 2 is the\n"
-    "                 three-view chain)\n"
-    "  --method       ransac (default: RANSAC, then maximum-likelihood refinement) or linear\n"
-    "  --local-refine 1: after each registration, refine the window's registered frames, the new one and\n"
-    "                 the structure together against the earlier frames (a local bundle adjustment;\n"
-    "                 default 0: off)\n"
-    "  --check-tracks 1 (default): before a frame is registered, drop each feature's window observations\n"
-    "                 that disagree with the window's poses by more than the threshold; after, start new\n"
-    "                 tracks from the frame's observations that the registration rejected. 0: off\n"
-    "  --min-inliers n  a frame whose pose fewer than n features agree with is lost (default 15; chance\n"
-    "                 matches of an unrelated image gave up to 7)\n"
-    "  --keyframe-parallax deg  a registered frame may enter later windows (is a keyframe) when the median\n"
-    "                 angle between the rays from it and from the window's last keyframe, over its inlier\n"
-    "                 points and inlier lines' end points, is at least deg (default 0.1; a camera standing\n"
-    "                 still adds none; 0: every registered frame)\n"
-    "  --from-images  points and segments found and matched in the folder's images (one per camera, in\n"
-    "                 name order; SIFT, EDLines + LBD) instead of the sequence's correspondences\n"
-    "  --max-image-size  with --from-images: detect the features in images reduced to this longer side\n"
-    "                 (px; default 1600, 0: full size); --threshold and the matching's tolerance grow by\n"
-    "                 the reduction\n"
-    "  --observations also write the tracks the frames were registered from: per frame k (from 0) K<k>,\n"
-    "                 points<k> (N x 2) and lines<k> (M x 4, segments), row i of every frame the same track,\n"
-    "                 NaN where frame k does not see it\n"
-    "Output (OpenCV FileStorage): poses (F x 12 CV_64F, row k: R_k row-major then t_k, x ~ K_k (R_k X + t_k),\n"
-    "X in frame 0's camera frame; NaN for a lost frame), status (F x 1: 0 given, 1 registered, 2 lost),\n"
-    "keyframe (F x 1: 1 for frames 0 and 1 and registered frames with enough parallax, which later\n"
-    "windows may hold), features and inliers per frame,\n"
-    "rotation_error_deg and position_error per frame, drift_percent.\n";
+    "usage: tripose_track --images <folder | video | list> --calib calib.yml [--poses initial.txt]\n"
+    "                     --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]\n"
+    "                     [--threshold px] [--local-adjustment 0|1] [--keyframe-parallax deg] [--seed n]\n"
+    "                     [--max-image-size px]\n"
+    "  --images       a folder (its images in natural name order), a video file, or a text file listing\n"
+    "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
+    "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
+    "                 frame 0's camera frame (frame 0 is the world's origin; |t12| sets the scale)\n"
+    "  --poses        a TUM trajectory (timestamp tx ty tz qx qy qz qw, camera to world) whose lines are\n"
+    "                 the poses of the first frames, in order (at least two)\n"
+    "  --output       the trajectory (TUM), one line per frame with a pose; lost frames are left out\n"
+    "  --yaml         also every frame's status (0 given, 1 registered, 2 lost), keyframe, features,\n"
+    "                 inliers and pose (R row-major, t; NaN when lost)\n"
+    "  --window N     register each frame against the last N keyframes (default 5, at least 2)\n"
+    "  --min-inliers  a frame is lost when fewer features agree with its pose (default 15)\n"
+    "  --threshold    the registration's inlier threshold (px, default 2)\n"
+    "  --local-adjustment 1: refine the window's frames and structure after each frame (default 0)\n"
+    "  --keyframe-parallax  a registered frame becomes a keyframe from this parallax on (deg, default 0.1)\n"
+    "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
+    "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
+    "arguments or input (the message names the option, file, frame or key; no output is written).\n";
 
 struct Options
 {
-    std::string data, output, plot, observations, method = "ransac";
-    bool fromImages = false;
-    int maxImageSize = -1; //!< --max-image-size; -1: not given (the front end's default)
-    tripose_samples::TrackOptions track;
+    std::string images, calib, poses, output, yaml;
+    int maxImageSize = -1;
+    cv::tripose::TrackerParams track;
 };
-
-//! A 0|1 option's value.
-bool parseSwitch(const std::string& arg, const std::string& value)
-{
-    const int on = tripose_samples::parseInteger(arg, value, 0.0);
-    if (on > 1)
-        throw tripose_samples::argumentError(arg, "expected 0 or 1, got '" + value + "'");
-    return on == 1;
-}
 
 Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
-    const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--check-tracks", "--min-inliers",
-                                             "--keyframe-parallax", "--observations", "--max-image-size" };
-    for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
+    const std::vector<std::string> known = { "--images", "--calib", "--poses", "--output", "--yaml", "--window",
+                                             "--min-inliers", "--threshold", "--local-adjustment",
+                                             "--keyframe-parallax", "--seed", "--max-image-size" };
+    for (const auto& option : optionPairs(argc, argv, kUsage, known, {}))
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
-        if (arg == "--from-images")
-            o.fromImages = true;
-        else if (arg == "--data")
-            o.data = value;
+        if (arg == "--images")
+            o.images = value;
+        else if (arg == "--calib")
+            o.calib = value;
+        else if (arg == "--poses")
+            o.poses = value;
         else if (arg == "--output")
             o.output = value;
-        else if (arg == "--plot")
-            o.plot = value;
-        else if (arg == "--observations")
-            o.observations = value;
-        else if (arg == "--method")
-            o.method = value;
-        else if (arg == "--local-refine")
-            o.track.localAdjustment = parseSwitch(arg, value);
-        else if (arg == "--check-tracks")
-            o.track.checkTracks = parseSwitch(arg, value);
-        else if (arg == "--max-image-size")
-            o.maxImageSize = parseInteger(arg, value, 0.0);
+        else if (arg == "--yaml")
+            o.yaml = value;
         else if (arg == "--window")
             o.track.window = parseInteger(arg, value, 2.0);
         else if (arg == "--min-inliers")
             o.track.minInliers = parseInteger(arg, value, 1.0);
+        else if (arg == "--max-image-size")
+            o.maxImageSize = parseInteger(arg, value, 0.0);
+        else if (arg == "--local-adjustment")
+        {
+            const int on = parseInteger(arg, value, 0.0);
+            if (on > 1)
+                throw argumentError(arg, "expected 0 or 1, got '" + value + "'");
+            o.track.localAdjustment = on == 1;
+        }
         else if (arg == "--keyframe-parallax")
         {
             o.track.keyframeParallaxDeg = parseNumber(arg, value);
@@ -137,143 +107,69 @@ Options parseArguments(int argc, char** argv)
         else // --seed
             o.track.ransac.seed = parseInteger(arg, value, -2147483647.0);
     }
-    if (o.data.empty())
-        throw std::runtime_error("argument --data is required");
-    if (o.output.empty())
-        throw std::runtime_error("argument --output is required");
-    if (o.method != "ransac" && o.method != "linear")
-        throw argumentError("--method", "expected 'ransac' or 'linear', got '" + o.method + "'");
-    o.track.robust = o.method == "ransac";
-    if (o.maxImageSize >= 0 && !o.fromImages)
-        throw argumentError("--max-image-size", "applies to --from-images only");
+    for (const auto& required : { std::make_pair("--images", &o.images), std::make_pair("--calib", &o.calib),
+                                  std::make_pair("--output", &o.output) })
+        if (required.second->empty())
+            throw std::runtime_error(std::string("argument ") + required.first + " is required");
     return o;
 }
 
-cv::Point2d topView(const cv::Mat& R, const cv::Mat& t)
+//! The poses of the first frames: from --poses, else frame 0 at the origin and frame 1 at R12, t12.
+std::vector<tripose_samples::StampedPose> initialPoses(const Options& o, const tripose_samples::Problem& calib)
 {
-    const cv::Mat c = -R.t() * t; // camera centre in frame 0; x right, z forward
-    return cv::Point2d(c.at<double>(0), c.at<double>(2));
-}
-
-//! Both trajectories seen from above (x right, z up the image), PNG bytes.
-std::vector<uchar> drawTrajectories(const std::vector<cv::Point2d>& reference, const std::vector<cv::Point2d>& estimated,
-                                    const std::vector<bool>& valid, const std::string& title)
-{
-    const int width = 900, height = 700, margin = 60;
-    cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
-    double xmin = reference[0].x, xmax = xmin, ymin = reference[0].y, ymax = ymin;
-    auto extend = [&](const cv::Point2d& p) {
-        xmin = std::min(xmin, p.x);
-        xmax = std::max(xmax, p.x);
-        ymin = std::min(ymin, p.y);
-        ymax = std::max(ymax, p.y);
-    };
-    for (size_t k = 0; k < reference.size(); ++k)
+    using tripose_samples::StampedPose;
+    if (!o.poses.empty())
     {
-        extend(reference[k]);
-        if (valid[k])
-            extend(estimated[k]);
+        std::vector<StampedPose> poses = tripose_samples::readTumTrajectory(o.poses);
+        if (poses.size() < 2)
+            throw std::runtime_error("argument --poses: " + o.poses + " holds " + std::to_string(poses.size()) +
+                                     " pose(s); the first two frames need theirs");
+        return poses;
     }
-    // One scale for both axes (a top view keeps its shape); a degenerate extent gets a small span.
-    const double span = std::max(std::max(xmax - xmin, ymax - ymin), 1e-9);
-    const double scale = std::min((width - 2.0 * margin) / std::max(xmax - xmin, 1e-3 * span),
-                                  (height - 2.0 * margin) / std::max(ymax - ymin, 1e-3 * span));
-    const cv::Rect2d box(xmin, ymin, xmax - xmin, ymax - ymin);
-    auto pixel = [&](const cv::Point2d& p) {
-        return cv::Point2d(margin + (p.x - box.x) * scale, height - margin - (p.y - box.y) * scale);
-    };
-    const cv::Scalar green(40, 160, 40), red(40, 40, 220);
-    for (size_t k = 0; k < reference.size(); ++k)
-    {
-        if (k > 0)
-            cv::line(image, pixel(reference[k - 1]), pixel(reference[k]), green, 2, cv::LINE_AA);
-        cv::circle(image, pixel(reference[k]), 5, green, 2, cv::LINE_AA);
-        cv::putText(image, std::to_string(k), pixel(reference[k]) + cv::Point2d(7, -7), cv::FONT_HERSHEY_SIMPLEX, 0.45,
-                    cv::Scalar(80, 80, 80), 1, cv::LINE_AA);
-    }
-    for (size_t k = 0; k < estimated.size(); ++k)
-    {
-        if (!valid[k])
-            continue;
-        if (k > 0 && valid[k - 1])
-            cv::line(image, pixel(estimated[k - 1]), pixel(estimated[k]), red, 1, cv::LINE_AA);
-        cv::drawMarker(image, pixel(estimated[k]), red, cv::MARKER_CROSS, 10, 1, cv::LINE_AA);
-    }
-    cv::putText(image, title, cv::Point(margin, 30), cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-    cv::putText(image, "top view (x right, z forward of frame 0); green: sequence cameras, red: tracked",
-                cv::Point(margin, height - 20), cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
-    std::vector<uchar> png;
-    cv::imencode(".png", image, png);
-    return png;
-}
-
-/** The sequence's observations found in the images of @p folder (one per camera, in name order),
-detected in images reduced to @p maxImageSize (-1: the front end's default), and in @p pixelScale
-the factor of pixel tolerances for them (detectionScale(): 1 unless the images are reduced). Throws std::runtime_error naming the
-folder or image when they do not fit the sequence. */
-tripose_samples::SequenceObservations observationsFromFolderImages(const std::string& folder,
-                                                                   const cv::tripose::support::VggSequence& sequence,
-                                                                   int maxImageSize, double& pixelScale)
-{
-#if TRIPOSE_HAVE_IMAGE_FRONT_END
-    using namespace tripose_samples;
-    const std::vector<std::string> files = imageFilesIn(folder);
-    if (files.size() != sequence.Rs.size())
-        throw std::runtime_error(cv::format("argument --from-images: %s holds %zu images for %zu cameras", folder.c_str(),
-                                            files.size(), sequence.Rs.size()));
-    std::vector<cv::Mat> images;
-    for (size_t k = 0; k < files.size(); ++k)
-    {
-        images.push_back(readImage(files[k]));
-        checkImageFitsCalibration(images.back(), files[k], cv::Matx33d(sequence.cameraMatrices[k]),
-                                  "camera " + std::to_string(k));
-    }
-    StageTimes times;
-    FeatureOptions features;
-    if (maxImageSize >= 0)
-        features.maxImageSize = maxImageSize;
-    pixelScale = detectionScale(images, features.maxImageSize);
-    const std::string reduction = reductionNote(pixelScale, features.maxImageSize);
-    if (!reduction.empty())
-        std::cout << "Front end: " << reduction << "; pixel tolerances scaled by it\n";
-    EpipolarAgreement agreement;
-    SequenceObservations observations =
-        observationsFromImages(images, sequence.cameraMatrices, sequence.Rs[0], sequence.ts[0], sequence.Rs[1],
-                               sequence.ts[1], features, withPixelScale(MatchOptions(), pixelScale), times, &agreement);
-    // Images named out of the cameras' order (img10 sorts before img2) give frames 0-1 the wrong
-    // poses; the tracker would still run, on wrong tracks.
-    if (agreement.contradicts())
-        std::cerr << "tripose_track: warning: the images of frames 0 and 1 (" << files[0] << ", " << files[1]
-                  << ") do not follow the sequence's cameras 0 and 1: " << agreement.summary()
-                  << ". Are the images, in name order, in the order of the cameras?\n";
-    std::cout << cv::format("Front end on %zu images: %d point tracks, %d segment tracks; ms: points (SIFT) %.0f, "
-                            "segment detection (EDLines) %.0f, segment description (LBD) %.0f, matching %.0f\n",
-                            files.size(), observations.points[0].rows, observations.lines[0].rows, times.points,
-                            times.segmentDetection, times.segmentDescription, times.matching);
-    return observations;
-#else
-    (void)folder;
-    (void)sequence;
-    (void)maxImageSize;
-    (void)pixelScale;
-    throw std::runtime_error("argument --from-images: this build has no image front end (it needs OpenCV's "
-                             "features2d and contrib's line_descriptor)");
-#endif
+    if (calib.R12.empty())
+        throw std::runtime_error("calibration " + o.calib + ": key 'R12': missing (give R12 and t12, the pose of "
+                                 "frame 1 relative to frame 0, or --poses)");
+    StampedPose first, second;
+    first.R = cv::Matx33d::eye();
+    first.t = cv::Vec3d(0, 0, 0);
+    cv::Mat R;
+    calib.R12.convertTo(R, CV_64F);
+    if (R.total() == 3)
+        cv::Rodrigues(R.reshape(1, 3), R);
+    second.R = cv::Matx33d(R.reshape(1, 3));
+    cv::Mat t;
+    calib.t12.convertTo(t, CV_64F);
+    second.t = cv::Vec3d(t.reshape(1, 3));
+    return { first, second };
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+    using namespace tripose_samples;
     Options options;
-    cv::tripose::support::VggSequence sequence;
+    Problem calib;
+    std::vector<StampedPose> given;
+    std::unique_ptr<FrameSource> source;
     try
     {
         options = parseArguments(argc, argv);
-        tripose_samples::checkWritable(options.output, "--output");
-        tripose_samples::checkWritable(options.plot, "--plot");
-        tripose_samples::checkWritable(options.observations, "--observations");
-        sequence = cv::tripose::support::loadVggSequence(options.data);
+        checkWritable(options.output, "--output");
+        checkWritable(options.yaml, "--yaml");
+        try
+        {
+            calib = readProblem(options.calib, false, !options.poses.empty());
+        }
+        catch (const std::exception& e)
+        {
+            throw std::runtime_error("calibration " + options.calib + ": " + e.what());
+        }
+        if (calib.K.size() != 1)
+            throw std::runtime_error("calibration " + options.calib + ": key 'K': one camera matrix for the sequence "
+                                     "expected (K1.. are per view of a triplet)");
+        given = initialPoses(options, calib);
+        source.reset(new FrameSource(options.images));
     }
     catch (const cv::Exception& e)
     {
@@ -282,146 +178,124 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "tripose_track: " << e.what() << "\n" << kUsage;
-        return 1;
-    }
-    const int F = (int)sequence.Rs.size();
-    if (F < 3)
-    {
-        std::cerr << "tripose_track: " << options.data << " holds " << F
-                  << " frame(s); tracking needs two given frames and at least one more\n";
+        std::cerr << "tripose_track: " << e.what() << "\n";
         return 1;
     }
 
-    tripose_samples::SequenceObservations observations;
-    if (options.fromImages)
-    {
-        try
-        {
-            double pixelScale = 1;
-            observations = observationsFromFolderImages(options.data, sequence, options.maxImageSize, pixelScale);
-            // The features of reduced images are that much less precise in the images' pixels.
-            options.track.ransac = tripose_samples::withPixelScale(options.track.ransac, pixelScale);
-        }
-        catch (const std::exception& e)
-        {
-            std::cerr << "tripose_track: " << e.what() << "\n";
-            return 1;
-        }
-    }
-    else
-    {
-        observations.cameraMatrices = sequence.cameraMatrices;
-        observations.points = sequence.points;
-        observations.lines = sequence.lines;
-        observations.R0 = sequence.Rs[0];
-        observations.t0 = sequence.ts[0];
-        observations.R1 = sequence.Rs[1];
-        observations.t1 = sequence.ts[1];
-    }
-    std::vector<tripose_samples::TrackedFrame> frames;
+    const cv::Matx33d K(calib.K[0]);
+    const cv::Mat dist = calib.dist.empty() ? cv::Mat() : calib.dist[0];
+    FeatureOptions features;
+    if (options.maxImageSize >= 0)
+        features.maxImageSize = options.maxImageSize;
+    cv::Ptr<cv::tripose::Tracker> tracker;
+    std::vector<cv::tripose::TrackedFrame> results;
+    std::vector<double> timestamps;
+    StageTimes times;
+    int registered = 0, lost = 0;
+    std::cout << "frame  status       inliers/features  ms    name\n";
     try
     {
-        frames = tripose_samples::trackSequence(observations, options.track);
+        for (SourceFrame frame; source->next(frame);)
+        {
+            const bool hasPose = frame.index < (int)given.size();
+            if (frame.image.empty() && frame.index < 2)
+                throw std::runtime_error("frame " + std::to_string(frame.index) + " (" + frame.name + "): " +
+                                         frame.error + "; the first two frames fix the world and must be read");
+            ImageFeatures found;
+            if (frame.image.empty())
+                std::cerr << "tripose_track: frame " << frame.index << " (" << frame.name << "): " << frame.error
+                          << "; lost\n";
+            else
+            {
+                checkImageFitsCalibration(frame.image, frame.name, K, "K");
+                if (!tracker)
+                {
+                    // The features of reduced images are that much less precise in the images' pixels.
+                    const double pixelScale = detectionScale(frame.image.size(), features.maxImageSize);
+                    options.track.ransac.threshold *= pixelScale;
+                    options.track.matching.epipolarDistance *= pixelScale;
+                }
+                found = extractFeatures(frame.image, K, cv::Mat(), features, times);
+            }
+            if (!tracker)
+                tracker = cv::tripose::Tracker::create(K, dist, options.track);
+            cv::tripose::TrackedFrame result = tracker->addFeatures(
+                found.points, found.pointDescriptors, found.segments, found.lineDescriptors,
+                hasPose ? cv::Mat(given[frame.index].R) : cv::Mat(), hasPose ? cv::Mat(given[frame.index].t) : cv::Mat());
+            const char* status = result.status == cv::tripose::FRAME_GIVEN ? "given" :
+                                 result.status == cv::tripose::FRAME_LOST  ? "LOST" :
+                                 result.keyframe                           ? "registered" :
+                                                                             "registered*";
+            registered += result.status == cv::tripose::FRAME_REGISTERED;
+            lost += result.status == cv::tripose::FRAME_LOST;
+            std::cout << cv::format("%5d  %-11s  %7d/%-8d  %4.0f  %s", result.frame, status, result.inliers,
+                                    result.features, result.milliseconds, frame.name.c_str());
+            if (!result.reason.empty())
+                std::cout << "  (" << result.reason << ")";
+            std::cout << "\n";
+            results.push_back(result);
+            timestamps.push_back(frame.timestamp);
+            const cv::Vec2i agreement = tracker->givenPairAgreement();
+            if (result.frame == 1 && agreement[0] >= 20 && agreement[1] < 0.3 * agreement[0])
+                std::cerr << "tripose_track: warning: frames 0 and 1 do not follow their given poses: of "
+                          << agreement[0] << " point matches found without the poses, " << agreement[1]
+                          << " lie on their epipolar lines. Are the frames in order, and the calibration theirs?\n";
+        }
     }
     catch (const cv::Exception& e)
     {
         std::cerr << "tripose_track: " << e.err << "\n";
-        return 2;
+        return 1;
     }
-
-    // Errors against the sequence's cameras; drift in % of the reference path length.
-    std::vector<cv::Point2d> reference(F), estimated(F);
-    std::vector<bool> valid(F);
-    double pathLength = 0;
-    for (int k = 1; k < F; ++k)
-        pathLength += cv::norm(-sequence.Rs[k].t() * sequence.ts[k] - (-sequence.Rs[k - 1].t() * sequence.ts[k - 1]));
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(nan)), status(F, 1, CV_32S), keyframes(F, 1, CV_32S),
-        features(F, 1, CV_32S),
-        inliers(F, 1, CV_32S), rotationErrors(F, 1, CV_64F, cv::Scalar::all(nan)),
-        positionErrors(F, 1, CV_64F, cv::Scalar::all(nan));
-    double totalMs = 0;
-    int registered = 0, lost = 0, nonKeyframes = 0;
-    std::cout << "Sequence " << options.data << ": " << F << " frames, window " << options.track.window << ", method "
-              << options.method << "; path length " << pathLength << "\n"
-              << "frame  status      known  features  inliers  rot.err(deg)  pos.err  pos.err(% path)  ms\n";
-    for (int k = 0; k < F; ++k)
+    catch (const std::exception& e)
     {
-        const tripose_samples::TrackedFrame& f = frames[k];
-        status.at<int>(k) = (int)f.status;
-        keyframes.at<int>(k) = f.keyframe ? 1 : 0;
-        features.at<int>(k) = f.features;
-        inliers.at<int>(k) = f.inliers;
-        reference[k] = topView(sequence.Rs[k], sequence.ts[k]);
-        valid[k] = f.status != tripose_samples::FRAME_LOST;
-        const char* name = f.status == tripose_samples::FRAME_GIVEN      ? "given" :
-                           f.status == tripose_samples::FRAME_LOST       ? "LOST" :
-                           f.keyframe                                     ? "registered" :
-                                                                            "registered*";
-        nonKeyframes += f.status == tripose_samples::FRAME_REGISTERED && !f.keyframe;
-        if (!valid[k])
-        {
-            ++lost;
-            totalMs += f.milliseconds;
-            std::cout << cv::format("%5d  %-11s %5d  %8d  %7s  %12s  %7s  %15s  %.2f\n", k, name, f.knownViews,
-                                    f.features, "-", "-", "-", "-", f.milliseconds);
-            continue;
-        }
-        for (int r = 0; r < 3; ++r)
-        {
-            for (int c = 0; c < 3; ++c)
-                poses.at<double>(k, 3 * r + c) = f.R.at<double>(r, c);
-            poses.at<double>(k, 9 + r) = f.t.at<double>(r);
-        }
-        estimated[k] = topView(f.R, f.t);
-        const cv::tripose::support::PoseError error =
-            cv::tripose::support::poseError(f.R, f.t, sequence.Rs[k], sequence.ts[k]);
-        const double position = cv::norm(-f.R.t() * f.t - (-sequence.Rs[k].t() * sequence.ts[k]));
-        rotationErrors.at<double>(k) = error.rotationDeg;
-        positionErrors.at<double>(k) = position;
-        if (f.status == tripose_samples::FRAME_REGISTERED)
-        {
-            ++registered;
-            totalMs += f.milliseconds;
-            std::cout << cv::format("%5d  %-11s %5d  %8d  %7d  %12.4f  %7.4f  %15.3f  %.2f\n", k, name, f.knownViews,
-                                    f.features, f.inliers, error.rotationDeg, position, 100 * position / pathLength,
-                                    f.milliseconds);
-        }
-        else
-            std::cout << cv::format("%5d  %-11s\n", k, name);
+        std::cerr << "tripose_track: " << e.what() << "\n";
+        return 1;
     }
-    if (nonKeyframes > 0)
-        std::cout << "* not a keyframe: too little parallax with the window's last keyframe (--keyframe-parallax); "
-                     "later frames are not registered against it\n";
-    const double drift = valid[F - 1] ? 100 * positionErrors.at<double>(F - 1) / pathLength : nan;
-    std::cout << cv::format("Drift of the last frame: %.3f %% of the path; %d registered, %d lost; %.2f ms per frame\n",
-                            drift, registered, lost, totalMs / std::max(1, F - 2));
+    std::cout << cv::format("%zu frames: %d given, %d registered, %d lost; ms per frame: points (SIFT) %.0f, "
+                            "segments (EDLines, LBD) %.0f, tracking %.0f\n",
+                            results.size(), (int)std::min(given.size(), results.size()), registered, lost,
+                            times.points / std::max<size_t>(1, results.size()),
+                            (times.segmentDetection + times.segmentDescription) / std::max<size_t>(1, results.size()),
+                            [&] {
+                                double ms = 0;
+                                for (const auto& r : results)
+                                    ms += r.milliseconds;
+                                return ms / std::max<size_t>(1, results.size());
+                            }());
 
     try
     {
-        tripose_samples::writeAtomically(options.output, [&](cv::FileStorage& fs) {
-            fs << "sequence" << options.data << "correspondences" << (options.fromImages ? "images" : "sequence")
-               << "window" << options.track.window << "method" << options.method
-               << "local_refine" << (options.track.localAdjustment ? 1 : 0)
-               << "check_tracks" << (options.track.checkTracks ? 1 : 0);
-            fs << "poses" << poses << "status" << status << "keyframe" << keyframes << "features" << features
-               << "inliers" << inliers;
-            fs << "rotation_error_deg" << rotationErrors << "position_error" << positionErrors;
-            fs << "path_length" << pathLength << "drift_percent" << drift;
-            fs << "ms_per_frame" << totalMs / std::max(1, F - 2);
-        });
-        if (!options.plot.empty())
+        std::string text;
+        const int F = (int)results.size();
+        cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(std::nan(""))), status(F, 1, CV_32S), keyframes(F, 1, CV_32S),
+            featureCounts(F, 1, CV_32S), inliers(F, 1, CV_32S);
+        for (int k = 0; k < F; ++k)
         {
-            const std::string title = cv::format("%s: window %d, %s, drift %.2f %% of the path", options.data.c_str(),
-                                                 options.track.window, options.method.c_str(), drift);
-            tripose_samples::writeFileAtomically(options.plot, drawTrajectories(reference, estimated, valid, title));
+            cv::tripose::TrackedFrame& r = results[k];
+            status.at<int>(k) = r.status;
+            keyframes.at<int>(k) = r.keyframe ? 1 : 0;
+            featureCounts.at<int>(k) = r.features;
+            inliers.at<int>(k) = r.inliers;
+            // The current poses: a local adjustment moves frames after their own result.
+            if (r.status == cv::tripose::FRAME_LOST || !tracker->getPose(k, r.R, r.t))
+                continue;
+            StampedPose pose;
+            pose.timestamp = timestamps[k];
+            pose.R = cv::Matx33d(r.R);
+            pose.t = cv::Vec3d(r.t);
+            text += tumLine(pose) + "\n";
+            for (int i = 0; i < 9; ++i)
+                poses.at<double>(k, i) = pose.R(i / 3, i % 3);
+            for (int i = 0; i < 3; ++i)
+                poses.at<double>(k, 9 + i) = pose.t[i];
         }
-        if (!options.observations.empty())
-            tripose_samples::writeAtomically(options.observations, [&](cv::FileStorage& fs) {
-                for (size_t k = 0; k < observations.points.size(); ++k)
-                    fs << cv::format("K%zu", k) << observations.cameraMatrices[k] << cv::format("points%zu", k)
-                       << observations.points[k] << cv::format("lines%zu", k) << observations.lines[k];
+        writeFileAtomically(options.output, std::vector<unsigned char>(text.begin(), text.end()));
+        if (!options.yaml.empty())
+            writeAtomically(options.yaml, [&](cv::FileStorage& fs) {
+                fs << "images" << options.images << "window" << options.track.window << "poses" << poses
+                   << "status" << status << "keyframe" << keyframes << "features" << featureCounts << "inliers"
+                   << inliers;
             });
     }
     catch (const std::exception& e)

@@ -70,6 +70,7 @@ struct Text
     std::vector<std::string> keyOrder;  //!< The top-level keys as the text gives them, for messages.
     std::string what;                   //!< The file (or "the problem text"), for messages.
     bool allowUnknownKeys = false;      //!< Keys that are not in kProblemKeys, kSceneKeys (or a matrix's fields) pass.
+    bool poseOptional = false;          //!< R12 and t12 may both be absent (a calibration without the pose).
 
     const Node* find(const std::string& key) const
     {
@@ -575,6 +576,12 @@ Problem readFromText(const Text& text)
         requireShape(p.K[v], p.K.size() == 1 ? "K" : "K" + std::to_string(v + 1), 3, 3);
     p.dist = readShared(text, "dist", false, numViews);
     p.R12 = readMatrix(text, "R12");
+    if (text.poseOptional && p.R12.empty() && !hasMatrix(text, "t12"))
+    {
+        readFeatures(text, "points", 2, numViews, p.points);
+        readFeatures(text, "lines", 4, numViews, p.lines);
+        return p;
+    }
     if (p.R12.empty() || !(p.R12.total() == 9 || p.R12.total() == 3))
         throw keyError("R12", p.R12.empty() ? "missing" : "expected 3x3 rotation or 3x1 Rodrigues vector");
     p.t12 = readMatrix(text, "t12");
@@ -587,7 +594,7 @@ Problem readFromText(const Text& text)
 
 } // namespace
 
-Problem readProblem(const std::string& path, bool allowUnknownKeys)
+Problem readProblem(const std::string& path, bool allowUnknownKeys, bool poseOptional)
 {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
     if (!file)
@@ -600,6 +607,7 @@ Problem readProblem(const std::string& path, bool allowUnknownKeys)
         throw std::runtime_error("cannot read " + path);
     Text parsed = parseText(text, path);
     parsed.allowUnknownKeys = allowUnknownKeys;
+    parsed.poseOptional = poseOptional;
     return readFromText(parsed);
 }
 

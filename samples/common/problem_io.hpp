@@ -37,11 +37,12 @@ and in points3, points4, lines3 and lines4 a row of NaN (.nan) marks a feature t
 see (an absent key: the view sees none of that kind); every row count equals points1's or lines1's.
 Matrices are FileStorage's (rows, cols, dt, data). Any other key (at the top level: not one of
 problemFileKeys(); in a matrix: not one of FileStorage's fields) is an error naming it and the
-nearest known key, unless @p allowUnknownKeys (a file that carries other data). Throws
+nearest known key, unless @p allowUnknownKeys (a file that carries other data). With @p poseOptional,
+R12 and t12 may both be absent (a calibration whose poses come from elsewhere; both left empty). Throws
 std::runtime_error on text that is not YAML or JSON ("cannot parse", with the line), and naming the
 key on any unknown, malformed or inconsistent entry.
 */
-Problem readProblem(const std::string& path, bool allowUnknownKeys = false);
+Problem readProblem(const std::string& path, bool allowUnknownKeys = false, bool poseOptional = false);
 
 //! The same from text in memory (used by the fuzzer).
 Problem readProblemFromString(const std::string& text, bool allowUnknownKeys = false);

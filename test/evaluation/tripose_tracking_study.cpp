@@ -75,10 +75,10 @@ int main(int argc, char** argv)
         obs.cameraMatrices = seq.cameraMatrices;
         obs.points = seq.points;
         obs.lines = seq.lines;
-        std::vector<tripose_samples::TrackedFrame> frames(F);
+        std::vector<cv::tripose::TrackedFrame> frames(F);
         for (int k = 0; k < F; ++k)
         {
-            frames[k].status = k < 2 ? tripose_samples::FRAME_GIVEN : tripose_samples::FRAME_REGISTERED;
+            frames[k].status = k < 2 ? cv::tripose::FRAME_GIVEN : cv::tripose::FRAME_REGISTERED;
             frames[k].R = seq.Rs[k].clone();
             frames[k].t = seq.ts[k].clone();
         }

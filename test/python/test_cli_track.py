@@ -1,4 +1,4 @@
-"""End-to-end tests of `tripose_track` on the VGG sequences: the drift it reaches (bounds set from
+"""End-to-end tests of `tripose_track_vgg` (test/evaluation) on the VGG sequences: the drift it reaches (bounds set from
 the figures of doc/tracking.md), the output file, the plot, the lost-frame status and the rejection
 of bad input (a clear message naming the file or argument, exit status 1, nothing written)."""
 import shutil
@@ -15,7 +15,7 @@ VGG = REPO / "test" / "data" / "vgg"
 
 def track(tmp_path, data, *options):
     out = tmp_path / "track.yml"
-    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(data), "--output", str(out),
+    proc = subprocess.run([str(build_tool("tripose_track_vgg", folder="test/evaluation")), "--data", str(data), "--output", str(out),
                            *map(str, options)], capture_output=True, text=True, timeout=300)
     return proc, out
 

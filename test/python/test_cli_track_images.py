@@ -1,4 +1,4 @@
-"""End-to-end tests of `tripose_track --from-images`: the correspondences come from the folder's
+"""End-to-end tests of `tripose_track_vgg --from-images` (test/evaluation): the correspondences come from the folder's
 images through the image front end (frames 0 and 1 keep the sequence's poses). Run on the bundled
 Merton College I images, also with frames inserted (noise, a camera that stands still or only
 turns); bad input (a folder whose images do not match its cameras) is rejected with exit status 1,
@@ -17,7 +17,7 @@ VGG = REPO / "test" / "data" / "vgg"
 
 def track(tmp_path, data, *options, name="track.yml"):
     out = tmp_path / name
-    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(data), "--output", str(out),
+    proc = subprocess.run([str(build_tool("tripose_track_vgg", folder="test/evaluation")), "--data", str(data), "--output", str(out),
                            "--from-images", *map(str, options)], capture_output=True, text=True, timeout=300)
     return proc, out
 
@@ -55,7 +55,7 @@ def test_images_and_sequence_correspondences_differ(tmp_path):
     from_images, _ = track(tmp_path, VGG / "Merton-College-I")
     assert from_images.returncode == 0, from_images.stderr
     images = read_matrices(tmp_path / "track.yml", ["features"])["features"].ravel()
-    proc = subprocess.run([str(build_tool("tripose_track")), "--data", str(VGG / "Merton-College-I"), "--output",
+    proc = subprocess.run([str(build_tool("tripose_track_vgg", folder="test/evaluation")), "--data", str(VGG / "Merton-College-I"), "--output",
                            str(tmp_path / "own.yml")], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     own = read_matrices(tmp_path / "own.yml", ["features"])["features"].ravel()

@@ -3,7 +3,7 @@ an absent one and give a wrong answer or a message about something else. Each to
 key/value file (tripose_estimate: the problem file; tripose_stereo_chessboard: the image list;
 tripose_tracking_study: the track file of --start) names the unknown key and the nearest known one,
 exits with status 1 and writes nothing; --allow-unknown-keys reads a file that carries other data.
-tripose_track reads the VGG sequences' own text files, which have no keys.
+tripose_track_vgg reads the VGG sequences' own text files, which have no keys.
 """
 import subprocess
 
@@ -194,7 +194,7 @@ def run_tracking_study(track_file, *extra):
 
 
 def test_tracking_study_start_file_key_is_checked(tmp_path):
-    # The --start file is tripose_track's output; "pose" for "poses" is named with the nearest key.
+    # The --start file is tripose_track_vgg's output; "pose" for "poses" is named with the nearest key.
     track = tmp_path / "track.yml"
     write_problem(track, {"pose": np.zeros((3, 12)), "window": np.array([[5.0]])})
     proc = run_tracking_study(track)

@@ -10,6 +10,7 @@
 #include "opencv2/tripose/robust.hpp"
 #include "opencv2/tripose/multiview.hpp"
 #include "opencv2/tripose/stereo.hpp"
+#include "opencv2/tripose/tracker.hpp"
 
 /**
 @defgroup tripose Camera pose from point and line triplets in three views

@@ -1,0 +1,155 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef OPENCV_TRIPOSE_TRACKER_HPP
+#define OPENCV_TRIPOSE_TRACKER_HPP
+
+#include <string>
+#include <vector>
+
+#include "opencv2/core.hpp"
+#include "opencv2/tripose/robust.hpp"
+
+namespace cv {
+namespace tripose {
+
+//! @addtogroup tripose_pose
+//! @{
+
+//! How the features of two frames are matched. Every match is mutual best with a ratio test.
+struct CV_EXPORTS MatchParams
+{
+    MatchParams();
+    /** A point pair is a candidate when each point lies within this distance (px) of the other's
+    epipolar line (default 2); also the inlier distance of the fundamental matrix that frames of
+    unknown relative pose are matched under. */
+    double epipolarDistance;
+    //! A segment pair is a candidate when the second segment covers at least this fraction of the
+    //! shorter of itself and the epipolar band of the first (default 0.5).
+    double minBandOverlap;
+    //! Segments within this angle (deg) of the epipolar lines are not matched under the geometry (default 5).
+    double minEpipolarAngleDeg;
+    double pointRatio; //!< Point descriptors: best distance below this fraction of the second best (default 0.8).
+    double lineRatio;  //!< Line descriptors: the same (default 0.8).
+    //! Binary line descriptors further apart than this many bits never match (default 80).
+    double maxLineDistance;
+    //! Frames of unknown relative pose are matched under their fundamental matrix when at least this
+    //! many descriptor matches agree with it, by descriptor alone otherwise (default 30).
+    int minFundamentalInliers;
+};
+
+//! Parameters of Tracker.
+struct CV_EXPORTS TrackerParams
+{
+    TrackerParams();
+    int window; //!< Keyframes a new frame is registered against (default 5, at least 2).
+    //! A frame is registered only when at least this many features agree with its pose (default 15):
+    //! chance matches give poses with a handful of inliers.
+    int minInliers;
+    /** A registered frame becomes a keyframe, one later frames are registered against, when the
+    median angle its inlier structure subtends between it and the window's last keyframe is at
+    least this (degrees, default 0.1; 0: every registered frame). */
+    double keyframeParallaxDeg;
+    /** Before a registration, the window's observations that disagree with its poses by more than
+    the RANSAC threshold are dropped; after it, the features it rejects start new tracks (default true). */
+    bool checkTracks;
+    //! After each registration, refine the window's registered frames and their structure against the
+    //! earlier keyframes (default false).
+    bool localAdjustment;
+    bool robust; //!< Register with estimatePoseMultiViewRansac()'s estimator (default true), else the linear one.
+    RansacParams ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
+    MatchParams matching; //!< Of consecutive frames' features.
+    //! A frame that shares too few matches with the one before for their epipolar geometry is matched
+    //! to the nearest of the frames up to this many back that does (default 3).
+    int maxFrameGap;
+};
+
+//! What Tracker made of a frame.
+enum TrackedFrameStatus
+{
+    FRAME_GIVEN = 0,      //!< The pose came with the frame.
+    FRAME_REGISTERED = 1, //!< Registered against the window of keyframes.
+    FRAME_LOST = 2        //!< No pose: too little support (TrackedFrame::reason says which).
+};
+
+//! The result of one frame.
+struct CV_EXPORTS TrackedFrame
+{
+    int frame = -1;              //!< The frame's index, in the order given.
+    int status = FRAME_LOST;     //!< A TrackedFrameStatus.
+    Mat R, t;                    //!< 3x3 and 3x1 CV_64F, x_cam = R X + t; empty when lost.
+    int features = 0;            //!< Features the frame shares with at least two window keyframes.
+    int inliers = 0;             //!< Of them, those that agree with the pose.
+    int knownViews = 0;          //!< Window keyframes registered against.
+    bool keyframe = false;       //!< Later frames are registered against it.
+    double milliseconds = 0;     //!< Time of matching and registration.
+    std::string reason;          //!< Why the frame is lost; empty otherwise.
+    std::vector<int> pointTracks, lineTracks; //!< Per point and segment of the frame: its track, -1 for none.
+};
+
+/** @brief A monocular camera tracked frame by frame from points and line segments.
+
+Feed it one frame at a time, as features (points and segments with descriptors, from any detector)
+or as observations of tracks the caller already linked, optionally with the frame's pose. The first
+two frames need their poses: they fix the world frame and the scale. Every later frame is matched to
+the one before it (under their epipolar geometry, estimated from the descriptors; past a frame that
+matches too poorly, to an earlier one) and registered against a window of the keyframes before it
+with the multi-view estimator. A frame with too little support is lost (FRAME_LOST), never given a
+wrong pose, and tracking goes on with the next frame.
+
+Poses follow the module: x ~ K (R X + t), X in the world frame. Bad input throws cv::Exception naming
+the argument.
+*/
+class CV_EXPORTS Tracker
+{
+public:
+    virtual ~Tracker();
+
+    /** @param cameraMatrix 3x3 intrinsics.
+    @param distCoeffs OpenCV's distortion coefficients, or empty; the features are undistorted with them.
+    @param params The tracker's parameters.
+    */
+    static Ptr<Tracker> create(InputArray cameraMatrix, InputArray distCoeffs = noArray(),
+                               const TrackerParams& params = TrackerParams());
+
+    /** @brief The next frame from its features.
+    @param points Nx2 (or Nx1 2-channel, or a vector of Point2f/Point2d) positions in pixels.
+    @param pointDescriptors N rows: CV_32F (compared by L2 distance, e.g. SIFT) or CV_8U (Hamming, e.g. ORB).
+    @param segments Mx4 segments x0 y0 x1 y1 in pixels (or empty).
+    @param lineDescriptors M rows, CV_32F or CV_8U (e.g. LBD).
+    @param R, t The frame's pose when known (the first two frames need it), else empty.
+    @param cameraMatrix This frame's intrinsics when they differ from the tracker's, else empty.
+    */
+    virtual TrackedFrame addFeatures(InputArray points, InputArray pointDescriptors, InputArray segments,
+                                     InputArray lineDescriptors, InputArray R = noArray(), InputArray t = noArray(),
+                                     InputArray cameraMatrix = noArray()) = 0;
+
+    /** @brief The next frame from observations of tracks the caller linked.
+    @param points Nx2 positions; @p pointIds N integers (CV_32S), the same id naming the same feature
+    in every frame. @p segments Mx4, @p lineIds M integers. The other parameters as addFeatures().
+    */
+    virtual TrackedFrame addObservations(InputArray points, InputArray pointIds, InputArray segments,
+                                         InputArray lineIds, InputArray R = noArray(), InputArray t = noArray(),
+                                         InputArray cameraMatrix = noArray()) = 0;
+
+    //! Frames given so far.
+    virtual int numFrames() const = 0;
+
+    /** The current pose of frame @p frame (a local adjustment may have moved it since its result);
+    false, outputs untouched, when the frame is lost. */
+    virtual bool getPose(int frame, OutputArray R, OutputArray t) const = 0;
+
+    /** How far the points of the first two frames agree with their given poses, judged without them:
+    (points matched by descriptor alone, of them lying within the epipolar distance of their
+    epipolar lines). Under 30 % of 20 or more says that the images are not in the poses' order or
+    the calibration is not theirs. (0, 0) before frame 1, or from observations. */
+    virtual Vec2i givenPairAgreement() const = 0;
+};
+
+//! @}
+
+} // namespace tripose
+} // namespace cv
+
+#endif // OPENCV_TRIPOSE_TRACKER_HPP
