@@ -11,6 +11,7 @@ the checkout (or $TRIPOSE_REAL_IMAGES); it is part of CI, so a missing folder fa
 """
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 import cv2
@@ -21,8 +22,8 @@ import tripose
 from tripose import images
 
 REPO = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(REPO / "test" / "python"))
-sys.path.insert(0, str(REPO / "samples" / "python"))
+sys.path.append(str(REPO / "test" / "python"))  # real_sequences.py
+sys.path.append(str(REPO / "samples" / "python"))  # vgg.py
 import real_sequences as rs  # noqa: E402
 import vgg  # noqa: E402
 
@@ -32,12 +33,17 @@ CLI_TIMEOUT = 300
 
 # --- helpers -------------------------------------------------------------------------------------------
 
-def cli_options(pixel_scale, window=None):
-    """TrackerOptions as tripose-track builds them: the default pixel tolerances grown by the
-    reduction of the detection images."""
+def cli_options(pixel_scale, window=None, min_inliers=None, threshold=None, local_adjustment=False):
+    """TrackerOptions as tripose-track builds them: the pixel tolerances grown by the reduction of
+    the detection images."""
     options = tripose.TrackerOptions()
     if window is not None:
         options.window = window
+    if min_inliers is not None:
+        options.min_inliers = min_inliers
+    if threshold is not None:
+        options.ransac.threshold = threshold
+    options.local_adjustment = local_adjustment
     options.ransac.threshold *= pixel_scale
     options.ransac.refine_options.loss_scale *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
@@ -68,8 +74,10 @@ def errors(seq, trajectory, frame, truth_frame=None):
 def run_cli(*arguments, script=False, cwd=None):
     """tripose-track (the installed console script) or python -m tripose.track_cli."""
     if script:
-        program = Path(sys.executable).parent / "tripose-track"
-        assert program.is_file(), f"{program}: the console script is not installed"
+        candidates = [Path(sysconfig.get_path("scripts")) / "tripose-track",
+                      Path(sys.executable).parent / "tripose-track"]
+        program = next((c for c in candidates if c.is_file()), None)
+        assert program is not None, f"the console script tripose-track is not installed (looked in {candidates})"
         command = [str(program)]
     else:
         command = [sys.executable, "-m", "tripose.track_cli"]
@@ -192,17 +200,22 @@ def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small
     listing.write_text("".join(f"{s:.1f} {p}\n" for s, p in zip(stamps, paths)))
     poses = tmp_path / "initial.txt"
     rs.write_tum(poses, stamps[:given], fountain.R[:given], fountain.t[:given])
-    output = tmp_path / "trajectory.txt"
-    proc = run_cli("--images", listing, "--calib", calib, "--poses", poses, "--output", output, "--window", 4,
-                   cwd=tmp_path)
+    output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
+    proc = run_cli("--images", listing, "--calib", calib, "--poses", poses, "--output", output, "--yaml", result_yaml,
+                   "--window", 4, "--min-inliers", 20, "--threshold", 1.5, "--local-adjustment", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     assert "--poses" in proc.stdout  # the calibration's R12, t12 are not used
+    fs = cv2.FileStorage(str(result_yaml), cv2.FILE_STORAGE_READ)
+    assert [fs.getNode(key).real() for key in ("window", "min_inliers", "threshold", "local_adjustment")] == \
+        [4, 20, 1.5, 1]
+    fs.release()
     fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
     K = fs.getNode("K").mat()
     fs.release()
     features = [images.extract_features(images.read_image(p), K) for p in paths]
     _, given_Rs, given_ts = rs.read_tum(poses)
-    results, trajectory = track(K, features, list(zip(given_Rs, given_ts)), cli_options(1.0, window=4))
+    options = cli_options(1.0, window=4, min_inliers=20, threshold=1.5, local_adjustment=True)
+    results, trajectory = track(K, features, list(zip(given_Rs, given_ts)), options)
     assert [r.status for r in results] == [GIVEN] * given + [REGISTERED] * (count - given)
     out_stamps, Rs, ts = rs.read_tum(output)
     np.testing.assert_array_equal(out_stamps, stamps)
@@ -243,8 +256,9 @@ def test_orb_points_and_lsd_segments(fountain):
         keypoints, point_descriptors = cv2.ORB_create(4000).detectAndCompute(small, None)
         segments = cv2.createLineSegmentDetector().detect(small)[0].reshape(-1, 4).astype(np.float64)
         segments = segments[np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]) >= 20]
-        features.append(tripose.Features(points=np.array([k.pt for k in keypoints]), point_descriptors=point_descriptors,
-                                         segments=segments, line_descriptors=_lbd(small, segments)))
+        features.append(tripose.Features(points=np.array([k.pt for k in keypoints]),
+                                         point_descriptors=point_descriptors, segments=segments,
+                                         line_descriptors=_lbd(small, segments)))
     assert features[0].point_descriptors.dtype == np.uint8 and features[0].line_descriptors.dtype == np.uint8
     factor = np.array([small.shape[1] / fountain.width, small.shape[0] / fountain.height])
     K = fountain.K[0].copy()

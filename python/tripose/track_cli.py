@@ -24,10 +24,12 @@ Pixel tolerances (--threshold, default 2 px, and the matching's epipolar distanc
 features detected at full size: when the images are detected in a reduced copy (--max-image-size),
 they grow by the reduction factor, as the features are that much less precise in the images' pixels.
 
-A frame that cannot be read or decoded is reported on stderr and lost; tracking goes on. A source,
-calibration or pose file that cannot be used, an image whose size contradicts the calibration, or an
-output that cannot be written ends the program with exit status 1 before anything is written: the
-outputs are written only at the end, each through a temporary file renamed onto it.
+A frame that cannot be read or decoded is reported on stderr and lost (one with a given pose keeps
+it); tracking goes on. A source, calibration or pose file that cannot be used, a source none of whose
+frames can be decoded, an image whose size contradicts the calibration (K's principal point outside
+the image: check_image_fits), or an output that cannot be written ends the program with exit status
+1 and a message naming the option, file, key or frame, before anything is written: the outputs are
+written only at the end, each through a temporary file renamed onto it.
 
 Also run as `python -m tripose.track_cli`.
 """
