@@ -191,8 +191,14 @@ def test_program_gives_the_api_poses(tmp_path, fountain, fountain_track):
 
 def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small_fountain):
     # A list file of frames 0-5 of the reduced images with timestamps; frames 0-2 given in the world
-    # of the ground truth.
-    folder, calib = small_fountain
+    # of the ground truth; a calibration with distortion, which the tracker applies to the features.
+    folder, small_calib = small_fountain
+    fs = cv2.FileStorage(str(small_calib), cv2.FILE_STORAGE_READ)
+    K = fs.getNode("K").mat()
+    fs.release()
+    dist = np.array([0.01, -0.002, 0.0, 0.0, 0.0])
+    calib = tmp_path / "calib.yml"
+    rs.write_calibration_yaml(calib, K, dist=dist, R12=fountain.R[1], t12=fountain.t[1])
     count, given = 6, 3
     paths = sorted(folder.iterdir())[:count]
     listing = tmp_path / "frames.txt"
@@ -209,13 +215,10 @@ def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small
     assert [fs.getNode(key).real() for key in ("window", "min_inliers", "threshold", "local_adjustment")] == \
         [4, 20, 1.5, 1]
     fs.release()
-    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
-    K = fs.getNode("K").mat()
-    fs.release()
-    features = [images.extract_features(images.read_image(p), K) for p in paths]
+    features = [images.extract_features(images.read_image(p), K) for p in paths]  # without dist
     _, given_Rs, given_ts = rs.read_tum(poses)
     options = cli_options(1.0, window=4, min_inliers=20, threshold=1.5, local_adjustment=True)
-    results, trajectory = track(K, features, list(zip(given_Rs, given_ts)), options)
+    results, trajectory = track(K, features, list(zip(given_Rs, given_ts)), options, dist=dist)
     assert [r.status for r in results] == [GIVEN] * given + [REGISTERED] * (count - given)
     out_stamps, Rs, ts = rs.read_tum(output)
     np.testing.assert_array_equal(out_stamps, stamps)

@@ -230,13 +230,16 @@ def read_calibration(path: Path):
         raise InputError(f"--calib {path}: cannot be opened as OpenCV YAML, JSON or XML")
     try:
         values = {key: _matrix(fs, key) for key in ("K", "dist", "R12", "t12")}
+        per_view_K = not fs.getNode("K1").empty()
     except InputError as error:
         raise InputError(f"--calib {path}: {error}") from None
     finally:
         fs.release()
     K = values["K"]
     if K is None:
-        raise InputError(f"--calib {path}: no key K (the 3x3 camera matrix)")
+        per_view = " (K1, K2, ... are per view of a triplet: a tracked sequence has one camera, K)" \
+            if per_view_K else ""
+        raise InputError(f"--calib {path}: no key K (the 3x3 camera matrix){per_view}")
     if K.size != 9 or not np.all(np.isfinite(K)):
         raise InputError(f"--calib {path}: key K: expected a finite 3x3 camera matrix, got {K.size} values")
     K = K.reshape(3, 3)
