@@ -45,7 +45,6 @@ def cli_options(pixel_scale, window=None, min_inliers=None, threshold=None, loca
         options.ransac.threshold = threshold
     options.local_adjustment = local_adjustment
     options.ransac.threshold *= pixel_scale
-    options.ransac.refine_options.loss_scale *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
     return options
 

@@ -334,7 +334,6 @@ def tracker_options(args, pixel_scale: float = 1.0):
         options.ransac.threshold = args.threshold
     options.local_adjustment = bool(args.local_adjustment)
     options.ransac.threshold *= pixel_scale
-    options.ransac.refine_options.loss_scale *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
     return options
 
