@@ -30,7 +30,6 @@
 
 #include "arguments.hpp"
 #include "feature_matching.hpp"
-#include "feature_triplets.hpp"
 #include "image_estimation.hpp"
 #include "image_features.hpp"
 #include "image_input.hpp"
@@ -339,12 +338,14 @@ int main(int argc, char** argv)
     // The most common calibration mistake, view 2's pose inverted (or the images in another order),
     // still yields matches and a pose, a wrong one: the descriptor matches of views 1-2, which do not
     // depend on the calibration, tell it.
-    EpipolarAgreement agreement;
-    const FeatureTriplets triplets = matchTriplets(features, K, cv::Matx33d(calibration.R12), cv::Vec3d(calibration.t12),
-                                                   withPixelScale(MatchOptions(), pixelScale), times, &agreement);
-    if (agreement.contradicts())
+    const int64 matchingStart = cv::getTickCount();
+    const cv::tripose::FeatureTriplets triplets = cv::tripose::matchFeatureTriplets(
+        features[0], features[1], features[2], std::vector<cv::Mat>{ cv::Mat(K[0]), cv::Mat(K[1]), cv::Mat(K[2]) },
+        calibration.R12, calibration.t12, withPixelScale(cv::tripose::MatchParams(), pixelScale));
+    times.matching += 1e3 * double(cv::getTickCount() - matchingStart) / cv::getTickFrequency();
+    if (contradicts(triplets.pairAgreement))
         std::cerr << "tripose_images: warning: images 1 and 2 do not follow R12, t12 of " << options.calib << ": "
-                  << agreement.summary() << ". Is [R12 | t12] view 2's pose in view 1's frame (x2 = R12 x1 + t12, "
+                  << agreementSummary(triplets.pairAgreement) << ". Is [R12 | t12] view 2's pose in view 1's frame (x2 = R12 x1 + t12, "
                   << "not its inverse), and are the images in the calibration's order?\n";
     const int tracks = triplets.points[0].rows, segments = triplets.lines[0].rows;
     std::cout << cv::format("tripose_images: %d / %d / %d points, %d / %d / %d segments; %d point pairs of views "

@@ -32,7 +32,7 @@
 #include <opencv2/tripose.hpp>
 
 #include "arguments.hpp"
-#include "feature_triplets.hpp"
+#include "feature_matching.hpp"
 #include "image_estimation.hpp"
 #include "image_features.hpp"
 #include "image_input.hpp"
@@ -243,7 +243,7 @@ std::string jsonOutcome(const Outcome& o)
 t_gt, points1..3, lines1..3, and the structure of views 1-2: points3d_12, lines3d_12), for peers run
 from Python on the same matches; with the views and two of this report's results. */
 std::string inputsJson(const int v[3], const std::vector<cv::Mat>& K, const cv::Mat& R12, const cv::Mat& t12,
-                       const cv::Mat& Rref, const cv::Mat& tref, const FeatureTriplets& triplets, const Outcome& all,
+                       const cv::Mat& Rref, const cv::Mat& tref, const cv::tripose::FeatureTriplets& triplets, const Outcome& all,
                        const Outcome& pnp)
 {
     const cv::Matx33d K1(K[0]), K2(K[1]), R(R12);
@@ -357,7 +357,7 @@ int main(int argc, char** argv)
     // Features of images larger than --max-image-size's default are detected reduced: the pixel
     // tolerances of the matching and of the estimates on them grow by the reduction.
     const double pixelScale = detectionScale(images, options.features.maxImageSize);
-    const MatchOptions matching = withPixelScale(MatchOptions(), pixelScale);
+    const cv::tripose::MatchParams matching = withPixelScale(cv::tripose::MatchParams(), pixelScale);
     const cv::tripose::RansacParams imageRansac = withPixelScale(options.ransac, pixelScale);
     std::vector<Outcome> all, pointsOnly, pnp, ownCorrespondences;
     std::vector<StageTimes> tripletTimes;
@@ -376,8 +376,10 @@ int main(int argc, char** argv)
         const std::vector<ImageFeatures> features = extractFeaturesOfImages(
             { images[v[0]], images[v[1]], images[v[2]] }, { Kx[0], Kx[1], Kx[2] }, {}, options.features, times);
         const ImageFeatures views[3] = { features[0], features[1], features[2] };
-        const FeatureTriplets triplets =
-            matchTriplets(views, Kx, cv::Matx33d(R12), cv::Vec3d(t12), matching, times);
+        const int64 matchingStart = cv::getTickCount();
+        const cv::tripose::FeatureTriplets triplets =
+            cv::tripose::matchFeatureTriplets(views[0], views[1], views[2], K, R12, t12, matching);
+        times.matching += 1e3 * double(cv::getTickCount() - matchingStart) / cv::getTickFrequency();
 
         all.push_back(runTripose(triplets.points, triplets.lines, K, R12, t12, Rref, tref, imageRansac));
         times.estimation = all.back().milliseconds;

@@ -19,6 +19,7 @@
 #include "support/error.hpp"
 
 #include "tracking/tracker.hpp"
+#include "tracking/triplet_matching.hpp"
 
 namespace nb = nanobind;
 
@@ -154,7 +155,9 @@ const char* statusName(tripose::FrameStatus status)
 void bindTracker(nb::module_& m)
 {
     nb::class_<tripose::RefineOptions>(m, "RefineOptions",
-                                       "Options of the maximum-likelihood refinement (Levenberg-Marquardt).")
+                                       "Options of the maximum-likelihood refinement: Levenberg-Marquardt over the pose and the structure, "
+                                       "minimising the reprojection error in pixels under a loss. Fields: max_iterations, "
+                                       "loss, loss_scale, tolerance.")
         .def(nb::init<>())
         .def_rw("max_iterations", &tripose::RefineOptions::maxIterations, "Levenberg-Marquardt steps, accepted or rejected (> 0).")
         .def_prop_rw("loss",
@@ -183,7 +186,10 @@ void bindTracker(nb::module_& m)
                                          o.lossScale, o.tolerance);
         });
 
-    nb::class_<tripose::RansacOptions>(m, "RansacOptions", "Options of the robust estimators (LO-MSAC).")
+    nb::class_<tripose::RansacOptions>(m, "RansacOptions",
+                                       "Options of the robust estimators (LO-MSAC over minimal samples, then the "
+                                       "maximum-likelihood refinement over the inliers). Fields: threshold (px), "
+                                       "confidence, max_iterations, local_optimization, refine, refine_options, seed.")
         .def(nb::init<>())
         .def_rw("threshold", &tripose::RansacOptions::threshold, "Inlier threshold in pixels (> 0).")
         .def_rw("confidence", &tripose::RansacOptions::confidence,
@@ -203,7 +209,11 @@ void bindTracker(nb::module_& m)
                                          (unsigned long long)o.seed);
         });
 
-    nb::class_<tripose::MatchOptions>(m, "MatchOptions", "How the features of two frames are matched.")
+    nb::class_<tripose::MatchOptions>(m, "MatchOptions",
+                                      "How the features of two frames are matched: candidates near the epipolar "
+                                      "lines (or any, without a geometry), then mutual best descriptor with a ratio "
+                                      "test. Fields: epipolar_distance (px), min_band_overlap, min_epipolar_angle_deg, "
+                                      "point_ratio, line_ratio, max_line_distance, min_fundamental_inliers.")
         .def(nb::init<>())
         .def_rw("epipolar_distance", &tripose::MatchOptions::epipolarDistance,
                 "Largest distance (px) of a point from the other's epipolar line; also the fundamental "
@@ -224,7 +234,11 @@ void bindTracker(nb::module_& m)
                                          o.epipolarDistance, o.pointRatio, o.lineRatio, o.minFundamentalInliers);
         });
 
-    nb::class_<tripose::TrackerOptions>(m, "TrackerOptions", "Options of tripose.Tracker.")
+    nb::class_<tripose::TrackerOptions>(m, "TrackerOptions",
+                                        "Options of tripose.Tracker: the window of keyframes a frame is registered "
+                                        "against, the support a pose needs (min_inliers), keyframes by parallax, the "
+                                        "track checks, the local adjustment, and the RansacOptions (ransac) and "
+                                        "MatchOptions (matching) it uses. Defaults are the library's.")
         .def(nb::init<>())
         .def_rw("window", &tripose::TrackerOptions::window, "Keyframes a new frame is registered against (>= 2).")
         .def_rw("min_inliers", &tripose::TrackerOptions::minInliers,
@@ -251,12 +265,18 @@ void bindTracker(nb::module_& m)
                                          o.robust ? "True" : "False", o.maxFrameGap);
         });
 
-    nb::enum_<tripose::FrameStatus>(m, "FrameStatus", "What the tracker made of a frame.")
+    nb::enum_<tripose::FrameStatus>(m, "FrameStatus",
+                                      "What the tracker made of a frame: GIVEN (its pose came with it), REGISTERED "
+                                      "(registered against the window of keyframes) or LOST (no pose: too little "
+                                      "support; FrameResult.reason says why).")
         .value("GIVEN", tripose::FrameStatus::Given, "The pose came with the frame.")
         .value("REGISTERED", tripose::FrameStatus::Registered, "Registered against the window of keyframes.")
         .value("LOST", tripose::FrameStatus::Lost, "No pose: too little support (see FrameResult.reason).");
 
-    nb::class_<tripose::FrameResult>(m, "FrameResult", "What the tracker made of one frame.")
+    nb::class_<tripose::FrameResult>(m, "FrameResult",
+                                      "What the tracker made of one frame: status, the pose R, t (x_cam = R @ X + t; "
+                                      "None when lost), features and inliers, keyframe, the time, why it was lost, "
+                                      "and each feature's track.")
         .def_ro("frame", &tripose::FrameResult::frame, "The frame's index, in the order given.")
         .def_ro("status", &tripose::FrameResult::status, "FrameStatus.GIVEN, REGISTERED or LOST.")
         .def_prop_ro("R", [](const tripose::FrameResult& r) -> nb::object {
@@ -284,6 +304,46 @@ void bindTracker(nb::module_& m)
             return text + tripose::formatString(", centre=[%.4g, %.4g, %.4g], inliers=%d/%d, keyframe=%s)", c[0], c[1],
                                                 c[2], r.inliers, r.features, r.keyframe ? "True" : "False");
         });
+
+    m.def("_match_triplets",
+          [](const std::vector<nb::bytes>& points, const std::vector<size_t>& numPoints,
+             const std::vector<nb::bytes>& pointDescriptors, const std::vector<size_t>& pointWidths,
+             const std::vector<bool>& pointBinary, const std::vector<nb::bytes>& segments,
+             const std::vector<size_t>& numSegments, const std::vector<nb::bytes>& lineDescriptors,
+             const std::vector<size_t>& lineWidths, const std::vector<bool>& lineBinary, const std::vector<nb::bytes>& K,
+             const nb::bytes& R12, const nb::bytes& t12, const tripose::MatchOptions& options) {
+              tripose::FrameFeatures views[3];
+              Eigen::Matrix3d cameras[3];
+              for (int v = 0; v < 3; ++v)
+              {
+                  views[v].points = vectors<2>(points[v], numPoints[v]);
+                  views[v].segments = vectors<4>(segments[v], numSegments[v]);
+                  views[v].pointDescriptors = descriptors(pointDescriptors[v], numPoints[v], pointWidths[v], pointBinary[v]);
+                  views[v].lineDescriptors = descriptors(lineDescriptors[v], numSegments[v], lineWidths[v], lineBinary[v]);
+                  cameras[v] = matrix3(K[v]);
+              }
+              tripose::CameraPose pose12;
+              pose12.R = matrix3(R12);
+              const Block t(t12, 3, 1, sizeof(double));
+              for (int i = 0; i < 3; ++i)
+                  pose12.t[i] = t.at<double>(i, 0);
+              tripose::FeatureTriplets triplets;
+              {
+                  nb::gil_scoped_release release;
+                  tripose::checkMatchOptions(options, "options");
+                  triplets = tripose::matchTriplets(views, cameras, pose12, options);
+              }
+              nb::dict out;
+              for (int v = 0; v < 3; ++v)
+              {
+                  out[("point_rows" + std::to_string(v + 1)).c_str()] = intArray(triplets.pointRows[v]);
+                  out[("segment_rows" + std::to_string(v + 1)).c_str()] = intArray(triplets.segmentRows[v]);
+              }
+              out["point_pairs"] = triplets.pointPairs;
+              out["segment_pairs"] = triplets.segmentPairs;
+              out["pair_agreement"] = nb::make_tuple(triplets.pairAgreement.matches, triplets.pairAgreement.agreeing);
+              return out;
+          });
 
     nb::class_<tripose::Tracker>(m, "_Tracker")
         .def("__init__",
@@ -327,6 +387,12 @@ void bindTracker(nb::module_& m)
             if (!f.hasPose())
                 return nb::none();
             return nb::make_tuple(rotation(f.pose.R), array(f.pose.t.data(), { 3 }));
+        })
+        .def("tracks", [](const tripose::Tracker& self, int frame) {
+            if (frame < 0 || frame >= self.numFrames())
+                throw nb::index_error(("frame " + std::to_string(frame) + " is not one of the " +
+                                       std::to_string(self.numFrames()) + " frames tracked").c_str());
+            return nb::make_tuple(intArray(self.frame(frame).pointTrack), intArray(self.frame(frame).lineTrack));
         })
         .def("status", [](const tripose::Tracker& self, int frame) { return self.frame(frame).status; })
         .def("keyframe", [](const tripose::Tracker& self, int frame) { return self.frame(frame).keyframe; })

@@ -36,7 +36,7 @@ import numpy as np
 
 from . import _tripose_ext as _ext
 from .tracking import (Features, FrameResult, FrameStatus, MatchOptions, RansacOptions, RefineOptions, Tracker,
-                       TrackerOptions)
+                       TrackerOptions, match_triplets)
 
 __all__ = [
     "estimate_pose_line_point",
@@ -56,6 +56,7 @@ __all__ = [
     "RefineOptions",
     "MatchOptions",
     "Features",
+    "match_triplets",
     "FrameStatus",
     "FrameResult",
 ]

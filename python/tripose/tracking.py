@@ -10,7 +10,7 @@ keyframes and returns a FrameResult.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Mapping, Optional, Tuple, Union
+from typing import Any, Dict, Mapping, Optional, Tuple, Union
 
 import numpy as np
 
@@ -23,7 +23,7 @@ MatchOptions = _ext.MatchOptions
 FrameStatus = _ext.FrameStatus
 FrameResult = _ext.FrameResult
 
-__all__ = ["Features", "Tracker", "TrackerOptions", "RansacOptions", "RefineOptions", "MatchOptions",
+__all__ = ["Features", "match_triplets", "Tracker", "TrackerOptions", "RansacOptions", "RefineOptions", "MatchOptions",
            "FrameStatus", "FrameResult"]
 
 
@@ -92,6 +92,68 @@ def _pose(R: Any, t: Any) -> Tuple[Optional[np.ndarray], Optional[np.ndarray]]:
     return np.ascontiguousarray(R), np.ascontiguousarray(t.reshape(3, 1))
 
 
+def _features(features: FeaturesLike, name: str) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """points, point_descriptors, segments, line_descriptors of a Features or a dict, checked."""
+    if features is None:
+        features = Features()
+    if isinstance(features, Mapping):
+        unknown = set(features) - {"points", "point_descriptors", "segments", "line_descriptors"}
+        if unknown:
+            raise ValueError(f"{name} has unknown keys {sorted(unknown)}: expected points, point_descriptors, "
+                             "segments, line_descriptors")
+        features = Features(**features)
+    if not isinstance(features, Features):
+        raise TypeError(f"{name} must be a tripose.Features or a dict, got {type(features).__name__}")
+    points = _rows(features.points, f"{name}.points", 2)
+    segments = _rows(features.segments, f"{name}.segments", 4)
+    return (points, _descriptors(features.point_descriptors, f"{name}.point_descriptors", len(points)), segments,
+            _descriptors(features.line_descriptors, f"{name}.line_descriptors", len(segments)))
+
+
+def match_triplets(features1: FeaturesLike, features2: FeaturesLike, features3: FeaturesLike, K: Any, R12: Any,
+                   t12: Any, options: Optional[MatchOptions] = None) -> Dict[str, Any]:
+    """Point and segment triplets of three images whose views 1 and 2 have a known relative pose.
+
+    Views 1 and 2 are matched under their epipolar geometry (view 2 at [R12 | t12], view 1 at the
+    origin), then view 3 to those pairs' features in view 2 under the fundamental matrix of their
+    descriptor matches (by descriptor alone when too few agree with one); every match mutual best
+    with a ratio test. features*: tripose.Features or dicts (tripose.images.extract_features),
+    positions undistorted. K: one (3, 3) matrix or a sequence of three.
+
+    Returns a dict: points1..points3 (N, 2) and lines1..lines3 (M, 4), row i of each view the same
+    feature, as estimate_pose_line_point_ransac takes them; point_rows1..3 and segment_rows1..3 (the
+    rows of each view's features); point_pairs and segment_pairs (views 1-2 matched, before view 3);
+    pair_agreement (matches, agreeing): of the points of views 1-2 matched by descriptor alone, how
+    many lie on their epipolar lines under R12, t12 (under 30 % of 20 or more: the pose or the
+    image order is wrong).
+    """
+    if options is None:
+        options = MatchOptions()
+    if not isinstance(options, MatchOptions):
+        raise TypeError(f"options must be a tripose.MatchOptions, got {type(options).__name__}")
+    views = [_features(f, f"features{v + 1}") for v, f in enumerate((features1, features2, features3))]
+    Ks = [_camera(k, f"K[{v}]") for v, k in enumerate(K)] if isinstance(K, (list, tuple)) else [_camera(K)] * 3
+    if len(Ks) != 3:
+        raise ValueError(f"K must be one (3, 3) matrix or three, got {len(Ks)}")
+    R12 = np.asarray(R12, dtype=np.float64)
+    if R12.shape != (3, 3):
+        raise ValueError(f"R12 must have shape (3, 3), got {R12.shape}")
+    t12 = np.asarray(t12, dtype=np.float64).reshape(-1)
+    if t12.shape != (3,):
+        raise ValueError(f"t12 must hold 3 elements, got {t12.size}")
+    out = _ext._match_triplets([v[0].tobytes() for v in views], [len(v[0]) for v in views],
+                               [v[1].tobytes() for v in views], [v[1].shape[1] for v in views],
+                               [bool(v[1].dtype == np.uint8) for v in views], [v[2].tobytes() for v in views],
+                               [len(v[2]) for v in views], [v[3].tobytes() for v in views],
+                               [v[3].shape[1] for v in views], [bool(v[3].dtype == np.uint8) for v in views],
+                               [k.tobytes() for k in Ks], np.ascontiguousarray(R12).tobytes(),
+                               np.ascontiguousarray(t12).tobytes(), options)
+    for v in range(3):
+        out[f"points{v + 1}"] = views[v][0][out[f"point_rows{v + 1}"]]
+        out[f"lines{v + 1}"] = views[v][2][out[f"segment_rows{v + 1}"]]
+    return out
+
+
 def _pose_bytes(R: Optional[np.ndarray], t: Optional[np.ndarray]) -> Tuple[Optional[bytes], Optional[bytes]]:
     return (None, None) if R is None else (R.tobytes(), t.tobytes())
 
@@ -129,20 +191,7 @@ class Tracker:
         """The next frame from its features (a Features, or a dict with the same keys such as
         tripose.images.extract_features returns; None for a frame that could not be read, which is
         then lost). R, t: the frame's pose when known. K: this frame's camera matrix, when it differs."""
-        if features is None:
-            features = Features()
-        if isinstance(features, Mapping):
-            unknown = set(features) - {"points", "point_descriptors", "segments", "line_descriptors"}
-            if unknown:
-                raise ValueError(f"features has unknown keys {sorted(unknown)}: expected points, point_descriptors, "
-                                 "segments, line_descriptors")
-            features = Features(**features)
-        if not isinstance(features, Features):
-            raise TypeError(f"features must be a tripose.Features or a dict, got {type(features).__name__}")
-        points = _rows(features.points, "points", 2)
-        segments = _rows(features.segments, "segments", 4)
-        point_descriptors = _descriptors(features.point_descriptors, "point_descriptors", len(points))
-        line_descriptors = _descriptors(features.line_descriptors, "line_descriptors", len(segments))
+        points, point_descriptors, segments, line_descriptors = _features(features, "features")
         R, t = _pose(R, t)
         return self._tracker.add_features(points.tobytes(), len(points), point_descriptors.tobytes(),
                                           point_descriptors.shape[1], bool(point_descriptors.dtype == np.uint8),
@@ -179,6 +228,12 @@ class Tracker:
         """The current (R, t) of frame `frame` (a local adjustment may have moved it since its
         result); None when the frame is lost."""
         return self._tracker.pose(int(frame))
+
+    def tracks(self, frame: int) -> Tuple[np.ndarray, np.ndarray]:
+        """(point_tracks, line_tracks) of frame `frame` as they are now: the track of each of its points
+        and segments, -1 for none. A frame's features join tracks as later frames are matched to them
+        (FrameResult holds them as they were when the frame was added)."""
+        return self._tracker.tracks(int(frame))
 
     def trajectory(self):
         """Every frame's current pose, in order: a list of (R, t), None for a lost frame."""

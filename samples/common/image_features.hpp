@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/tripose/features.hpp>
 
 namespace tripose_samples {
 
@@ -26,15 +27,11 @@ enum FeatureKinds
 //! "points", "lines" or "all" as FeatureKinds; false for any other word.
 bool parseFeatureKinds(const std::string& word, FeatureKinds& kinds);
 
-//! The features of one image. Coordinates are those of an ideal pinhole camera with the image's K:
-//! undistorted when distortion coefficients were given.
-struct ImageFeatures
-{
-    cv::Mat points;           //!< Nx2 CV_64F key point positions (px).
-    cv::Mat pointDescriptors; //!< NxD CV_32F SIFT descriptors.
-    cv::Mat segments;         //!< Mx4 CV_64F segments x0 y0 x1 y1 (px).
-    cv::Mat lineDescriptors;  //!< Mx32 CV_8U LBD descriptors.
-};
+/** The features of one image as the library takes them: here Nx2 CV_64F SIFT key point positions
+with NxD CV_32F descriptors, Mx4 CV_64F segments with Mx32 CV_8U LBD descriptors. Coordinates are
+those of an ideal pinhole camera with the image's K: undistorted when distortion coefficients were
+given. */
+using ImageFeatures = cv::tripose::ImageFeatures;
 
 //! Milliseconds spent per stage (summed over the images of a run).
 struct StageTimes

@@ -81,13 +81,17 @@ std::vector<cv::tripose::TrackedFrame> trackSequence(SequenceObservations& seque
                                                   given ? (k == 0 ? sequence.R0 : sequence.R1) : cv::Mat(),
                                                   given ? (k == 0 ? sequence.t0 : sequence.t1) : cv::Mat(),
                                                   sequence.cameraMatrices[k]));
-        pointTracks[k] = frames.back().pointTracks;
-        lineTracks[k] = frames.back().lineTracks;
     }
-    // The poses a local adjustment moved after their frame's result.
+    // The poses a local adjustment moved after their frame's result, the tracks as they ended.
     for (int k = 0; k < F; ++k)
+    {
         if (frames[k].status != cv::tripose::FRAME_LOST)
             tracker->getPose(k, frames[k].R, frames[k].t);
+        cv::Mat pointTrack, lineTrack;
+        tracker->getTracks(k, pointTrack, lineTrack);
+        pointTracks[k] = pointTrack.empty() ? std::vector<int>() : std::vector<int>(pointTrack);
+        lineTracks[k] = lineTrack.empty() ? std::vector<int>() : std::vector<int>(lineTrack);
+    }
     sequence.points = observationsByTrack(pointRows, pointTracks, 2);
     sequence.lines = observationsByTrack(lineRows, lineTracks, 4);
     return frames;

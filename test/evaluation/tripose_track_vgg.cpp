@@ -262,8 +262,10 @@ std::vector<cv::tripose::TrackedFrame> trackFolderImages(const std::string& fold
             tracker->getPose((int)k, frames[k].R, frames[k].t);
         pointRows.push_back(detected[k].points);
         lineRows.push_back(detected[k].segments);
-        pointTracks.push_back(frames[k].pointTracks);
-        lineTracks.push_back(frames[k].lineTracks);
+        cv::Mat pointTrack, lineTrack;
+        tracker->getTracks((int)k, pointTrack, lineTrack);
+        pointTracks.push_back(pointTrack.empty() ? std::vector<int>() : std::vector<int>(pointTrack));
+        lineTracks.push_back(lineTrack.empty() ? std::vector<int>() : std::vector<int>(lineTrack));
     }
     observations.cameraMatrices = sequence.cameraMatrices;
     observations.points = observationsByTrack(pointRows, pointTracks, 2);

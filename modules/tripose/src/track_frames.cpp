@@ -8,23 +8,12 @@
 
 #include "core/tracking/tracker.hpp"
 #include "opencv/core_calls.hpp"
+#include "opencv/feature_reading.hpp"
 #include "opencv/opencv_compat.hpp"
 #include "opencv/options_conversion.hpp"
 
 namespace cv {
 namespace tripose {
-
-MatchParams::MatchParams()
-{
-    const detail::core::MatchOptions defaults;
-    epipolarDistance = defaults.epipolarDistance;
-    minBandOverlap = defaults.minBandOverlap;
-    minEpipolarAngleDeg = defaults.minEpipolarAngleDeg;
-    pointRatio = defaults.pointRatio;
-    lineRatio = defaults.lineRatio;
-    maxLineDistance = defaults.maxLineDistance;
-    minFundamentalInliers = defaults.minFundamentalInliers;
-}
 
 TrackerParams::TrackerParams()
 {
@@ -54,78 +43,10 @@ core::TrackerOptions toCoreOptions(const TrackerParams& params)
     o.localAdjustment = params.localAdjustment;
     o.robust = params.robust;
     o.ransac = detail::toCoreOptions(params.ransac);
-    o.matching.epipolarDistance = params.matching.epipolarDistance;
-    o.matching.minBandOverlap = params.matching.minBandOverlap;
-    o.matching.minEpipolarAngleDeg = params.matching.minEpipolarAngleDeg;
-    o.matching.pointRatio = params.matching.pointRatio;
-    o.matching.lineRatio = params.matching.lineRatio;
-    o.matching.maxLineDistance = params.matching.maxLineDistance;
-    o.matching.minFundamentalInliers = params.matching.minFundamentalInliers;
+    o.matching = detail::toCoreOptions(params.matching);
     o.maxFrameGap = params.maxFrameGap;
     core::checkTrackerOptions(o, "params");
     return o;
-}
-
-//! Rows of @p width values (N x width, or N x 1 of width channels, any depth), as CV_64F.
-Mat readRows(InputArray array, int width, const char* name)
-{
-    if (array.empty())
-        return Mat(0, width, CV_64F);
-    Mat m = array.getMat();
-    if (m.channels() == width && (m.cols == 1 || m.rows == 1))
-        m = m.reshape(1, (int)m.total());
-    if (m.dims != 2 || m.channels() != 1 || m.cols != width)
-        CV_Error_(Error::StsBadSize, ("%s must be N x %d (or N x 1 with %d channels)", name, width, width));
-    Mat out;
-    m.convertTo(out, CV_64F);
-    return out;
-}
-
-template <int W>
-std::vector<Eigen::Matrix<double, W, 1>> vectors(const Mat& rows)
-{
-    std::vector<Eigen::Matrix<double, W, 1>> out(rows.rows);
-    for (int i = 0; i < rows.rows; ++i)
-        for (int c = 0; c < W; ++c)
-            out[i][c] = rows.at<double>(i, c);
-    return out;
-}
-
-core::Descriptors readDescriptors(InputArray array, int rows, const char* name)
-{
-    core::Descriptors d;
-    if (array.empty())
-    {
-        if (rows > 0)
-            CV_Error_(Error::StsBadSize, ("%s is empty: one descriptor row per feature is needed", name));
-        return d;
-    }
-    Mat m = array.getMat();
-    if (m.dims != 2 || m.channels() != 1 || m.rows != rows || !(m.depth() == CV_32F || m.depth() == CV_8U))
-        CV_Error_(Error::StsBadSize, ("%s must have one row per feature (%d), CV_32F or CV_8U, single channel",
-                                      name, rows));
-    m = m.isContinuous() ? m : m.clone();
-    d.rows = m.rows;
-    d.cols = m.cols;
-    d.binary = m.depth() == CV_8U;
-    if (d.binary)
-        d.bits.assign(m.ptr<uchar>(), m.ptr<uchar>() + m.total());
-    else
-        d.real.assign(m.ptr<float>(), m.ptr<float>() + m.total());
-    return d;
-}
-
-Eigen::Matrix3d readMatrix3(InputArray array, const char* name)
-{
-    Mat m = array.getMat();
-    if (m.total() != 9 || m.channels() != 1)
-        CV_Error_(Error::StsBadSize, ("%s must be 3x3", name));
-    Mat d;
-    m.reshape(1, 3).convertTo(d, CV_64F);
-    Eigen::Matrix3d out;
-    for (int i = 0; i < 9; ++i)
-        out(i / 3, i % 3) = d.at<double>(i / 3, i % 3);
-    return out;
 }
 
 //! The optional pose and camera matrix of a frame.
@@ -145,7 +66,7 @@ struct FrameExtras
             R.getMat().convertTo(r, CV_64F);
             if (r.total() == 3)
                 Rodrigues(r.reshape(1, 3), r);
-            pose.R = readMatrix3(r, "R");
+            pose.R = detail::readMatrix3(r, "R");
             Mat tv = t.getMat();
             if (tv.total() != 3 || tv.channels() != 1)
                 CV_Error(Error::StsBadSize, "t must hold 3 elements");
@@ -156,7 +77,7 @@ struct FrameExtras
         }
         if (!cameraMatrix.empty())
         {
-            K = readMatrix3(cameraMatrix, "cameraMatrix");
+            K = detail::readMatrix3(cameraMatrix, "cameraMatrix");
             hasK = true;
         }
     }
@@ -229,7 +150,7 @@ public:
                   distCoeffs.getMat().convertTo(d, CV_64F);
                   dist.assign(d.ptr<double>(), d.ptr<double>() + d.total());
               }
-              return core::Tracker(readMatrix3(cameraMatrix, "cameraMatrix"), dist, toCoreOptions(params));
+              return core::Tracker(detail::readMatrix3(cameraMatrix, "cameraMatrix"), dist, toCoreOptions(params));
           }))
     {
     }
@@ -238,11 +159,7 @@ public:
                              InputArray lineDescriptors, InputArray R, InputArray t, InputArray cameraMatrix) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        core::FrameFeatures f;
-        f.points = vectors<2>(readRows(points, 2, "points"));
-        f.segments = vectors<4>(readRows(segments, 4, "segments"));
-        f.pointDescriptors = readDescriptors(pointDescriptors, (int)f.points.size(), "pointDescriptors");
-        f.lineDescriptors = readDescriptors(lineDescriptors, (int)f.segments.size(), "lineDescriptors");
+        const core::FrameFeatures f = detail::readFrameFeatures(points, pointDescriptors, segments, lineDescriptors);
         const FrameExtras extras(R, t, cameraMatrix);
         return toTrackedFrame(
             TRIPOSE_CALL_CORE([&] { return tracker_.addFeatures(f, extras.posePtr(), extras.KPtr()); }));
@@ -252,8 +169,8 @@ public:
                                  InputArray R, InputArray t, InputArray cameraMatrix) CV_OVERRIDE
     {
         CV_INSTRUMENT_REGION();
-        const std::vector<Eigen::Vector2d> p = vectors<2>(readRows(points, 2, "points"));
-        const std::vector<Eigen::Vector4d> s = vectors<4>(readRows(segments, 4, "segments"));
+        const std::vector<Eigen::Vector2d> p = detail::vectors<2>(detail::readRows(points, 2, "points"));
+        const std::vector<Eigen::Vector4d> s = detail::vectors<4>(detail::readRows(segments, 4, "segments"));
         const std::vector<int64_t> pi = readIds(pointIds, (int)p.size(), "pointIds");
         const std::vector<int64_t> li = readIds(lineIds, (int)s.size(), "lineIds");
         const FrameExtras extras(R, t, cameraMatrix);
@@ -273,6 +190,15 @@ public:
         matOf(f.pose.R).copyTo(R);
         matOf(f.pose.t).copyTo(t);
         return true;
+    }
+
+    void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks) const CV_OVERRIDE
+    {
+        if (frame < 0 || frame >= tracker_.numFrames())
+            CV_Error_(Error::StsOutOfRange, ("frame %d is not one of the %d frames tracked", frame, tracker_.numFrames()));
+        const core::StoredFrame& f = tracker_.frame(frame);
+        Mat(f.pointTrack, true).copyTo(pointTracks);
+        Mat(f.lineTrack, true).copyTo(lineTracks);
     }
 
     Vec2i givenPairAgreement() const CV_OVERRIDE

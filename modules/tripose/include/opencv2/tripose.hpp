@@ -10,6 +10,7 @@
 #include "opencv2/tripose/robust.hpp"
 #include "opencv2/tripose/multiview.hpp"
 #include "opencv2/tripose/stereo.hpp"
+#include "opencv2/tripose/features.hpp"
 #include "opencv2/tripose/tracker.hpp"
 
 /**

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "opencv2/core.hpp"
+#include "opencv2/tripose/features.hpp"
 #include "opencv2/tripose/robust.hpp"
 
 namespace cv {
@@ -16,28 +17,6 @@ namespace tripose {
 
 //! @addtogroup tripose_pose
 //! @{
-
-//! How the features of two frames are matched. Every match is mutual best with a ratio test.
-struct CV_EXPORTS MatchParams
-{
-    MatchParams();
-    /** A point pair is a candidate when each point lies within this distance (px) of the other's
-    epipolar line (default 2); also the inlier distance of the fundamental matrix that frames of
-    unknown relative pose are matched under. */
-    double epipolarDistance;
-    //! A segment pair is a candidate when the second segment covers at least this fraction of the
-    //! shorter of itself and the epipolar band of the first (default 0.5).
-    double minBandOverlap;
-    //! Segments within this angle (deg) of the epipolar lines are not matched under the geometry (default 5).
-    double minEpipolarAngleDeg;
-    double pointRatio; //!< Point descriptors: best distance below this fraction of the second best (default 0.8).
-    double lineRatio;  //!< Line descriptors: the same (default 0.8).
-    //! Binary line descriptors further apart than this many bits never match (default 80).
-    double maxLineDistance;
-    //! Frames of unknown relative pose are matched under their fundamental matrix when at least this
-    //! many descriptor matches agree with it, by descriptor alone otherwise (default 30).
-    int minFundamentalInliers;
-};
 
 //! Parameters of Tracker.
 struct CV_EXPORTS TrackerParams
@@ -129,6 +108,14 @@ public:
     @param points Nx2 positions; @p pointIds N integers (CV_32S), the same id naming the same feature
     in every frame. @p segments Mx4, @p lineIds M integers. The other parameters as addFeatures().
     */
+    //! addFeatures() with the features of one image, as detected by a front end.
+    TrackedFrame addFeatures(const ImageFeatures& features, InputArray R = noArray(), InputArray t = noArray(),
+                             InputArray cameraMatrix = noArray())
+    {
+        return addFeatures(features.points, features.pointDescriptors, features.segments, features.lineDescriptors, R,
+                           t, cameraMatrix);
+    }
+
     virtual TrackedFrame addObservations(InputArray points, InputArray pointIds, InputArray segments,
                                          InputArray lineIds, InputArray R = noArray(), InputArray t = noArray(),
                                          InputArray cameraMatrix = noArray()) = 0;
@@ -139,6 +126,11 @@ public:
     /** The current pose of frame @p frame (a local adjustment may have moved it since its result);
     false, outputs untouched, when the frame is lost. */
     virtual bool getPose(int frame, OutputArray R, OutputArray t) const = 0;
+
+    /** The current track of each point and segment of frame @p frame (CV_32S columns, -1: in no
+    track). A frame's features join tracks as later frames are matched to it, and a registration
+    that rejects a feature moves it to a track of its own. */
+    virtual void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks) const = 0;
 
     /** How far the points of the first two frames agree with their given poses, judged without them:
     (points matched by descriptor alone, of them lying within the epipolar distance of their

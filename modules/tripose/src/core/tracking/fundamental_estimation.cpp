@@ -113,9 +113,10 @@ int estimateFundamentalRansac(const std::vector<Eigen::Vector2d>& xa, const std:
             const double allInlier = std::pow((double)count / n, kSampleSize);
             if (allInlier >= 1)
                 break;
+            // Bounded in floating point: a low inlier ratio asks for more samples than an int holds.
             if (allInlier > 0)
-                samples = std::min(kMaxSamples,
-                                   (int)std::ceil(std::log(1 - confidence) / std::log(1 - allInlier)));
+                samples = (int)std::min((double)kMaxSamples,
+                                        std::ceil(std::log(1 - confidence) / std::log1p(-allInlier)));
         }
     }
     if (best < kSampleSize)

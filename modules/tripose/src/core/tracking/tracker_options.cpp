@@ -11,20 +11,9 @@
 
 namespace tripose {
 
-void checkTrackerOptions(const TrackerOptions& options, const char* name)
+void checkMatchOptions(const MatchOptions& m, const char* name)
 {
     const std::string prefix = std::string(name) + ".";
-    if (options.window < 2)
-        fail(ErrorCode::BadArgument, "%swindow must be at least 2 (keyframes a frame is registered against), got %d",
-             prefix.c_str(), options.window);
-    if (options.minInliers < 1)
-        fail(ErrorCode::BadArgument, "%smin_inliers must be at least 1, got %d", prefix.c_str(), options.minInliers);
-    if (!(options.keyframeParallaxDeg >= 0 && options.keyframeParallaxDeg < 180))
-        fail(ErrorCode::BadArgument, "%skeyframe_parallax_deg must be in [0, 180) degrees, got %g", prefix.c_str(),
-             options.keyframeParallaxDeg);
-    if (options.maxFrameGap < 1)
-        fail(ErrorCode::BadArgument, "%smax_frame_gap must be at least 1, got %d", prefix.c_str(), options.maxFrameGap);
-    const MatchOptions& m = options.matching;
     if (!(m.epipolarDistance > 0 && std::isfinite(m.epipolarDistance)))
         fail(ErrorCode::BadArgument, "%sepipolar_distance must be positive and finite, got %g", prefix.c_str(),
              m.epipolarDistance);
@@ -39,6 +28,22 @@ void checkTrackerOptions(const TrackerOptions& options, const char* name)
     if (m.minFundamentalInliers < 8)
         fail(ErrorCode::BadArgument, "%smin_fundamental_inliers must be at least 8, got %d", prefix.c_str(),
              m.minFundamentalInliers);
+}
+
+void checkTrackerOptions(const TrackerOptions& options, const char* name)
+{
+    const std::string prefix = std::string(name) + ".";
+    if (options.window < 2)
+        fail(ErrorCode::BadArgument, "%swindow must be at least 2 (keyframes a frame is registered against), got %d",
+             prefix.c_str(), options.window);
+    if (options.minInliers < 1)
+        fail(ErrorCode::BadArgument, "%smin_inliers must be at least 1, got %d", prefix.c_str(), options.minInliers);
+    if (!(options.keyframeParallaxDeg >= 0 && options.keyframeParallaxDeg < 180))
+        fail(ErrorCode::BadArgument, "%skeyframe_parallax_deg must be in [0, 180) degrees, got %g", prefix.c_str(),
+             options.keyframeParallaxDeg);
+    if (options.maxFrameGap < 1)
+        fail(ErrorCode::BadArgument, "%smax_frame_gap must be at least 1, got %d", prefix.c_str(), options.maxFrameGap);
+    checkMatchOptions(options.matching, (prefix + "matching").c_str());
     checkRansacOptions(options.ransac, (prefix + "ransac").c_str());
 }
 

@@ -41,6 +41,8 @@ struct TrackerOptions
 };
 
 //! Checks @p options: Error(BadArgument) naming "<name>.<field>" for the first field out of range.
+void checkMatchOptions(const MatchOptions& options, const char* name = "options");
+//! Checks @p options: Error(BadArgument) naming "<name>.<field>" for the first field out of range.
 void checkTrackerOptions(const TrackerOptions& options, const char* name = "options");
 
 enum class FrameStatus
