@@ -6,6 +6,7 @@
 //
 //   tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]
 //                    [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]
+//                    [--min-inliers n]
 //                    [--allow-unknown-keys]
 //
 // The problem file (OpenCV FileStorage, YAML or JSON) holds K (or K1, K2, K3), optionally dist
@@ -39,7 +40,7 @@ namespace {
 const char* kUsage =
     "usage: tripose_estimate --input problem.yml --output result.yml [--method linear|ransac]\n"
     "                        [--threshold px] [--confidence p] [--max-iterations n] [--refine 0|1] [--seed n]\n"
-    "                        [--loss squared|huber|cauchy] [--loss-scale px] [--allow-unknown-keys]\n"
+    "                        [--min-inliers n] [--loss squared|huber|cauchy] [--loss-scale px] [--allow-unknown-keys]\n"
     "  --input      OpenCV FileStorage problem (YAML or JSON): K or K1..K3, [dist or dist1..dist3],\n"
     "               R12, t12, points1..points3 (Nx2), lines1..lines3 (Mx4).\n"
     "               Stereo rig: with points4 and/or lines4, views 1-2 are the left and right cameras\n"
@@ -58,6 +59,7 @@ const char* kUsage =
     "               0: no refinement.\n"
     "               Default: 0 with linear, 1 with ransac\n"
     "  --seed       ransac sampler seed (default 0)\n"
+    "  --min-inliers  ransac: the fewest inliers of a pose (default 15); fewer: no pose (num_solutions 0)\n"
     "  --loss       ransac: the loss of the refinement on the inliers (default squared; tripose_images\n"
     "               refines features found in images under cauchy, 0.5 px)\n"
     "  --loss-scale scale of the huber or cauchy loss in pixels (default 1)\n"
@@ -77,7 +79,7 @@ Options parseArguments(int argc, char** argv)
     Options o;
     const std::vector<std::string> known = { "--input",      "--output",         "--method", "--threshold",
                                              "--confidence", "--max-iterations", "--refine", "--seed",
-                                             "--loss",       "--loss-scale" };
+                                             "--loss",       "--loss-scale",     "--min-inliers" };
     for (const auto& option : tripose_samples::optionPairs(argc, argv, kUsage, known, { "--allow-unknown-keys" }))
     {
         const std::string& arg = option.first;
@@ -129,6 +131,8 @@ Options parseArguments(int argc, char** argv)
             if (!(o.ransac.refineParams.lossScale > 0))
                 throw std::runtime_error("argument --loss-scale: expected a positive number of pixels, got '" + value + "'");
         }
+        else if (arg == "--min-inliers")
+            o.ransac.minInliers = parseInteger(arg, value, 0.0);
         else // --seed
             o.ransac.seed = parseInteger(arg, value, -2147483647.0);
     }

@@ -14,9 +14,10 @@
 //
 // The result holds what tripose_estimate --method ransac writes, the numbers of point tracks and
 // segment triplets, the time per stage, and the matched features as a problem file (K.., R12, t12,
-// points1..3, lines1..3), so that tripose_estimate runs on it again. Exit status: 0 on success (also
-// when no pose is found: num_solutions 0), 1 on bad arguments or input, the solver's rejection of the
-// calibration among them (the message names the file, key or argument; no output is written).
+// points1..3, lines1..3), so that tripose_estimate runs on it again. Exit status: 0 on success, 1 on
+// bad arguments or input, the solver's rejection of the calibration among them (the message names
+// the file, key or argument), 3 when no reliable pose is found (fewer inliers than
+// RansacParams::minInliers); no output is written on 1 or 3.
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +63,9 @@ const char* kUsage =
     "  --seed      RANSAC sampler seed (default 0)\n"
     "  --max-image-size  detect the features in images reduced to this longer side (px; default 1600,\n"
     "              0: full size); positions are mapped back to the images' pixels and the pixel\n"
-    "              tolerances (matching, --threshold) grow by the reduction\n";
+    "              tolerances (matching, --threshold) grow by the reduction\n"
+    "exit status: 0 pose written, 1 bad arguments or input (nothing written), 3 no reliable pose: fewer\n"
+    "              inliers than the floor of 15 (nothing written)\n";
 
 // The estimators need four features.
 const int kMinFeatures = 4;
@@ -375,10 +378,14 @@ int main(int argc, char** argv)
     try
     {
         const int64 start = cv::getTickCount();
+        // The floor is applied below rather than by the estimator, so that the message can give the
+        // support of the best pose it found.
+        cv::tripose::RansacParams search = ransac;
+        search.minInliers = 0;
         inliers = cv::tripose::estimatePoseLinePointRansac(matched.points[0], matched.points[1], matched.points[2],
                                                            matched.lines[0], matched.lines[1], matched.lines[2],
                                                            matched.K, cv::noArray(), matched.R12, matched.t12, R, t,
-                                                           ransac, pointInliers, lineInliers);
+                                                           search, pointInliers, lineInliers);
         times.estimation += 1e3 * double(cv::getTickCount() - start) / cv::getTickFrequency();
     }
     catch (const cv::Exception& e)
@@ -387,22 +394,24 @@ int main(int argc, char** argv)
                   << options.calib << ": " << e.err << "\n";
         return 1;
     }
-    const int solutions = inliers > 0 ? 1 : 0;
-    if (solutions == 0)
-        std::cerr << "tripose_images: no pose found from " << tracks << " point tracks and " << segments
-                  << " segment triplets\n";
-    std::cout << cv::format("tripose_images: %d inliers; ms: points (SIFT) %.1f, segment detection (EDLines) %.1f, "
-                            "segment description (LBD) %.1f (summed over the images; wall-clock %.1f, the images in "
+    std::cout << cv::format("tripose_images: ms: points (SIFT) %.1f, segment detection (EDLines) %.1f, segment "
+                            "description (LBD) %.1f (summed over the images; wall-clock %.1f, the images in "
                             "parallel), matching %.1f, estimation %.1f, total %.1f wall-clock\n",
-                            inliers, times.points, times.segmentDetection, times.segmentDescription, times.featuresWall,
+                            times.points, times.segmentDetection, times.segmentDescription, times.featuresWall,
                             times.matching, times.estimation, times.wallTotal());
+    if (R.empty() || inliers < ransac.minInliers)
+    {
+        std::cerr << "tripose_images: no reliable pose: " << tracks << " point tracks and " << segments
+                  << " segment triplets matched, " << inliers << " inliers, fewer than the " << ransac.minInliers
+                  << " a pose needs; nothing written\n";
+        return 3;
+    }
+    std::cout << "tripose_images: " << inliers << " inliers\n";
 
     try
     {
         writeAtomically(options.output, [&](cv::FileStorage& fs) {
-            fs << "num_solutions" << solutions;
-            if (solutions > 0)
-                fs << "R" << R << "t" << t;
+            fs << "num_solutions" << 1 << "R" << R << "t" << t;
             fs << "num_inliers" << inliers << "point_inliers" << inlierColumn(pointInliers) << "line_inliers"
                << inlierColumn(lineInliers);
             fs << "num_point_tracks" << tracks << "num_segment_triplets" << segments;
@@ -417,7 +426,7 @@ int main(int argc, char** argv)
             fs << "images" << "[:" << options.images[0] << options.images[1] << options.images[2] << "]";
             writeProblem(fs, matched);
         });
-        if (!options.overlay.empty() && solutions > 0)
+        if (!options.overlay.empty())
             writePng(options.overlay, drawOverlay(images[2], matched, R, t, pointInliers, lineInliers));
         if (!options.matches.empty())
             writePng(options.matches, drawMatches(images, matched, pointInliers, lineInliers));

@@ -466,7 +466,7 @@ void writeStructure(const std::vector<Eigen::Vector3d>& pointList, const std::ve
 }
 
 tripose::RansacOptions ransacOptions(double threshold, double confidence, int maxIterations, bool refine,
-                                     uint64_t seed)
+                                     uint64_t seed, int minInliers)
 {
     tripose::RansacOptions options;
     options.threshold = threshold;
@@ -474,8 +474,10 @@ tripose::RansacOptions ransacOptions(double threshold, double confidence, int ma
     options.maxIterations = maxIterations;
     options.refine = refine;
     options.seed = seed;
+    options.minInliers = minInliers;
     tripose::RansacOptionNames names;
     names.maxIterations = "max_iterations";
+    names.minInliers = "min_inliers";
     tripose::checkRansacOptions(options, "", names);
     return options;
 }
@@ -668,9 +670,9 @@ NB_MODULE(_tripose_ext, m)
     m.def("estimate_pose_line_point_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
              nb::handle R12, nb::handle t12, nb::handle dist, double threshold, double confidence, int maxIterations,
-             bool refine, uint64_t seed, bool wantCovariance) {
+             bool refine, uint64_t seed, bool wantCovariance, int minInliers) {
               const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
+              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
               return runRobust(problem.builder(kMinFeatures),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::LinearPoseSolver linear(views);
@@ -678,7 +680,7 @@ NB_MODULE(_tripose_ext, m)
                                },
                                options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
 
     m.def("refine_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
@@ -702,16 +704,17 @@ NB_MODULE(_tripose_ext, m)
     m.def("estimate_pose_line_point_stereo_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist, double threshold,
-             double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance) {
+             double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance,
+             int minInliers) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
+              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
               return runRobust(problem.builder(kMinStereoRansacFeatures),
                                [options](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    return tripose::estimateRobustRig(views, options, estimate);
                                },
                                options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
 
     m.def("refine_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
@@ -734,9 +737,10 @@ NB_MODULE(_tripose_ext, m)
 
     m.def("estimate_pose_multiview_ransac",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
-             double threshold, double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance) {
+             double threshold, double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance,
+             int minInliers) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed);
+              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
               return runRobust(problem.newViewBuilder(),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::MultiViewPoseSolver linear(views);
@@ -744,7 +748,7 @@ NB_MODULE(_tripose_ext, m)
                                },
                                options, wantCovariance);
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
 
     m.def("refine_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle R,

@@ -37,7 +37,7 @@ def check_report(result):
 def test_narrow_baselines_report_the_minima_within_the_noise():
     ambiguous = 0
     for seed in range(12):
-        result = tripose.estimate_pose_line_point_ransac(*narrow_problem(seed), threshold=4.0)
+        result = tripose.estimate_pose_line_point_ransac(*narrow_problem(seed), threshold=4.0, min_inliers=0)
         assert result["R"] is not None, seed
         check_report(result)
         ambiguous += result["ambiguous"]

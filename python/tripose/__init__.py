@@ -101,17 +101,20 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
                                     K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
                                     dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
                                     max_iterations: int = 10000, refine: bool = True,
-                                    seed: int = 0, covariance: bool = False) -> Dict[str, Any]:
+                                    seed: int = 0, covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
     """Robust pose of view 3 from point and line triplets with wrong matches (RANSAC).
 
     threshold: inlier threshold in pixels (a feature's RMS reprojection error over the three views,
     re-triangulated with the pose); confidence: probability of drawing an all-inlier sample;
     max_iterations: most samples drawn; refine: finish with the maximum-likelihood refinement over
     the inliers; seed: the same seed gives the same result; covariance: also return the pose's
-    uncertainty (it costs one more refinement over the inliers, about half the estimate's time).
+    uncertainty (it costs one more refinement over the inliers, about half the estimate's time);
+    min_inliers: the fewest inliers of a returned pose (>= 0): chance matches agree with a pose in
+    numbers up to about a dozen, so lower it only where every feature is known to be right.
 
-    Returns a dict: R (3x3) and t (3,) (None when no pose was found; a pose needs one inlier more
-    than a minimal sample holds, four or five: a sample fits wrong matches too), num_inliers, point_inliers and
+    Returns a dict: R (3x3) and t (3,) (None when no pose was found or its inliers are fewer than
+    min_inliers, num_inliers then 0; a pose also needs one inlier more than a minimal sample holds,
+    four or five: a sample fits wrong matches too), num_inliers, point_inliers and
     line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels), covariance ((6, 6)
     for 1 px noise, see help(tripose)) and noise_variance (px^2) of the refined pose over the inliers
     (None unless covariance=True, and without refinement or when no pose was found). The pose is view 3's
@@ -131,7 +134,8 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     return _ext.estimate_pose_line_point_ransac(points1, points2, points3, lines1,
                                                 lines2, lines3, K, R12,
                                                 t12, dist, float(threshold), float(confidence),
-                                                int(max_iterations), bool(refine), _seed(seed), bool(covariance))
+                                                int(max_iterations), bool(refine), _seed(seed), bool(covariance),
+                                                int(min_inliers))
 
 
 def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
@@ -178,14 +182,14 @@ def estimate_pose_line_point_stereo_ransac(points1: ArrayLike, points2: ArrayLik
                                            t12: ArrayLike, *, dist: ArrayLike = None, threshold: float = 2.0,
                                            confidence: float = 0.999, max_iterations: int = 10000,
                                            refine: bool = True, seed: int = 0,
-                                           covariance: bool = False) -> Dict[str, Any]:
+                                           covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
     """Robust motion of a stereo rig (see estimate_pose_line_point_stereo and
     estimate_pose_line_point_ransac for the arguments). Returns the dict of
     estimate_pose_line_point_ransac."""
     return _ext.estimate_pose_line_point_stereo_ransac(
         points1, points2, points3, points4, lines1, lines2,
         lines3, lines4, K, R12, t12, dist, float(threshold),
-        float(confidence), int(max_iterations), bool(refine), _seed(seed), bool(covariance))
+        float(confidence), int(max_iterations), bool(refine), _seed(seed), bool(covariance), int(min_inliers))
 
 
 def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
@@ -218,12 +222,13 @@ def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines:
                                    K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
                                    dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
                                    max_iterations: int = 10000, refine: bool = True,
-                                   seed: int = 0, covariance: bool = False) -> Dict[str, Any]:
+                                   seed: int = 0, covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
     """Robust world pose of a new view against several known views (arguments as
     estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
     return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
                                                _view_list(ts, "ts"), dist, float(threshold), float(confidence),
-                                               int(max_iterations), bool(refine), _seed(seed), bool(covariance))
+                                               int(max_iterations), bool(refine), _seed(seed), bool(covariance),
+                                               int(min_inliers))
 
 
 def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],

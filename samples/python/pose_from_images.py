@@ -20,7 +20,8 @@ reduction. Images of more than 8 bits (16-bit PNG or TIFF, float TIFF) are stret
 lowest to their highest value onto 8 bits.
 
 Exit status: 0 on success, 1 on bad input (the message names the file, key or argument), 2 when the
-tripose package is missing.
+tripose package is missing, 3 when no reliable pose is found (fewer than MIN_INLIERS inliers, the
+robust estimators' default floor); nothing is written on 1, 2 or 3.
 """
 import argparse
 import os
@@ -32,6 +33,7 @@ import cv2
 import numpy as np
 
 MIN_FEATURES = 4  # the estimators need four features
+MIN_INLIERS = 15  # the fewest inliers of a reliable pose: min_inliers of the robust estimators
 SIFT_UPSAMPLING_OFFSET = 0.25  # px, see extract()
 # Images whose longer side exceeds this (px) are detected in a copy reduced to it, as the C++
 # samples' --max-image-size (samples/common/image_features.hpp): the scale space of a 12-megapixel
@@ -495,11 +497,13 @@ def triplet_rows(views, K, R12, t12, pixel_scale=1.0):
 def estimate_pose(points, lines, K, R12, t12, threshold, seed, loss_scale=IMAGE_LOSS_SCALE):
     """The tripose package's robust estimator (RANSAC, then refinement), the refinement over the
     inliers repeated under the Cauchy loss of the C++ samples (the package's RANSAC refines by least
-    squares). threshold and loss_scale are in the images' pixels (see main())."""
+    squares). threshold and loss_scale are in the images' pixels (see main()). The estimate is asked
+    for without a floor on its inliers: the caller judges them against MIN_INLIERS and reports them."""
     import tripose
     try:
         pose = tripose.estimate_pose_line_point_ransac(points[0], points[1], points[2], lines[0], lines[1], lines[2],
-                                                       K, R12, t12, threshold=threshold, refine=True, seed=seed)
+                                                       K, R12, t12, threshold=threshold, refine=True, seed=seed,
+                                                       min_inliers=0)
     except (ValueError, TypeError) as e:
         raise SolverRejection(str(e)) from None
     if pose["num_inliers"] == 0:
@@ -518,12 +522,10 @@ def write_result(path, calib, points, lines, pose, tolerances):
     if not fs.isOpened():
         raise InputError(f"cannot write {path}")
     if pose is not None:
-        found = pose["num_inliers"] > 0
-        fs.write("num_solutions", int(found))
-        if found:
-            fs.write("R", np.asarray(pose["R"], np.float64))
-            fs.write("t", np.asarray(pose["t"], np.float64).reshape(3, 1))
-            fs.write("rms", float(pose["rms"]))
+        fs.write("num_solutions", 1)
+        fs.write("R", np.asarray(pose["R"], np.float64))
+        fs.write("t", np.asarray(pose["t"], np.float64).reshape(3, 1))
+        fs.write("rms", float(pose["rms"]))
         fs.write("num_inliers", int(pose["num_inliers"]))
         fs.write("point_inliers", np.asarray(pose["point_inliers"], np.int32).reshape(-1, 1))
         fs.write("line_inliers", np.asarray(pose["line_inliers"], np.int32).reshape(-1, 1))
@@ -605,9 +607,11 @@ def main(argv=None):
                 return 2
             except SolverRejection as e:
                 raise InputError(f"the solver rejected the input of {args.calib}: {e}") from None
-            if pose["num_inliers"] == 0:
-                print(f"pose_from_images: no pose found from {len(points[0])} point tracks and {len(lines[0])} "
-                      "segment triplets", file=sys.stderr)
+            if pose["R"] is None or pose["num_inliers"] < MIN_INLIERS:
+                print(f"pose_from_images: no reliable pose: {len(points[0])} point tracks and {len(lines[0])} "
+                      f"segment triplets matched, {pose['num_inliers']} inliers, fewer than the {MIN_INLIERS} a "
+                      "pose needs; nothing written", file=sys.stderr)
+                return 3
             print(f"pose_from_images: {pose['num_inliers']} inliers")
         write_result(args.output, calib, points, lines, pose, tolerances)
     except InputError as e:

@@ -71,6 +71,7 @@ int main(int argc, char** argv)
         params.threshold = threshold;
         params.refine = refine;
         params.seed = seed;
+        params.minInliers = 0; // the estimator's time is measured, whatever its support
         cv::Mat R, t;
         std::vector<cv::Mat> candidateRs, candidateTs;
         cv::Mat pointInliers, lineInliers;

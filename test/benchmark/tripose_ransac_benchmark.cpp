@@ -100,6 +100,7 @@ int main(int argc, char** argv)
               cv::tripose::RansacParams params;
               params.threshold = o.threshold;
               params.seed = seed;
+              params.minInliers = 0; // the estimator's time is measured, whatever its support
               return cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                               s.lines3, s.cameraMatrices, cv::noArray(), s.R12, s.t12,
                                                               R, t, params) > 0;

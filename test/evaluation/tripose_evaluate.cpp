@@ -483,6 +483,7 @@ cv::tripose::RansacParams ransacParams(const Options& o)
     cv::tripose::RansacParams params;
     params.threshold = o.threshold;
     params.seed = o.seed;
+    params.minInliers = 0; // the estimator itself is measured, on mixes of 2-10 features as well
     return params;
 }
 

@@ -71,6 +71,7 @@ Problem decode(const uint8_t* data, size_t size)
     p.initialPoseGiven = options & 128;
     p.refine.loss = in.byte() % 4;
     p.ransac.maxIterations = 1 + in.byte() % 32;
+    p.ransac.minInliers = in.byte() % 4; // the fuzzed problems are small: the floor would end most of them early
     p.refine.maxIterations = in.byte() % 9;
     p.ransac.threshold = in.number();
     p.ransac.confidence = in.number();

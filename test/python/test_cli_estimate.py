@@ -203,6 +203,8 @@ def test_bad_input_is_named_and_nothing_is_written(tmp_path, valid_scene, kind, 
     (["--loss", "tukey", "--method", "ransac"], "argument --loss"),
     (["--loss-scale", "0", "--method", "ransac"], "argument --loss-scale"),
     (["--loss-scale", "-2", "--method", "ransac"], "argument --loss-scale"),
+    (["--min-inliers", "-1", "--method", "ransac"], "argument --min-inliers"),
+    (["--min-inliers", "1.5", "--method", "ransac"], "argument --min-inliers"),
 ])
 def test_bad_arguments_are_named(tmp_path, valid_scene, args, name):
     expect_rejected(tmp_path, valid_scene, name, *args)

@@ -5,6 +5,7 @@ argument, and nothing written.
 The calibration (test/data/images/merton_college_i_calib.yml) was written by
 `tripose_images_report --data test/data/vgg/Merton-College-I --calib-output ...` from the sequence's
 cameras; one test derives it again here, independently, from the .P files."""
+import re
 import subprocess
 
 import cv2
@@ -16,6 +17,7 @@ from tripose_tools import (MERTON, MERTON_CALIB, REPO, build_tool, enlarged_mert
                            write_inverted_pose_calibration, write_nan_tiff, write_problem, write_turned_jpeg)
 
 CALIB = MERTON_CALIB
+MODEL_HOUSE = REPO / "test" / "data" / "vgg" / "Model-House"
 IMAGES = [MERTON / f"00{k}.jpg" for k in (1, 2, 3)]
 PROBLEM_KEYS = ["K1", "K2", "K3", "R12", "t12", "points1", "points2", "points3", "lines1", "lines2", "lines3"]
 
@@ -256,18 +258,34 @@ def test_calibration_that_contradicts_the_images_is_reported(tmp_path, mistake):
 
 def test_unrelated_third_image_gives_no_pose(tmp_path):
     # A third image of blurred noise shares a handful of chance matches with the other two (2 point
-    # tracks and 5 segment triplets here): no pose, said so, and a result without R and t. Before,
-    # the estimate settled on one inlier and was written as the pose.
+    # tracks and 5 segment triplets here): no reliable pose, said so, exit status 3, nothing written.
     rng = np.random.default_rng(0)
     noise = tmp_path / "noise.png"
     cv2.imwrite(str(noise), cv2.GaussianBlur((rng.random((768, 1024)) * 255).astype(np.uint8), (0, 0), 2))
     proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png", images=[IMAGES[0], IMAGES[1], noise])
-    assert proc.returncode == 0, proc.stderr
-    assert "no pose found" in proc.stderr
-    fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
-    assert fs.getNode("num_solutions").real() == 0 and fs.getNode("num_inliers").real() == 0
-    assert fs.getNode("R").empty() and fs.getNode("t").empty()
-    assert not (tmp_path / "overlay.png").exists()
+    assert proc.returncode == 3, proc.stdout + proc.stderr
+    assert "no reliable pose" in proc.stderr and "fewer than the 15 a pose needs" in proc.stderr
+    assert not out.exists() and not (tmp_path / "overlay.png").exists()
+
+
+def test_triplet_that_too_few_features_support_gives_no_pose(tmp_path):
+    # Model House frames 4, 6 and 9 (wide steps around the house) share 19 point tracks and 10
+    # segment triplets; the best pose agrees with 5 of them and was 156 degrees off. Fewer inliers
+    # than the floor (RansacParams::minInliers, 15): exit status 3, the counts said, nothing written.
+    calib = tmp_path / "calib.yml"
+    subprocess.run([str(build_tool("tripose_images_report")), "--data", str(MODEL_HOUSE), "--calib-output",
+                    str(calib), "--views", "4", "6", "9"], check=True, capture_output=True, timeout=60)
+    images = [MODEL_HOUSE / f"house.00{k}.pgm" for k in (4, 6, 9)]
+    proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png", calib=calib, images=images)
+    assert proc.returncode == 3, proc.stdout + proc.stderr
+    # The counts of the matching (measured: 19 and 10) and the best pose's inliers (5).
+    said = re.search(r"no reliable pose: (\d+) point tracks and (\d+) segment triplets matched, (\d+) inliers, "
+                     r"fewer than the 15 a pose needs", proc.stderr)
+    assert said, proc.stderr
+    tracks, triplets, inliers = map(int, said.groups())
+    assert f"{tracks} point tracks;" in proc.stdout and f"{triplets} segment triplets" in proc.stdout
+    assert inliers < 15 and tracks + triplets >= 15
+    assert not out.exists() and not (tmp_path / "overlay.png").exists()
 
 
 def test_image_with_values_that_are_not_numbers(tmp_path):

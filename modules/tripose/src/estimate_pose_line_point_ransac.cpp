@@ -15,7 +15,8 @@ namespace cv {
 namespace tripose {
 
 RansacParams::RansacParams()
-    : threshold(2.0), confidence(0.999), maxIterations(10000), localOptimization(true), refine(true), seed(0)
+    : threshold(2.0), confidence(0.999), maxIterations(10000), localOptimization(true), refine(true), seed(0),
+      minInliers(15)
 {}
 
 int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArray points3,

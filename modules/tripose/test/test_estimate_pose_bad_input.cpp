@@ -38,7 +38,9 @@ struct Call
           l1(s.lines1.clone()), l2(s.lines2.clone()), l3(s.lines3.clone()),
           K(s.cameraMatrices[0].clone()), R12(s.R12.clone()), t12(s.t12.clone()),
           R0(s.R.clone()), t0(s.t.clone())
-    {}
+    {
+        ransac.minInliers = 0; // a few features, all right: no floor on the inliers above them
+    }
 
     //! Solutions (linear), inliers (robust) or 1 for a finite refinement.
     int run(Api api) const
@@ -359,8 +361,12 @@ struct StereoCall
             return cv::tripose::estimatePoseLinePointStereo(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3], cameraMatrix,
                                                         distCoeffs, R12, t12, R, t, method);
         case STEREO_RANSAC:
+        {
+            cv::tripose::RansacParams params;
+            params.minInliers = 0; // a few features, all right: no floor on the inliers above them
             return cv::tripose::estimatePoseLinePointStereoRansac(p[0], p[1], p[2], p[3], l[0], l[1], l[2], l[3],
-                                                              cameraMatrix, distCoeffs, R12, t12, R, t);
+                                                              cameraMatrix, distCoeffs, R12, t12, R, t, params);
+        }
         case STEREO_REFINE:
         default:
             R = R0.clone();

@@ -77,6 +77,7 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
             const cv::tripose::support::SyntheticScene s = makeScene(mix, cv::tripose::support::MOTION_LARGE, 0.0, seed);
             cv::tripose::RansacParams params;
             params.seed = seed;
+            params.minInliers = mix.points + mix.lines; // every feature is right: no floor above them
             Mat R, t, pointMask, lineMask;
             const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
             ASSERT_EQ(inliers, mix.points + mix.lines) << mixName(mix) << " seed " << seed;
@@ -86,10 +87,10 @@ TEST(Tripose_RansacFewFeatures, minimal_and_near_minimal_sets_give_the_pose)
         }
 }
 
-// Every view-3 observation a wrong match, as an unrelated third image gives: a pose is returned only
-// with four inliers at least, a minimal sample (which fits any observations) and one more feature
-// that agrees. Before, the refinement could settle on one or two inliers, which leave the pose
-// free, and return it as found.
+// Every view-3 observation a wrong match, as an unrelated third image gives: without a floor on the
+// inliers (minInliers 0) a pose is returned only with four inliers at least, a minimal sample (which
+// fits any observations) and one more feature that agrees. Before, the refinement could settle on
+// one or two inliers, which leave the pose free, and return it as found.
 TEST(Tripose_RansacUnrelatedView, no_pose_rests_on_fewer_than_four_inliers)
 {
     const FeatureMix mixes[] = { { 2, 5 }, { 7, 0 }, { 0, 7 }, { 3, 3 }, { 10, 10 } };
@@ -100,6 +101,7 @@ TEST(Tripose_RansacUnrelatedView, no_pose_rests_on_fewer_than_four_inliers)
                 makeScene(mix, cv::tripose::support::MOTION_LARGE, 1.0, seed, 0.99);
             cv::tripose::RansacParams params;
             params.seed = seed;
+            params.minInliers = 0;
             Mat R, t, pointMask, lineMask;
             const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
             if (inliers == 0)
@@ -111,6 +113,29 @@ TEST(Tripose_RansacUnrelatedView, no_pose_rests_on_fewer_than_four_inliers)
             EXPECT_GE(inliers, 4) << mixName(mix) << " seed " << seed;
             EXPECT_EQ(inliers, cv::countNonZero(pointMask) + cv::countNonZero(lineMask)) << mixName(mix) << " seed " << seed;
         }
+}
+
+// The same chance correspondences under the default floor (RansacParams::minInliers, 15): no pose,
+// where without it some scenes give one.
+TEST(Tripose_RansacUnrelatedView, chance_correspondences_give_no_pose_under_the_default_floor)
+{
+    const FeatureMix mixes[] = { { 2, 5 }, { 7, 0 }, { 0, 7 }, { 3, 3 }, { 10, 10 } };
+    int withoutFloor = 0;
+    for (const FeatureMix& mix : mixes)
+        for (int seed = 0; seed < 20; ++seed)
+        {
+            const cv::tripose::support::SyntheticScene s =
+                makeScene(mix, cv::tripose::support::MOTION_LARGE, 1.0, seed, 0.99);
+            cv::tripose::RansacParams params;
+            params.seed = seed;
+            Mat R, t, pointMask, lineMask;
+            EXPECT_EQ(runRansac(s, params, R, t, pointMask, lineMask), 0) << mixName(mix) << " seed " << seed;
+            EXPECT_TRUE(R.empty() && t.empty()) << mixName(mix) << " seed " << seed;
+            EXPECT_EQ(cv::countNonZero(pointMask) + cv::countNonZero(lineMask), 0) << mixName(mix) << " seed " << seed;
+            params.minInliers = 0;
+            withoutFloor += runRansac(s, params, R, t, pointMask, lineMask) > 0 ? 1 : 0;
+        }
+    EXPECT_GT(withoutFloor, 0) << "the scenes hold chance agreement that the floor removes";
 }
 
 TEST(Tripose_RansacDeterminism, same_seed_same_result)
@@ -158,6 +183,9 @@ TEST(Tripose_RansacParams, invalid_parameters_are_named)
     p = cv::tripose::RansacParams();
     p.maxIterations = 0;
     expectNamed(p, "params.maxIterations");
+    p = cv::tripose::RansacParams();
+    p.minInliers = -1;
+    expectNamed(p, "params.minInliers");
 }
 
 // An all-inlier probability below 1e-16 (here about 4e-5 ^ 4) rounds 1 - p to 1, which makes the
@@ -175,6 +203,7 @@ TEST(Tripose_RansacRegression, iteration_bound_with_a_tiny_inlier_ratio)
     params.threshold = 1.0;      // a few wrong matches fall within it by chance
     params.maxIterations = 20;
     params.refine = false;
+    params.minInliers = 0; // five true matches: below the default floor
     Mat R, t, pointMask, lineMask;
     const int inliers = runRansac(s, params, R, t, pointMask, lineMask);
     EXPECT_GT(inliers, 0) << "the five true matches are there to be found";

@@ -38,6 +38,7 @@ core::RansacOptions toCoreOptions(const RansacParams& params)
     options.threshold = params.threshold;
     options.confidence = params.confidence;
     options.maxIterations = params.maxIterations;
+    options.minInliers = params.minInliers;
     options.localOptimization = params.localOptimization;
     options.refine = params.refine;
     options.refineOptions = convert(params.refineParams);

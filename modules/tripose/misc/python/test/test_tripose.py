@@ -290,6 +290,14 @@ def rig_args(scene, **changes):
     return args
 
 
+def params_without_floor():
+    """RansacParams with no floor on the inliers (minInliers 0): for small problems whose features
+    are all right."""
+    params = cv.tripose.RansacParams()
+    params.minInliers = 0
+    return params
+
+
 def names_argument(message, argument):
     """True when `message` names `argument` as a whole word ('R' is not named by 'R12')."""
     return re.search(r'(?<![\w.])' + re.escape(argument) + r'(?!\w)', message) is not None
@@ -344,11 +352,11 @@ class tripose_test(NewOpenCVTests):
         # set from Python read back.
         ransac = cv.tripose.RansacParams()
         self.assertEqual((ransac.threshold, ransac.confidence, ransac.maxIterations, ransac.localOptimization,
-                          ransac.refine, ransac.seed), (2.0, 0.999, 10000, True, True, 0))
+                          ransac.refine, ransac.seed, ransac.minInliers), (2.0, 0.999, 10000, True, True, 0, 15))
         ransac.threshold, ransac.confidence, ransac.maxIterations = 1.5, 0.99, 500
-        ransac.localOptimization, ransac.refine, ransac.seed = False, False, -7
+        ransac.localOptimization, ransac.refine, ransac.seed, ransac.minInliers = False, False, -7, 4
         self.assertEqual((ransac.threshold, ransac.confidence, ransac.maxIterations, ransac.localOptimization,
-                          ransac.refine, ransac.seed), (1.5, 0.99, 500, False, False, -7))
+                          ransac.refine, ransac.seed, ransac.minInliers), (1.5, 0.99, 500, False, False, -7, 4))
         refine = cv.tripose.RefineParams()
         self.assertEqual((refine.maxIterations, refine.loss, refine.lossScale, refine.tolerance),
                          (30, cv.tripose.LOSS_SQUARED, 1.0, 1e-10))
@@ -474,7 +482,7 @@ class tripose_test(NewOpenCVTests):
                 return cv.tripose.estimatePoseLinePoint(**dict(args, **extra))[0]
             if api == 'ransac':
                 return cv.tripose.estimatePoseLinePointRansac(
-                    **dict(args, params=params or cv.tripose.RansacParams()))[0]
+                    **dict(args, params=params or params_without_floor()))[0]
             R0 = np.array(scene.R) if R is None else R
             t0 = np.array(scene.t) if t is None else t
             return cv.tripose.refinePoseLinePoint(
@@ -582,6 +590,8 @@ class tripose_test(NewOpenCVTests):
                      params=ransac(confidence=1.0))
         expect_error('ransac_max_iterations_zero', 'params.maxIterations', ('ransac',), changes={},
                      params=ransac(maxIterations=0))
+        expect_error('ransac_min_inliers_negative', 'params.minInliers', ('ransac',), changes={},
+                     params=ransac(minInliers=-1))
 
         # parameters and initial pose of the refinement
         def refine(**fields):
@@ -766,7 +776,7 @@ class tripose_test(NewOpenCVTests):
             if api == 'linear':
                 return cv.tripose.estimatePoseLinePointStereo(**args)[0]
             if api == 'ransac':
-                return cv.tripose.estimatePoseLinePointStereoRansac(**args)[0]
+                return cv.tripose.estimatePoseLinePointStereoRansac(**dict(args, params=params_without_floor()))[0]
             return cv.tripose.refinePoseLinePointStereo(**dict(args, R=np.array(scene.R), t=np.array(scene.t)))[0]
 
         def expect_error(kind, argument, changes, apis=('linear', 'ransac', 'refine')):

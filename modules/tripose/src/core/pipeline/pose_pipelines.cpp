@@ -107,7 +107,8 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth(),
                                     severalBasins && knownPairIsNarrow(views, scorer));
     estimate.minima.clear();
-    if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate))
+    if (estimatePoseRobust(solver, scorer, options.refine ? &refiner : nullptr, options, estimate) &&
+        estimate.numInliers >= options.minInliers)
     {
         estimate.minima = scoredPoses(refiner.minimaWithinNoise(estimate.pose));
         return true;

@@ -30,7 +30,8 @@ several basins, from starts around the best one), the distinct minima ranked by 
 std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolver& solver, bool refine);
 
 /** The robust estimate: RANSAC over @p solver's samples scored by @p scorer, then the refinement
-that @p options asks for. @p options must be valid (checkRansacOptions()). Returns false (and @p estimate's masks all zero) when no pose was found.
+that @p options asks for. @p options must be valid (checkRansacOptions()). Returns false (and @p estimate's masks all zero) when no pose was found
+or the pose has fewer than RansacOptions::minInliers inliers.
 */
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
                     const RansacOptions& options, RobustEstimate& estimate);

@@ -49,6 +49,9 @@ void checkRansacOptions(const RansacOptions& options, const char* name, const Ra
     if (options.maxIterations <= 0)
         fail(ErrorCode::BadArgument, "%s must be positive, got %d", fieldName(name, fields.maxIterations).c_str(),
              options.maxIterations);
+    if (options.minInliers < 0)
+        fail(ErrorCode::BadArgument, "%s must be >= 0, got %d", fieldName(name, fields.minInliers).c_str(),
+             options.minInliers);
     if (options.refine)
     {
         const std::string refineName = fields.refineOptions && *fields.refineOptions ? fieldName(name, fields.refineOptions) : std::string(name);

@@ -36,6 +36,9 @@ struct RansacOptions
     bool refine = true;             //!< Finish with the maximum-likelihood refinement over the inliers.
     RefineOptions refineOptions;    //!< Options of that refinement.
     uint64_t seed = 0;              //!< Seed of the sampler: the same seed gives the same result.
+    /** Fewest inliers of a returned pose (>= 0); an estimate with fewer is no pose. Chance matches
+    agree with a pose in numbers up to about a dozen (doc/conventions.md, "Results and errors"). */
+    int minInliers = 15;
     //! Reject the minimal samples' poses early by the sequential probability ratio test
     //! (scoring/sequential_test.hpp). Not in the public parameters: for tests and measurements.
     bool sequentialTest = true;
@@ -62,6 +65,7 @@ struct RansacOptionNames
     const char* threshold = "threshold";
     const char* confidence = "confidence";
     const char* maxIterations = "maxIterations";
+    const char* minInliers = "minInliers";
     const char* refineOptions = "refineParams";
     RefineOptionNames refine;
 };
