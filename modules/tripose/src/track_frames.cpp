@@ -11,6 +11,7 @@
 #include "opencv/feature_reading.hpp"
 #include "opencv/opencv_compat.hpp"
 #include "opencv/options_conversion.hpp"
+#include "opencv/tracker_conversion.hpp"
 
 namespace cv {
 namespace tripose {
@@ -33,22 +34,6 @@ namespace {
 
 namespace core = detail::core;
 
-core::TrackerOptions toCoreOptions(const TrackerParams& params)
-{
-    core::TrackerOptions o;
-    o.window = params.window;
-    o.minInliers = params.minInliers;
-    o.keyframeParallaxDeg = params.keyframeParallaxDeg;
-    o.checkTracks = params.checkTracks;
-    o.localAdjustment = params.localAdjustment;
-    o.robust = params.robust;
-    o.ransac = detail::toCoreOptions(params.ransac);
-    o.matching = detail::toCoreOptions(params.matching);
-    o.maxFrameGap = params.maxFrameGap;
-    core::checkTrackerOptions(o, "params");
-    return o;
-}
-
 //! The optional pose and camera matrix of a frame.
 struct FrameExtras
 {
@@ -58,23 +43,7 @@ struct FrameExtras
 
     FrameExtras(InputArray R, InputArray t, InputArray cameraMatrix)
     {
-        if (R.empty() != t.empty())
-            CV_Error(Error::StsBadArg, "R and t must be given together (the frame's pose), or neither");
-        if (!R.empty())
-        {
-            Mat r;
-            R.getMat().convertTo(r, CV_64F);
-            if (r.total() == 3)
-                Rodrigues(r.reshape(1, 3), r);
-            pose.R = detail::readMatrix3(r, "R");
-            Mat tv = t.getMat();
-            if (tv.total() != 3 || tv.channels() != 1)
-                CV_Error(Error::StsBadSize, "t must hold 3 elements");
-            tv.reshape(1, 3).convertTo(tv, CV_64F);
-            for (int i = 0; i < 3; ++i)
-                pose.t[i] = tv.at<double>(i);
-            hasPose = true;
-        }
+        hasPose = detail::readFramePose(R, t, pose);
         if (!cameraMatrix.empty())
         {
             K = detail::readMatrix3(cameraMatrix, "cameraMatrix");
@@ -85,39 +54,8 @@ struct FrameExtras
     const Eigen::Matrix3d* KPtr() const { return hasK ? &K : nullptr; }
 };
 
-Mat matOf(const Eigen::Matrix3d& R)
-{
-    Mat out(3, 3, CV_64F);
-    for (int i = 0; i < 9; ++i)
-        out.at<double>(i / 3, i % 3) = R(i / 3, i % 3);
-    return out;
-}
-
-Mat matOf(const Eigen::Vector3d& t)
-{
-    return (Mat_<double>(3, 1) << t[0], t[1], t[2]);
-}
-
-TrackedFrame toTrackedFrame(const core::FrameResult& r)
-{
-    TrackedFrame out;
-    out.frame = r.frame;
-    out.status = (int)r.status;
-    if (r.status != core::FrameStatus::Lost)
-    {
-        out.R = matOf(r.pose.R);
-        out.t = matOf(r.pose.t);
-    }
-    out.features = r.features;
-    out.inliers = r.inliers;
-    out.knownViews = r.knownViews;
-    out.keyframe = r.keyframe;
-    out.milliseconds = r.milliseconds;
-    out.reason = r.reason;
-    out.pointTracks = r.pointTracks;
-    out.lineTracks = r.lineTracks;
-    return out;
-}
+using detail::matOf;
+using detail::toTrackedFrame;
 
 std::vector<int64_t> readIds(InputArray array, int count, const char* name)
 {
@@ -150,7 +88,7 @@ public:
                   distCoeffs.getMat().convertTo(d, CV_64F);
                   dist.assign(d.ptr<double>(), d.ptr<double>() + d.total());
               }
-              return core::Tracker(detail::readMatrix3(cameraMatrix, "cameraMatrix"), dist, toCoreOptions(params));
+              return core::Tracker(detail::readMatrix3(cameraMatrix, "cameraMatrix"), dist, detail::toCoreOptions(params));
           }))
     {
     }

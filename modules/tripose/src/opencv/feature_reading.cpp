@@ -71,6 +71,18 @@ Eigen::Matrix3d readMatrix3(InputArray array, const char* name)
     return f;
 }
 
+::tripose::FrameFeatures readFrameFeatures(const ImageFeatures& features, const std::string& name)
+{
+    const std::string points = name + ".points", segments = name + ".segments";
+    const std::string pointDescriptors = name + ".pointDescriptors", lineDescriptors = name + ".lineDescriptors";
+    ::tripose::FrameFeatures f;
+    f.points = vectors<2>(readRows(features.points, 2, points.c_str()));
+    f.segments = vectors<4>(readRows(features.segments, 4, segments.c_str()));
+    f.pointDescriptors = readDescriptors(features.pointDescriptors, (int)f.points.size(), pointDescriptors.c_str());
+    f.lineDescriptors = readDescriptors(features.lineDescriptors, (int)f.segments.size(), lineDescriptors.c_str());
+    return f;
+}
+
 ::tripose::MatchOptions toCoreOptions(const MatchParams& params)
 {
     ::tripose::MatchOptions o;

@@ -5,6 +5,7 @@
 #ifndef OPENCV_TRIPOSE_OPENCV_FEATURE_READING_HPP
 #define OPENCV_TRIPOSE_OPENCV_FEATURE_READING_HPP
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -44,6 +45,9 @@ Eigen::Matrix3d readMatrix3(InputArray array, const char* name);
 //! Points, segments and descriptors of one image, read as above.
 ::tripose::FrameFeatures readFrameFeatures(InputArray points, InputArray pointDescriptors, InputArray segments,
                                            InputArray lineDescriptors);
+
+//! The features of one image, read as above; errors name them "<name>.points", "<name>.pointDescriptors", ...
+::tripose::FrameFeatures readFrameFeatures(const ImageFeatures& features, const std::string& name);
 
 //! The core's matching options from the public parameters, checked (core::Error naming "params.<field>").
 ::tripose::MatchOptions toCoreOptions(const MatchParams& params);

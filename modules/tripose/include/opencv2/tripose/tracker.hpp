@@ -139,6 +139,69 @@ public:
     virtual Vec2i givenPairAgreement() const = 0;
 };
 
+/** @brief A calibrated stereo rig tracked frame by frame from points and line segments.
+
+Feed it one stereo frame at a time: the features of the left and the right image (points and
+segments with descriptors, from any detector), optionally with the left camera's pose. No pose is
+needed: the first frame's left camera is the world's origin (FRAME_GIVEN) unless it comes with a
+pose, and the rig's baseline gives every pose its metric scale.
+
+Each frame's left and right features are matched under the rig's epipolar geometry (a segment
+within MatchParams::minEpipolarAngleDeg of the epipolar lines, horizontal ones for a side-by-side
+rig, is not matched); its left features are linked to the left features of the frame before (as
+Tracker links frames, looking back up to TrackerParams::maxFrameGap frames); then it is registered
+with the stereo-rig estimator (estimatePoseLinePointStereoRansac()'s; its linear solver with
+TrackerParams::robust off) against the stereo pair of a keyframe, on the features that both
+cameras of the keyframe and the frame's left camera see (and its right camera, where matched), and
+composed with the keyframe's pose. The keyframe is the newest of the last TrackerParams::window
+keyframes that gives a pose with at least TrackerParams::minInliers inliers; a frame that none does
+is lost (FRAME_LOST, TrackedFrame::reason says why), never given a wrong pose, and tracking goes on
+with the next frame. A registered frame becomes a keyframe when its inlier structure subtends at
+least TrackerParams::keyframeParallaxDeg between it and the keyframe (a rig standing still adds
+none). TrackerParams::localAdjustment is not used. TrackedFrame::knownViews is 1 (one stereo
+keyframe) for a registered frame.
+
+Poses follow the module: a frame's pose is its left camera's, x ~ K_left (R X + t), X in the world
+frame; the right camera is at the rig composed with it. Bad input throws cv::Exception naming the
+argument.
+*/
+class CV_EXPORTS StereoTracker
+{
+public:
+    virtual ~StereoTracker();
+
+    /** @param leftCameraMatrix, rightCameraMatrix 3x3 intrinsics of the two cameras.
+    @param leftDist, rightDist their distortion coefficients (OpenCV's model), or empty; the features
+    are undistorted with them.
+    @param R, t The rig: the right camera's pose relative to the left (x_right = R x_left + t; R 3x3 or
+    a rotation vector), t non-zero, in the units the poses are wanted in.
+    @param params The tracker's parameters (those of Tracker).
+    */
+    static Ptr<StereoTracker> create(InputArray leftCameraMatrix, InputArray leftDist, InputArray rightCameraMatrix,
+                                     InputArray rightDist, InputArray R, InputArray t,
+                                     const TrackerParams& params = TrackerParams());
+
+    /** @brief The next stereo frame from the features of its two images.
+    @param left, right The features of the left and the right image (descriptors of one kind and
+    length in both, and in every frame).
+    @param R, t The left camera's pose when known, else empty.
+    */
+    virtual TrackedFrame addFrame(const ImageFeatures& left, const ImageFeatures& right, InputArray R = noArray(),
+                                  InputArray t = noArray()) = 0;
+
+    //! Frames given so far.
+    virtual int numFrames() const = 0;
+
+    //! The pose of frame @p frame's left camera; false, outputs untouched, when the frame is lost.
+    virtual bool getPose(int frame, OutputArray R, OutputArray t) const = 0;
+
+    /** The track of each point and segment of frame @p frame's left image (CV_32S columns, -1: in
+    no track), and the row of each one's stereo match in the right image (-1: none). */
+    virtual void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks,
+                           OutputArray pointStereoMatches = noArray(),
+                           OutputArray lineStereoMatches = noArray()) const = 0;
+};
+
 //! @}
 
 } // namespace tripose

@@ -1,0 +1,102 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP
+#define TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP
+
+#include <deque>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "../geometry/distortion.hpp"
+#include "frame_features.hpp"
+#include "track_store.hpp"
+#include "tracker_options.hpp"
+
+namespace tripose {
+
+/** A calibrated stereo rig tracked frame by frame. Each frame is the features of the left and the
+right image (positions in pixels, descriptors), optionally with the left camera's pose. No pose is
+needed: the first frame's left camera is the world's origin unless it comes with a pose, and the
+rig's baseline gives every pose its metric scale.
+
+Each frame:
+- its left and right features are matched under the rig's epipolar geometry (the stereo matches);
+- its left features are linked to the left features of the frame before, as Tracker links frames
+  (matchUnknownPose(); past a frame that shares too few matches for their geometry, to the nearest
+  of the TrackerOptions::maxFrameGap frames before it that does): a track is one feature of the
+  scene seen by the left camera, and the right camera sees it through the stereo match;
+- it is registered with the stereo-rig estimator (estimateRobustRig(); the linear rig solver with
+  TrackerOptions::robust off) against a keyframe A, on the features that both cameras of A see
+  (A's stereo matches) and the new frame's left camera sees (and its right camera, where the new
+  frame has a stereo match): views {left A, right A, left B, right B} in the frame of left A, left B
+  estimated, then composed with A's pose to the world. The keyframe is the newest of the last
+  TrackerOptions::window keyframes that shares at least TrackerOptions::minInliers such features
+  and gives a pose with that many inliers; a frame that none gives a pose to is lost, and the next
+  frame looks back over the same keyframes.
+
+A registered frame becomes a keyframe when the median angle its inlier structure (triangulated from
+A's stereo pair) subtends between A's left camera and its own is at least
+TrackerOptions::keyframeParallaxDeg: a rig that stands still adds no keyframes, so its error does not
+grow. Frames given a pose are keyframes. With TrackerOptions::checkTracks (and robust), the features a
+registration rejects start new tracks. TrackerOptions::localAdjustment is not used.
+
+Poses follow the library: x_cam = R X + t, X in the world frame; the pose of a frame is its left
+camera's, the right camera is at the rig composed with it.
+*/
+class StereoTracker
+{
+public:
+    /** @p KLeft, @p KRight the cameras' matrices, @p distortionLeft, @p distortionRight their
+    coefficients in OpenCV's model (empty: none; the features given are undistorted with them).
+    @p rig the right camera's pose relative to the left (x_right = R x_left + t), t non-zero.
+    Throws Error naming "K_left", "dist_left", "K_right", "dist_right", "R", "t" or "options". */
+    StereoTracker(const Eigen::Matrix3d& KLeft, const std::vector<double>& distortionLeft, const Eigen::Matrix3d& KRight,
+                  const std::vector<double>& distortionRight, const CameraPose& rig, const TrackerOptions& options);
+
+    /** The next stereo frame from the features of its left and right images. @p pose, when given,
+    is the left camera's pose (status Given). */
+    FrameResult addFrame(const FrameFeatures& left, const FrameFeatures& right, const CameraPose* pose = nullptr);
+
+    int numFrames() const { return (int)store_.frames.size(); }
+    //! Frame @p frame's left camera: its pose, status, features and their tracks.
+    const StoredFrame& frame(int frame) const { return store_.frames.at(frame); }
+    //! Per left point (segment) of frame @p frame, the row of its stereo match in the right image, -1 for none.
+    const std::vector<int>& stereoPoints(int frame) const { return stereo_.at(frame).pointRight; }
+    const std::vector<int>& stereoSegments(int frame) const { return stereo_.at(frame).lineRight; }
+    const TrackerOptions& options() const { return options_; }
+    const CameraPose& rig() const { return rig_; }
+
+private:
+    //! The right image of a frame and its stereo matches.
+    struct StereoFrame
+    {
+        std::vector<Eigen::Vector2d> points;
+        std::vector<Eigen::Vector4d> segments;
+        std::vector<int> pointRight, lineRight;
+    };
+    struct Attempt;
+
+    void link(FeatureKind kind, int from, int to, const std::vector<std::pair<int, int>>& matches);
+    void linkToRecent(int frame, const FrameFeatures& left);
+    Attempt registerAgainst(int keyframe, int frame) const;
+    FrameResult finishFrame(int frame, double startSeconds);
+
+    TrackerOptions options_;
+    Eigen::Matrix3d K_[2];
+    Distortion distortion_[2];
+    bool distorted_[2] = { false, false };
+    CameraPose rig_;
+    Eigen::Matrix3d F_; //!< Of the rig: x_right^T F x_left = 0.
+    TrackStore store_;
+    std::vector<StereoFrame> stereo_;
+    //! The left features of the last frames, for linking the next ones (at most maxFrameGap).
+    std::deque<std::pair<int, FrameFeatures>> recent_;
+};
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP

@@ -1,0 +1,280 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+// cv::tripose::StereoTracker on a synthetic stereo sequence: points and segments of a 3D scene seen
+// by a rig moving along a smooth path, 0.5 px noise, a descriptor per 3D feature with noise per
+// observation. Every frame registered at metric scale with no pose given; a frame of noise lost and
+// the next ones registered; bad input named.
+
+#include "test_precomp.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "../src/opencv/opencv_compat.hpp" // Rodrigues: calib3d in OpenCV 4, geometry in 5
+
+namespace opencv_test {
+namespace {
+
+using cv::tripose::ImageFeatures;
+using cv::tripose::StereoTracker;
+using cv::tripose::TrackedFrame;
+using cv::tripose::TrackerParams;
+
+const int kWidth = 640, kHeight = 480, kDescriptorLength = 128;
+
+struct Pose
+{
+    Matx33d R;
+    Vec3d t;
+    Vec3d centre() const { return -(R.t() * t); }
+};
+
+Matx33d rotation(double rx, double ry, double rz)
+{
+    Mat R;
+    Rodrigues(Vec3d(rx, ry, rz), R);
+    return Matx33d(R);
+}
+
+//! A rig moving forward along a gentle S with a slight yaw and pitch, and a scene in front of it.
+struct StereoSequence
+{
+    Matx33d K = Matx33d(600, 0, 320, 0, 600, 240, 0, 0, 1);
+    Pose rig;                          //!< The right camera relative to the left.
+    std::vector<Pose> poses;           //!< The left camera's, world frame = frame 0's left camera.
+    std::vector<Vec3d> points;         //!< Scene points.
+    std::vector<std::pair<Vec3d, Vec3d>> segments; //!< Scene segments' end points.
+    Mat pointDescriptors, lineDescriptors; //!< One CV_32F row per 3D feature.
+    double pathLength = 0;
+
+    StereoSequence(int frames, uint64 seed)
+    {
+        RNG rng(seed);
+        rig.R = rotation(0, 0.01, 0);
+        rig.t = -(rig.R * Vec3d(0.3, 0, 0));
+        for (int k = 0; k < frames; ++k)
+        {
+            const double s = k / double(frames - 1);
+            const Vec3d centre(0.6 * std::sin(2 * CV_PI * s), 0.1 * std::sin(CV_PI * s), 4.5 * s);
+            Pose p;
+            p.R = rotation(0.03 * std::sin(CV_PI * s), 0.12 * std::sin(2 * CV_PI * s), 0.02 * s);
+            p.t = -(p.R * centre);
+            if (k > 0)
+                pathLength += cv::norm(centre - poses.back().centre());
+            poses.push_back(p);
+        }
+        for (int i = 0; i < 300; ++i)
+            points.emplace_back(rng.uniform(-8.0, 8.0), rng.uniform(-4.0, 4.0), rng.uniform(6.0, 22.0));
+        for (int i = 0; i < 80; ++i)
+        {
+            const Vec3d a(rng.uniform(-8.0, 8.0), rng.uniform(-4.0, 4.0), rng.uniform(6.0, 22.0));
+            Vec3d d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(0.3));
+            d *= rng.uniform(0.8, 2.0) / cv::norm(d);
+            segments.emplace_back(a, a + d);
+        }
+        pointDescriptors.create((int)points.size(), kDescriptorLength, CV_32F);
+        lineDescriptors.create((int)segments.size(), kDescriptorLength, CV_32F);
+        rng.fill(pointDescriptors, RNG::UNIFORM, 0.0, 1.0);
+        rng.fill(lineDescriptors, RNG::UNIFORM, 0.0, 1.0);
+    }
+
+    Pose rightPose(int k) const
+    {
+        Pose p;
+        p.R = rig.R * poses[k].R;
+        p.t = rig.R * poses[k].t + rig.t;
+        return p;
+    }
+
+    //! What camera @p camera (pose @p p) sees of the scene, with @p noise px and descriptor noise.
+    ImageFeatures observe(const Pose& p, RNG& rng, double noise) const
+    {
+        ImageFeatures f;
+        Mat pts(0, 2, CV_64F), pd(0, kDescriptorLength, CV_32F), segs(0, 4, CV_64F), ld(0, kDescriptorLength, CV_32F);
+        const auto project = [&](const Vec3d& X, Vec2d& x) {
+            const Vec3d c = p.R * X + p.t;
+            if (c[2] < 1.0)
+                return false;
+            const Vec3d h = K * c;
+            x = Vec2d(h[0] / h[2] + rng.gaussian(noise), h[1] / h[2] + rng.gaussian(noise));
+            return x[0] >= 0 && x[0] < kWidth && x[1] >= 0 && x[1] < kHeight;
+        };
+        const auto descriptor = [&](const Mat& source, int row) {
+            Mat d = source.row(row).clone();
+            Mat n(1, kDescriptorLength, CV_32F);
+            rng.fill(n, RNG::NORMAL, 0.0, 0.03);
+            return Mat(d + n);
+        };
+        for (int i = 0; i < (int)points.size(); ++i)
+        {
+            Vec2d x;
+            if (project(points[i], x))
+            {
+                pts.push_back(Mat(Matx12d(x[0], x[1])));
+                pd.push_back(descriptor(pointDescriptors, i));
+            }
+        }
+        for (int i = 0; i < (int)segments.size(); ++i)
+        {
+            Vec2d a, b;
+            if (project(segments[i].first, a) && project(segments[i].second, b))
+            {
+                segs.push_back(Mat(Matx14d(a[0], a[1], b[0], b[1])));
+                ld.push_back(descriptor(lineDescriptors, i));
+            }
+        }
+        f.points = pts;
+        f.pointDescriptors = pd;
+        f.segments = segs;
+        f.lineDescriptors = ld;
+        return f;
+    }
+};
+
+//! Random features: a frame of another scene, or of noise.
+ImageFeatures noiseFeatures(RNG& rng, int points, int segments)
+{
+    ImageFeatures f;
+    f.points.create(points, 2, CV_64F);
+    rng.fill(f.points, RNG::UNIFORM, 0.0, (double)kHeight);
+    f.pointDescriptors.create(points, kDescriptorLength, CV_32F);
+    rng.fill(f.pointDescriptors, RNG::UNIFORM, 0.0, 1.0);
+    f.segments.create(segments, 4, CV_64F);
+    rng.fill(f.segments, RNG::UNIFORM, 0.0, (double)kHeight);
+    f.lineDescriptors.create(segments, kDescriptorLength, CV_32F);
+    rng.fill(f.lineDescriptors, RNG::UNIFORM, 0.0, 1.0);
+    return f;
+}
+
+struct Errors
+{
+    double rotationDeg, position; // position in metres
+};
+
+Errors poseErrors(const TrackedFrame& r, const Pose& truth)
+{
+    const Matx33d R(r.R);
+    const Vec3d t(r.t);
+    const Matx33d dR = R * truth.R.t();
+    const double c = std::max(-1.0, std::min(1.0, (dR(0, 0) + dR(1, 1) + dR(2, 2) - 1) / 2));
+    const Vec3d centre = -(R.t() * t);
+    return { std::acos(c) * 180 / CV_PI, cv::norm(centre - truth.centre()) };
+}
+
+Ptr<StereoTracker> makeTracker(const StereoSequence& seq)
+{
+    return StereoTracker::create(seq.K, noArray(), seq.K, noArray(), Mat(seq.rig.R), Mat(seq.rig.t));
+}
+
+TEST(Tripose_StereoTracker, registers_every_frame_at_metric_scale_without_poses)
+{
+    const StereoSequence seq(20, 1);
+    RNG rng(7);
+    Ptr<StereoTracker> tracker = makeTracker(seq);
+    double worstRotation = 0, worstPosition = 0;
+    for (int k = 0; k < (int)seq.poses.size(); ++k)
+    {
+        const TrackedFrame r = tracker->addFrame(seq.observe(seq.poses[k], rng, 0.5),
+                                                 seq.observe(seq.rightPose(k), rng, 0.5));
+        ASSERT_EQ(r.frame, k);
+        if (k == 0)
+        {
+            EXPECT_EQ(r.status, cv::tripose::FRAME_GIVEN);
+            EXPECT_LE(cv::norm(Mat(r.R), Mat::eye(3, 3, CV_64F)), 0.0);
+            continue;
+        }
+        ASSERT_EQ(r.status, cv::tripose::FRAME_REGISTERED) << "frame " << k << ": " << r.reason;
+        EXPECT_GE(r.inliers, 15) << "frame " << k;
+        const Errors e = poseErrors(r, seq.poses[k]);
+        worstRotation = std::max(worstRotation, e.rotationDeg);
+        worstPosition = std::max(worstPosition, e.position);
+    }
+    std::cout << "worst rotation error " << worstRotation << " deg, position " << worstPosition << " m over "
+              << seq.pathLength << " m" << std::endl;
+    EXPECT_LT(worstRotation, 1.0);
+    EXPECT_LT(worstPosition, 0.05 * seq.pathLength);
+    EXPECT_EQ(tracker->numFrames(), (int)seq.poses.size());
+    Mat R, t;
+    EXPECT_TRUE(tracker->getPose(5, R, t));
+}
+
+TEST(Tripose_StereoTracker, a_frame_of_noise_is_lost_and_the_next_ones_register)
+{
+    const StereoSequence seq(14, 2);
+    RNG rng(11);
+    Ptr<StereoTracker> tracker = makeTracker(seq);
+    const int noisy = 7;
+    for (int k = 0; k < (int)seq.poses.size(); ++k)
+    {
+        const bool noise = k == noisy;
+        const TrackedFrame r =
+            tracker->addFrame(noise ? noiseFeatures(rng, 200, 40) : seq.observe(seq.poses[k], rng, 0.5),
+                              noise ? noiseFeatures(rng, 200, 40) : seq.observe(seq.rightPose(k), rng, 0.5));
+        if (k == 0)
+            continue;
+        if (noise)
+        {
+            EXPECT_EQ(r.status, cv::tripose::FRAME_LOST);
+            EXPECT_FALSE(r.reason.empty());
+            EXPECT_TRUE(r.R.empty());
+            Mat R, t;
+            EXPECT_FALSE(tracker->getPose(k, R, t));
+            continue;
+        }
+        ASSERT_EQ(r.status, cv::tripose::FRAME_REGISTERED) << "frame " << k << ": " << r.reason;
+        const Errors e = poseErrors(r, seq.poses[k]);
+        EXPECT_LT(e.rotationDeg, 1.0) << "frame " << k;
+        EXPECT_LT(e.position, 0.05 * seq.pathLength) << "frame " << k;
+    }
+}
+
+void expectThrowNaming(const std::function<void()>& f, const std::string& name)
+{
+    try
+    {
+        f();
+        ADD_FAILURE() << "no exception; expected one naming " << name;
+    }
+    catch (const cv::Exception& e)
+    {
+        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+}
+
+TEST(Tripose_StereoTracker, bad_input_names_the_argument)
+{
+    const StereoSequence seq(3, 3);
+    const Mat R(seq.rig.R), t(seq.rig.t), K(seq.K);
+    expectThrowNaming([&] { StereoTracker::create(K, noArray(), K, noArray(), R, Mat::zeros(3, 1, CV_64F)); }, "t");
+    expectThrowNaming([&] { StereoTracker::create(K, noArray(), K, noArray(), 2 * R, t); }, "R");
+    expectThrowNaming([&] { StereoTracker::create(Mat::eye(2, 2, CV_64F), noArray(), K, noArray(), R, t); },
+                      "leftCameraMatrix");
+    expectThrowNaming([&] { StereoTracker::create(K, noArray(), Mat::zeros(3, 3, CV_64F), noArray(), R, t); },
+                      "K_right");
+    expectThrowNaming([&] { StereoTracker::create(K, Mat::zeros(1, 3, CV_64F), K, noArray(), R, t); }, "dist_left");
+    TrackerParams params;
+    params.minInliers = 0;
+    expectThrowNaming([&] { StereoTracker::create(K, noArray(), K, noArray(), R, t, params); }, "params.min_inliers");
+
+    Ptr<StereoTracker> tracker = makeTracker(seq);
+    RNG rng(5);
+    ImageFeatures left = seq.observe(seq.poses[0], rng, 0.5), right = seq.observe(seq.rightPose(0), rng, 0.5);
+    ImageFeatures fewer = right;
+    fewer.pointDescriptors = right.pointDescriptors.rowRange(0, right.pointDescriptors.rows - 1);
+    expectThrowNaming([&] { tracker->addFrame(left, fewer); }, "right.pointDescriptors");
+    ImageFeatures binary = right;
+    binary.pointDescriptors = Mat::zeros(right.pointDescriptors.rows, 32, CV_8U);
+    expectThrowNaming([&] { tracker->addFrame(left, binary); }, "right.point_descriptors");
+    ImageFeatures infinite = left;
+    infinite.points = left.points.clone();
+    infinite.points.at<double>(0, 0) = std::numeric_limits<double>::infinity();
+    expectThrowNaming([&] { tracker->addFrame(infinite, right); }, "left.points[0]");
+    expectThrowNaming([&] { tracker->addFrame(left, right, R); }, "R and t");
+    EXPECT_EQ(tracker->numFrames(), 0);
+    EXPECT_EQ(tracker->addFrame(left, right).status, cv::tripose::FRAME_GIVEN);
+}
+
+} // namespace
+} // namespace opencv_test
