@@ -19,7 +19,8 @@ struct TrackerOptions
 {
     int window = 5;     //!< Keyframes a new frame is registered against (>= 2).
     //! A frame is registered only when at least this many features agree with its pose: chance
-    //! matches give poses with a handful of inliers (doc/conventions.md, "Support").
+    //! matches give poses with a handful of inliers (doc/conventions.md, "Support"). It replaces
+    //! ransac.minInliers in the registration.
     int minInliers = 15;
     //! A registered frame becomes a keyframe when the median angle its inlier structure subtends
     //! between it and the window's last keyframe is at least this (deg; 0: every registered frame):

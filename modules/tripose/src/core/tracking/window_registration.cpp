@@ -267,8 +267,11 @@ Registration registerAgainstWindow(const TrackStore& store, int frame, const std
     std::vector<unsigned char> pointInliers, lineInliers;
     if (options.robust)
     {
+        // The tracker's floor is the one that decides: the estimate's own is set to it.
+        RansacOptions ransac = options.ransac;
+        ransac.minInliers = options.minInliers;
         RobustEstimate estimate;
-        if (estimateRobustOnKnownStructure(set, linear, options.ransac, estimate))
+        if (estimateRobustOnKnownStructure(set, linear, ransac, estimate))
         {
             out.pose = estimate.pose;
             out.inliers = estimate.numInliers;
