@@ -26,6 +26,7 @@
 #include "pipeline/posed_structure.hpp"
 #include "problem/view_set_builder.hpp"
 #include "support/error.hpp"
+#include "stereo_tracker_bindings.hpp"
 #include "tracker_bindings.hpp"
 
 namespace nb = nanobind;
@@ -658,6 +659,7 @@ NB_MODULE(_tripose_ext, m)
     });
 
     bindTracker(m);
+    bindStereoTracker(m);
 
     m.def("estimate_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,

@@ -35,8 +35,8 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _tripose_ext as _ext
-from .tracking import (Features, FrameResult, FrameStatus, MatchOptions, RansacOptions, RefineOptions, Tracker,
-                       TrackerOptions, match_triplets)
+from .tracking import (Features, FrameResult, FrameStatus, MatchOptions, RansacOptions, RefineOptions, StereoTracker,
+                       Tracker, TrackerOptions, match_triplets)
 
 __all__ = [
     "estimate_pose_line_point",
@@ -51,6 +51,7 @@ __all__ = [
     "adjust_poses_multiview",
     "triangulate_multiview",
     "Tracker",
+    "StereoTracker",
     "TrackerOptions",
     "RansacOptions",
     "RefineOptions",

@@ -4,7 +4,9 @@ A monocular tracker is built from a camera (K, optional distortion) and TrackerO
 frame at a time: features (points and segments with descriptors, from tripose.images or any
 detector), or observations of tracks the caller already linked. The first two frames need their
 poses (they fix the world frame and the scale); every later frame is registered against a window of
-keyframes and returns a FrameResult.
+keyframes and returns a FrameResult. A stereo tracker is built from the two cameras and the rig (the
+right camera's pose relative to the left) and fed the features of both images of each frame; it
+needs no pose.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ MatchOptions = _ext.MatchOptions
 FrameStatus = _ext.FrameStatus
 FrameResult = _ext.FrameResult
 
-__all__ = ["Features", "match_triplets", "Tracker", "TrackerOptions", "RansacOptions", "RefineOptions", "MatchOptions",
+__all__ = ["Features", "match_triplets", "Tracker", "StereoTracker", "TrackerOptions", "RansacOptions", "RefineOptions", "MatchOptions",
            "FrameStatus", "FrameResult"]
 
 
@@ -249,3 +251,95 @@ class Tracker:
         lie on their epipolar lines under the given poses. Under 30 % of 20 or more says the images
         are not in the poses' order or the calibration is wrong."""
         return self._tracker.given_pair_agreement
+
+
+def _feature_bytes(features: Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]) -> list:
+    """The arguments of the extension's add_* methods for one image's checked features."""
+    points, point_descriptors, segments, line_descriptors = features
+    return [points.tobytes(), len(points), point_descriptors.tobytes(), point_descriptors.shape[1],
+            bool(point_descriptors.dtype == np.uint8), segments.tobytes(), len(segments), line_descriptors.tobytes(),
+            line_descriptors.shape[1], bool(line_descriptors.dtype == np.uint8)]
+
+
+def _distortion(dist: Any) -> list:
+    return [] if dist is None else [float(v) for v in np.asarray(dist, dtype=np.float64).ravel()]
+
+
+class StereoTracker:
+    """A calibrated stereo rig tracked frame by frame from points and line segments, with no pose given.
+
+    StereoTracker(K_left, K_right, R, t, dist_left=None, dist_right=None, options=None): the two
+    (3, 3) camera matrices, the rig (R, t): the right camera's pose relative to the left
+    (x_right = R @ x_left + t, t non-zero: the baseline, in the units the poses are wanted in),
+    each camera's distortion coefficients (None: none; the features are undistorted with them) and
+    TrackerOptions.
+
+    Each call of track(left_features, right_features) takes the next frame and returns its
+    FrameResult; a frame's pose is its left camera's. The first frame's left camera is the world's
+    origin (status GIVEN) unless R, t are given. Every frame's left and right features are matched
+    under the rig's epipolar geometry (segments within matching.min_epipolar_angle_deg of the
+    epipolar lines are not), its left features linked to the frame before (as Tracker links them),
+    and it is registered with the stereo-rig estimator against the stereo pair of the newest of
+    the last options.window keyframes that gives it options.min_inliers inliers; otherwise it is
+    LOST (FrameResult.reason says why) and the next frame looks back over the same keyframes. A
+    registered frame is a keyframe when its structure subtends options.keyframe_parallax_deg
+    between it and its keyframe. options.local_adjustment is not used; known_views is 1 (one
+    stereo keyframe) for a registered frame. Bad input raises ValueError or TypeError naming the
+    argument.
+    """
+
+    def __init__(self, K_left: Any, K_right: Any, R: Any, t: Any, dist_left: Any = None, dist_right: Any = None,
+                 options: Optional[TrackerOptions] = None):
+        if options is None:
+            options = TrackerOptions()
+        if not isinstance(options, TrackerOptions):
+            raise TypeError(f"options must be a tripose.TrackerOptions, got {type(options).__name__}")
+        if R is None or t is None:
+            raise ValueError("R and t (the rig: the right camera's pose relative to the left) are required")
+        R, t = _pose(R, t)
+        self._tracker = _ext._StereoTracker(_camera(K_left, "K_left").tobytes(), _distortion(dist_left),
+                                            _camera(K_right, "K_right").tobytes(), _distortion(dist_right),
+                                            R.tobytes(), t.tobytes(), options)
+
+    def track(self, left_features: FeaturesLike, right_features: FeaturesLike, R: Any = None,
+              t: Any = None) -> FrameResult:
+        """The next frame from the features of its left and right images (Features, or dicts with
+        the same keys such as tripose.images.extract_features returns; None for an image that could
+        not be read, whose frame is then lost unless the other image's features carry it through).
+        R, t: the left camera's pose when known."""
+        left = _features(left_features, "left_features")
+        right = _features(right_features, "right_features")
+        R, t = _pose(R, t)
+        return self._tracker.add_frame(*_feature_bytes(left), *_feature_bytes(right), *_pose_bytes(R, t))
+
+    @property
+    def num_frames(self) -> int:
+        """Frames given so far."""
+        return self._tracker.num_frames
+
+    def pose(self, frame: int) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+        """The (R, t) of frame `frame`'s left camera; None when the frame is lost."""
+        return self._tracker.pose(int(frame))
+
+    def tracks(self, frame: int) -> Tuple[np.ndarray, np.ndarray]:
+        """(point_tracks, line_tracks) of frame `frame`'s left image as they are now: the track of
+        each of its points and segments, -1 for none."""
+        return self._tracker.tracks(int(frame))
+
+    def stereo_matches(self, frame: int) -> Tuple[np.ndarray, np.ndarray]:
+        """(point_rows, segment_rows) of frame `frame`: per point and segment of the left image, the
+        row of its match in the right image, -1 for none."""
+        return self._tracker.stereo_matches(int(frame))
+
+    def trajectory(self):
+        """Every frame's left-camera pose, in order: a list of (R, t), None for a lost frame."""
+        return [self._tracker.pose(k) for k in range(self.num_frames)]
+
+    @property
+    def options(self) -> TrackerOptions:
+        return self._tracker.options
+
+    @property
+    def rig(self) -> Tuple[np.ndarray, np.ndarray]:
+        """(R, t): the right camera's pose relative to the left, R made an exact rotation."""
+        return self._tracker.rig

@@ -1,0 +1,216 @@
+"""tripose.StereoTracker on synthetic stereo sequences, with no pose given.
+
+Points and segments of a 3D scene are projected into both cameras of a rig moving along a smooth
+path, with 0.5 px noise; each 3D feature has a descriptor (float32 values, or uint8 bytes) and each
+observation a little noise on it. Every frame must be registered at metric scale (the rig's
+baseline); a frame of noise must be lost and the next ones registered; bad input must raise naming
+the argument.
+"""
+import numpy as np
+import pytest
+
+import tripose
+
+REGISTERED, GIVEN, LOST = tripose.FrameStatus.REGISTERED, tripose.FrameStatus.GIVEN, tripose.FrameStatus.LOST
+WIDTH, HEIGHT = 640, 480
+K = np.array([[600.0, 0, 320], [0, 600, 240], [0, 0, 1]])
+NOISE_PX = 0.5
+
+
+def rotation(w):
+    w = np.asarray(w, dtype=np.float64)
+    angle = np.linalg.norm(w)
+    if angle == 0:
+        return np.eye(3)
+    k = w / angle
+    Kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(angle) * Kx + (1 - np.cos(angle)) * Kx @ Kx
+
+
+class StereoSequence:
+    """A rig (the right camera 0.3 m to the right, turned 0.6 deg) moving 4.5 m forward along a
+    gentle S with a slight yaw and pitch, and a scene 6-22 m in front of its start."""
+
+    def __init__(self, frames, seed, binary=False):
+        rng = np.random.default_rng(seed)
+        self.rng = rng
+        self.binary = binary
+        self.rig_R = rotation([0, 0.01, 0])
+        self.rig_t = -self.rig_R @ np.array([0.3, 0, 0])
+        self.poses = []
+        for k in range(frames):
+            s = k / (frames - 1)
+            centre = np.array([0.6 * np.sin(2 * np.pi * s), 0.1 * np.sin(np.pi * s), 4.5 * s])
+            R = rotation([0.03 * np.sin(np.pi * s), 0.12 * np.sin(2 * np.pi * s), 0.02 * s])
+            self.poses.append((R, -R @ centre))
+        centres = np.array([-R.T @ t for R, t in self.poses])
+        self.path_length = float(np.sum(np.linalg.norm(np.diff(centres, axis=0), axis=1)))
+        low, high = np.array([-8, -4, 6]), np.array([8, 4, 22])
+        self.points = rng.uniform(low, high, (300, 3))
+        starts = rng.uniform(low, high, (80, 3))
+        directions = rng.normal(size=(80, 3)) * [1, 1, 0.3]
+        directions *= (rng.uniform(0.8, 2.0, 80) / np.linalg.norm(directions, axis=1))[:, None]
+        self.segments = np.hstack([starts, starts + directions])
+        if binary:
+            self.point_descriptors = rng.integers(0, 256, (300, 32), dtype=np.uint8)
+            self.line_descriptors = rng.integers(0, 256, (80, 32), dtype=np.uint8)
+        else:
+            self.point_descriptors = rng.uniform(0, 1, (300, 128)).astype(np.float32)
+            self.line_descriptors = rng.uniform(0, 1, (80, 128)).astype(np.float32)
+
+    def right_pose(self, k):
+        R, t = self.poses[k]
+        return self.rig_R @ R, self.rig_R @ t + self.rig_t
+
+    def _descriptors(self, rows):
+        if self.binary:
+            # A few flipped bits per observation.
+            flips = np.zeros(rows.shape, np.uint8)
+            for i in range(len(rows)):
+                for bit in self.rng.choice(rows.shape[1] * 8, 6, replace=False):
+                    flips[i, bit // 8] |= np.uint8(1 << (bit % 8))
+            return rows ^ flips
+        return (rows + self.rng.normal(0, 0.03, rows.shape)).astype(np.float32)
+
+    def _project(self, R, t, X):
+        c = X @ R.T + t
+        h = c @ K.T
+        x = h[:, :2] / h[:, 2:3] + self.rng.normal(0, NOISE_PX, (len(X), 2))
+        visible = (c[:, 2] > 1) & (x[:, 0] >= 0) & (x[:, 0] < WIDTH) & (x[:, 1] >= 0) & (x[:, 1] < HEIGHT)
+        return x, visible
+
+    def observe(self, R, t):
+        """A tripose.Features of what a camera at (R, t) sees, rows shuffled."""
+        x, seen = self._project(R, t, self.points)
+        a, seen_a = self._project(R, t, self.segments[:, :3])
+        b, seen_b = self._project(R, t, self.segments[:, 3:])
+        points = np.flatnonzero(seen)
+        lines = np.flatnonzero(seen_a & seen_b)
+        points, lines = self.rng.permutation(points), self.rng.permutation(lines)
+        return tripose.Features(points=x[points], point_descriptors=self._descriptors(self.point_descriptors[points]),
+                                segments=np.hstack([a[lines], b[lines]]),
+                                line_descriptors=self._descriptors(self.line_descriptors[lines]))
+
+    def frame(self, k):
+        return self.observe(*self.poses[k]), self.observe(*self.right_pose(k))
+
+
+def noise_features(rng, binary=False, points=200, segments=40):
+    descriptors = ((lambda n: rng.integers(0, 256, (n, 32), dtype=np.uint8)) if binary
+                   else (lambda n: rng.uniform(0, 1, (n, 128)).astype(np.float32)))
+    return tripose.Features(points=rng.uniform(0, HEIGHT, (points, 2)), point_descriptors=descriptors(points),
+                            segments=rng.uniform(0, HEIGHT, (segments, 4)), line_descriptors=descriptors(segments))
+
+
+def errors(pose, truth):
+    """(rotation error in degrees, position error in metres)."""
+    R, t = pose
+    R_true, t_true = truth
+    c = np.clip((np.trace(R @ R_true.T) - 1) / 2, -1, 1)
+    return np.degrees(np.arccos(c)), float(np.linalg.norm(-R.T @ t + R_true.T @ t_true))
+
+
+def make_tracker(seq, options=None):
+    return tripose.StereoTracker(K, K, seq.rig_R, seq.rig_t, options=options)
+
+
+# About four times the worst errors of 20-frame sequences of seeds 0-9, float and binary descriptors.
+ROTATION_BOUND_DEG = 0.3
+POSITION_BOUND = 0.015  # of the path's length
+
+
+@pytest.mark.parametrize("binary", [False, True], ids=["float", "binary"])
+def test_every_frame_registered_at_metric_scale(binary):
+    seq = StereoSequence(20, seed=1, binary=binary)
+    tracker = make_tracker(seq)
+    worst = np.zeros(2)
+    for k in range(20):
+        result = tracker.track(*seq.frame(k))
+        assert result.frame == k
+        if k == 0:
+            assert result.status == GIVEN
+            np.testing.assert_array_equal(result.R, np.eye(3))
+            np.testing.assert_array_equal(result.t, np.zeros(3))
+            continue
+        assert result.status == REGISTERED, f"frame {k}: {result.reason}"
+        assert result.inliers >= tracker.options.min_inliers
+        assert result.known_views == 1
+        worst = np.maximum(worst, errors((result.R, result.t), seq.poses[k]))
+    assert worst[0] < ROTATION_BOUND_DEG
+    assert worst[1] < POSITION_BOUND * seq.path_length
+    trajectory = tracker.trajectory()
+    assert len(trajectory) == tracker.num_frames == 20
+    assert all(p is not None for p in trajectory)
+    point_rows, segment_rows = tracker.stereo_matches(5)
+    assert (point_rows >= 0).sum() > 50 and (segment_rows >= 0).sum() > 5
+
+
+def test_first_pose_given_places_the_world():
+    seq = StereoSequence(8, seed=2)
+    # The world moved so that frame 0's left camera is at (R0, t0): every pose follows it.
+    R0, t0 = rotation([0.1, -0.2, 0.3]), np.array([1.0, -2.0, 0.5])
+    tracker = make_tracker(seq)
+    for k in range(8):
+        result = tracker.track(*seq.frame(k), *((R0, t0) if k == 0 else (None, None)))
+        assert result.status == (GIVEN if k == 0 else REGISTERED), result.reason
+        R, t = seq.poses[k]
+        truth = (R @ R0, R @ t0 + t)
+        rotation_error, position_error = errors((result.R, result.t), truth)
+        assert rotation_error < ROTATION_BOUND_DEG and position_error < POSITION_BOUND * seq.path_length
+
+
+def test_a_frame_of_noise_is_lost_and_tracking_goes_on():
+    seq = StereoSequence(14, seed=3)
+    tracker = make_tracker(seq)
+    rng = np.random.default_rng(4)
+    for k in range(14):
+        if k == 7:
+            result = tracker.track(noise_features(rng), noise_features(rng))
+            assert result.status == LOST and result.R is None and result.reason
+            assert tracker.pose(k) is None
+            continue
+        result = tracker.track(*seq.frame(k))
+        if k == 0:
+            continue
+        assert result.status == REGISTERED, f"frame {k}: {result.reason}"
+        rotation_error, position_error = errors((result.R, result.t), seq.poses[k])
+        assert rotation_error < ROTATION_BOUND_DEG and position_error < POSITION_BOUND * seq.path_length
+    # An unreadable image pair (None) is lost too.
+    assert tracker.track(None, None).status == LOST
+
+
+def _raises(error, match, f):
+    with pytest.raises(error, match=match):
+        f()
+
+
+def test_bad_input_raises_naming_the_argument():
+    seq = StereoSequence(3, seed=5)
+    R, t = seq.rig_R, seq.rig_t
+    _raises(ValueError, r"\bt\b.*non-zero", lambda: tripose.StereoTracker(K, K, R, np.zeros(3)))
+    _raises(ValueError, r"\bR\b.*not a rotation", lambda: tripose.StereoTracker(K, K, 2 * R, t))
+    _raises(ValueError, "R and t", lambda: tripose.StereoTracker(K, K, None, t))
+    _raises(ValueError, "K_left", lambda: tripose.StereoTracker(np.eye(2), K, R, t))
+    _raises(ValueError, "K_right", lambda: tripose.StereoTracker(K, np.zeros((3, 3)), R, t))
+    _raises(ValueError, "dist_right", lambda: tripose.StereoTracker(K, K, R, t, dist_right=[0.1, 0.2, 0.3]))
+    options = tripose.TrackerOptions()
+    options.min_inliers = 0
+    _raises(ValueError, "options.min_inliers", lambda: tripose.StereoTracker(K, K, R, t, options=options))
+    _raises(TypeError, "options", lambda: tripose.StereoTracker(K, K, R, t, options="fast"))
+
+    tracker = make_tracker(seq)
+    left, right = seq.frame(0)
+    fewer = tripose.Features(right.points, right.point_descriptors[:-1], right.segments, right.line_descriptors)
+    _raises(ValueError, "right_features.point_descriptors", lambda: tracker.track(left, fewer))
+    binary = tripose.Features(right.points, np.zeros((len(right.points), 32), np.uint8), right.segments,
+                              right.line_descriptors)
+    _raises(ValueError, "right.point_descriptors", lambda: tracker.track(left, binary))
+    infinite = tripose.Features(left.points.copy(), left.point_descriptors, left.segments, left.line_descriptors)
+    infinite.points[3, 1] = np.inf
+    _raises(ValueError, r"left.points\[3\]", lambda: tracker.track(infinite, right))
+    _raises(ValueError, "R and t", lambda: tracker.track(left, right, R=np.eye(3)))
+    _raises(ValueError, "left_features has unknown keys", lambda: tracker.track({"pts": left.points}, right))
+    assert tracker.num_frames == 0
+    assert tracker.track(left, right).status == GIVEN
+    with pytest.raises(IndexError):
+        tracker.pose(1)
