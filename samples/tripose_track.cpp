@@ -6,9 +6,11 @@
 // cv::tripose::Tracker, and writes its trajectory in the TUM format. Points (SIFT) and segments
 // (EDLines fitted to their edges, LBD) are detected in each frame; the first two frames take their
 // poses from the calibration (frame 0 at the origin, frame 1 at R12, t12) or from a trajectory file.
+// With --right, the images are a stereo rig's left camera and --right its right camera's, tracked
+// with cv::tripose::StereoTracker: the calibration gives the rig, and no pose is needed.
 //
-//   tripose_track --images <folder | video | list> --calib calib.yml [--poses initial.txt]
-//                 --output trajectory.txt [--yaml result.yml] [options]
+//   tripose_track --images <folder | video | list> [--right <folder | video | list>] --calib calib.yml
+//                 [--poses initial.txt] --output trajectory.txt [--yaml result.yml] [options]
 
 #include <cmath>
 #include <fstream>
@@ -29,7 +31,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: tripose_track --images <folder | video | list> --calib calib.yml [--poses initial.txt]\n"
+    "usage: tripose_track --images <folder | video | list> [--right <folder | video | list>]\n"
+    "                     --calib calib.yml [--poses initial.txt]\n"
     "                     --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]\n"
     "                     [--threshold px] [--local-adjustment 0|1] [--keyframe-parallax deg] [--seed n]\n"
     "                     [--max-image-size px]\n"
@@ -37,6 +40,11 @@ const char* kUsage =
     "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
     "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
     "                 frame 0's camera frame (frame 0 is the world's origin; |t12| sets the scale)\n"
+    "  --right        the right camera's images of a stereo rig (--images: the left camera's), as many\n"
+    "                 frames as --images; the calibration then holds K1 (optional dist1) of the left\n"
+    "                 camera, K2 (dist2) of the right, and R12, t12: the right camera's pose relative to\n"
+    "                 the left (|t12| sets the scale). No pose is needed: frame 0's left camera is the\n"
+    "                 world's origin, or the first pose of --poses. --local-adjustment is not available\n"
     "  --poses        a TUM trajectory (timestamp tx ty tz qx qy qz qw, camera to world) whose lines are\n"
     "                 the poses of the first frames, in order (at least two)\n"
     "  --output       the trajectory (TUM), one line per frame with a pose; lost frames are left out\n"
@@ -53,7 +61,7 @@ const char* kUsage =
 
 struct Options
 {
-    std::string images, calib, poses, output, yaml;
+    std::string images, right, calib, poses, output, yaml;
     int maxImageSize = -1;
     cv::tripose::TrackerParams track;
 };
@@ -62,8 +70,8 @@ Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
-    const std::vector<std::string> known = { "--images", "--calib", "--poses", "--output", "--yaml", "--window",
-                                             "--min-inliers", "--threshold", "--local-adjustment",
+    const std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
+                                             "--window", "--min-inliers", "--threshold", "--local-adjustment",
                                              "--keyframe-parallax", "--seed", "--max-image-size" };
     for (const auto& option : optionPairs(argc, argv, kUsage, known, {}))
     {
@@ -71,6 +79,8 @@ Options parseArguments(int argc, char** argv)
         const std::string& value = option.second;
         if (arg == "--images")
             o.images = value;
+        else if (arg == "--right")
+            o.right = value;
         else if (arg == "--calib")
             o.calib = value;
         else if (arg == "--poses")
@@ -111,6 +121,8 @@ Options parseArguments(int argc, char** argv)
                                   std::make_pair("--output", &o.output) })
         if (required.second->empty())
             throw std::runtime_error(std::string("argument ") + required.first + " is required");
+    if (!o.right.empty() && o.track.localAdjustment)
+        throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
     return o;
 }
 
@@ -150,26 +162,60 @@ int main(int argc, char** argv)
     using namespace tripose_samples;
     Options options;
     Problem calib;
+    StereoCalibration rig;
     std::vector<StampedPose> given;
-    std::unique_ptr<FrameSource> source;
+    std::unique_ptr<FrameSource> source, rightSource;
     try
     {
         options = parseArguments(argc, argv);
         checkWritable(options.output, "--output");
         checkWritable(options.yaml, "--yaml");
-        try
+        if (options.right.empty())
         {
-            calib = readProblem(options.calib, false, !options.poses.empty());
+            try
+            {
+                calib = readProblem(options.calib, false, !options.poses.empty());
+            }
+            catch (const std::exception& e)
+            {
+                throw std::runtime_error("calibration " + options.calib + ": " + e.what());
+            }
+            if (calib.K.size() != 1)
+                throw std::runtime_error("calibration " + options.calib + ": key 'K': one camera matrix for the "
+                                         "sequence expected (K1.. are per view of a triplet; K1, K2 with --right)");
+            given = initialPoses(options, calib);
         }
-        catch (const std::exception& e)
+        else
         {
-            throw std::runtime_error("calibration " + options.calib + ": " + e.what());
+            try
+            {
+                rig = readStereoCalibration(options.calib);
+            }
+            catch (const std::exception& e)
+            {
+                throw std::runtime_error("calibration " + options.calib + " (--right: K1, K2, R12, t12): " + e.what());
+            }
+            try
+            {
+                cv::tripose::StereoTracker::create(rig.K[0], rig.dist[0], rig.K[1], rig.dist[1], rig.R12, rig.t12,
+                                                   options.track);
+            }
+            catch (const cv::Exception& e)
+            {
+                throw std::runtime_error("calibration " + options.calib + " (--right: K1, K2, R12, t12): " + e.err);
+            }
+            // A rig needs no pose: --poses, when given, places frame 0 only.
+            if (!options.poses.empty())
+            {
+                given = readTumTrajectory(options.poses);
+                if (given.empty())
+                    throw std::runtime_error("argument --poses: " + options.poses + " holds no pose");
+                given.resize(1);
+            }
         }
-        if (calib.K.size() != 1)
-            throw std::runtime_error("calibration " + options.calib + ": key 'K': one camera matrix for the sequence "
-                                     "expected (K1.. are per view of a triplet)");
-        given = initialPoses(options, calib);
         source.reset(new FrameSource(options.images));
+        if (!options.right.empty())
+            rightSource.reset(new FrameSource(options.right));
     }
     catch (const cv::Exception& e)
     {
@@ -182,32 +228,44 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    const cv::Matx33d K(calib.K[0]);
-    const cv::Mat dist = calib.dist.empty() ? cv::Mat() : calib.dist[0];
+    const bool stereo = !options.right.empty();
+    const cv::Matx33d K(stereo ? rig.K[0] : calib.K[0]);
+    const cv::Mat dist = stereo ? rig.dist[0] : calib.dist.empty() ? cv::Mat() : calib.dist[0];
+    const cv::Matx33d rightK = stereo ? cv::Matx33d(rig.K[1]) : K;
+    const char* const leftKey = stereo ? "K1" : "K";
+    const int fixedFrames = stereo ? 1 : 2; // the frames whose images must be read
     FeatureOptions features;
     if (options.maxImageSize >= 0)
         features.maxImageSize = options.maxImageSize;
     cv::Ptr<cv::tripose::Tracker> tracker;
+    cv::Ptr<cv::tripose::StereoTracker> stereoTracker;
     std::vector<cv::tripose::TrackedFrame> results;
     std::vector<double> timestamps;
     StageTimes times;
-    int registered = 0, lost = 0;
+    int givenFrames = 0, registered = 0, lost = 0;
     std::cout << "frame  status       inliers/features  ms    name\n";
     try
     {
         for (SourceFrame frame; source->next(frame);)
         {
             const bool hasPose = frame.index < (int)given.size();
-            if (frame.image.empty() && frame.index < 2)
-                throw std::runtime_error("frame " + std::to_string(frame.index) + " (" + frame.name + "): " +
-                                         frame.error + "; the first two frames fix the world and must be read");
-            ImageFeatures found;
+            SourceFrame rightFrame;
+            if (stereo && !rightSource->next(rightFrame))
+                throw std::runtime_error("--images " + options.images + " holds more frames than --right " +
+                                         options.right + " (" + std::to_string(frame.index) +
+                                         "): a rig's two sources must hold the same number of frames");
+            for (const SourceFrame* f : { &frame, &rightFrame })
+                if (f->image.empty() && frame.index < fixedFrames && (f == &frame || stereo))
+                    throw std::runtime_error("frame " + std::to_string(frame.index) + " (" + f->name + "): " +
+                                             f->error + (stereo ? "; the first frame fixes the world and must be read"
+                                                                : "; the first two frames fix the world and must be read"));
+            ImageFeatures found, foundRight;
             if (frame.image.empty())
                 std::cerr << "tripose_track: frame " << frame.index << " (" << frame.name << "): " << frame.error
                           << "; lost\n";
             else
             {
-                checkImageFitsCalibration(frame.image, frame.name, K, "K");
+                checkImageFitsCalibration(frame.image, frame.name, K, leftKey);
                 if (!tracker)
                 {
                     // The features of reduced images are that much less precise in the images' pixels.
@@ -217,15 +275,37 @@ int main(int argc, char** argv)
                 }
                 found = extractFeatures(frame.image, K, cv::Mat(), features, times);
             }
-            if (!tracker)
-                tracker = cv::tripose::Tracker::create(K, dist, options.track);
-            cv::tripose::TrackedFrame result = tracker->addFeatures(
-                found.points, found.pointDescriptors, found.segments, found.lineDescriptors,
-                hasPose ? cv::Mat(given[frame.index].R) : cv::Mat(), hasPose ? cv::Mat(given[frame.index].t) : cv::Mat());
+            if (stereo && rightFrame.image.empty())
+                std::cerr << "tripose_track: frame " << frame.index << " (" << rightFrame.name << ", --right): "
+                          << rightFrame.error << "; registered from the left image alone if it can be\n";
+            else if (stereo)
+            {
+                checkImageFitsCalibration(rightFrame.image, rightFrame.name, rightK, "K2");
+                foundRight = extractFeatures(rightFrame.image, rightK, cv::Mat(), features, times);
+            }
+            const cv::Mat givenR = hasPose ? cv::Mat(given[frame.index].R) : cv::Mat();
+            const cv::Mat givenT = hasPose ? cv::Mat(given[frame.index].t) : cv::Mat();
+            cv::tripose::TrackedFrame result;
+            if (stereo)
+            {
+                if (!stereoTracker)
+                    stereoTracker = cv::tripose::StereoTracker::create(K, dist, rightK, rig.dist[1], rig.R12, rig.t12,
+                                                                       options.track);
+                result = stereoTracker->addFrame(found, foundRight, givenR,
+                                                 givenT);
+            }
+            else
+            {
+                if (!tracker)
+                    tracker = cv::tripose::Tracker::create(K, dist, options.track);
+                result = tracker->addFeatures(found.points, found.pointDescriptors, found.segments,
+                                              found.lineDescriptors, givenR, givenT);
+            }
             const char* status = result.status == cv::tripose::FRAME_GIVEN ? "given" :
                                  result.status == cv::tripose::FRAME_LOST  ? "LOST" :
                                  result.keyframe                           ? "registered" :
                                                                              "registered*";
+            givenFrames += result.status == cv::tripose::FRAME_GIVEN;
             registered += result.status == cv::tripose::FRAME_REGISTERED;
             lost += result.status == cv::tripose::FRAME_LOST;
             std::cout << cv::format("%5d  %-11s  %7d/%-8d  %4.0f  %s", result.frame, status, result.inliers,
@@ -235,12 +315,17 @@ int main(int argc, char** argv)
             std::cout << "\n";
             results.push_back(result);
             timestamps.push_back(frame.timestamp);
-            const cv::Vec2i agreement = tracker->givenPairAgreement();
+            const cv::Vec2i agreement = tracker ? tracker->givenPairAgreement() : cv::Vec2i();
             if (result.frame == 1 && agreement[0] >= 20 && agreement[1] < 0.3 * agreement[0])
                 std::cerr << "tripose_track: warning: frames 0 and 1 do not follow their given poses: of "
                           << agreement[0] << " point matches found without the poses, " << agreement[1]
                           << " lie on their epipolar lines. Are the frames in order, and the calibration theirs?\n";
         }
+        SourceFrame extra;
+        if (stereo && rightSource->next(extra))
+            throw std::runtime_error("--right " + options.right + " holds more frames than --images " + options.images +
+                                     " (" + std::to_string(results.size()) +
+                                     "): a rig's two sources must hold the same number of frames");
     }
     catch (const cv::Exception& e)
     {
@@ -254,7 +339,7 @@ int main(int argc, char** argv)
     }
     std::cout << cv::format("%zu frames: %d given, %d registered, %d lost; ms per frame: points (SIFT) %.0f, "
                             "segments (EDLines, LBD) %.0f, tracking %.0f\n",
-                            results.size(), (int)std::min(given.size(), results.size()), registered, lost,
+                            results.size(), givenFrames, registered, lost,
                             times.points / std::max<size_t>(1, results.size()),
                             (times.segmentDetection + times.segmentDescription) / std::max<size_t>(1, results.size()),
                             [&] {
@@ -278,7 +363,8 @@ int main(int argc, char** argv)
             featureCounts.at<int>(k) = r.features;
             inliers.at<int>(k) = r.inliers;
             // The current poses: a local adjustment moves frames after their own result.
-            if (r.status == cv::tripose::FRAME_LOST || !tracker->getPose(k, r.R, r.t))
+            if (r.status == cv::tripose::FRAME_LOST ||
+                !(stereo ? stereoTracker->getPose(k, r.R, r.t) : tracker->getPose(k, r.R, r.t)))
                 continue;
             StampedPose pose;
             pose.timestamp = timestamps[k];
@@ -293,7 +379,10 @@ int main(int argc, char** argv)
         writeFileAtomically(options.output, std::vector<unsigned char>(text.begin(), text.end()));
         if (!options.yaml.empty())
             writeAtomically(options.yaml, [&](cv::FileStorage& fs) {
-                fs << "images" << options.images << "window" << options.track.window << "poses" << poses
+                fs << "images" << options.images;
+                if (stereo)
+                    fs << "right" << options.right;
+                fs << "window" << options.track.window << "poses" << poses
                    << "status" << status << "keyframe" << keyframes << "features" << featureCounts << "inliers"
                    << inliers;
             });

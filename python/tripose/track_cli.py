@@ -31,6 +31,13 @@ the image: check_image_fits), or an output that cannot be written ends the progr
 1 and a message naming the option, file, key or frame, before anything is written: the outputs are
 written only at the end, each through a temporary file renamed onto it.
 
+With --right, --images are the left camera's frames of a calibrated stereo rig and --right the right
+camera's (as many frames), tracked by tripose.StereoTracker: the calibration holds K1 (optionally
+dist1) of the left camera, K2 (dist2) of the right (or K, dist for both), and the rig as R12, t12: the
+right camera's pose relative to the left (x_2 = R12 x_1 + t12; |t12|, the baseline, is the unit of
+length). No pose is needed: frame 0's left camera is the world's origin, or the first pose of
+--poses when given. The poses written are the left camera's. --local-adjustment is not available.
+
 Also run as `python -m tripose.track_cli`.
 """
 from __future__ import annotations
@@ -97,6 +104,8 @@ def _parser():
     p = _Parser(prog=PROGRAM, description="The trajectory of a calibrated camera through a sequence of images, "
                                           "from their points and line segments (tripose.Tracker).")
     p.add_argument("--images", required=True, help="a folder of images, a video, or a text file listing images")
+    p.add_argument("--right", help="a stereo rig's right camera's frames (--images: the left camera's), as many; "
+                                   "the calibration then holds K1, K2, R12, t12 (the rig) and no pose is needed")
     p.add_argument("--calib", required=True, type=Path,
                    help="OpenCV YAML with K, optional dist, and R12, t12 (frame 1's pose relative to frame 0)")
     p.add_argument("--poses", type=Path, help="TUM trajectory whose lines are the poses of the first frames (>= 2); "
@@ -272,7 +281,77 @@ def read_calibration(path: Path):
     return K, dist, relative
 
 
-def read_initial_poses(path: Path) -> List[Tuple[np.ndarray, np.ndarray]]:
+def read_stereo_calibration(path: Path):
+    """(K (left, right), dist (left, right; None where absent), (R12, t12)) of a stereo rig's
+    calibration file: K1 and K2 (or K for both), optional dist1 and dist2 (or dist), and R12, t12, the
+    right camera's pose relative to the left; InputError naming the file and the key otherwise."""
+    cv2 = _cv2()
+    if not path.is_file():
+        raise InputError(f"--calib {path}: no such file")
+    try:
+        fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ)
+    except (cv2.error, SystemError) as error:
+        error = error.__cause__ or error
+        raise InputError(f"--calib {path}: cannot be parsed as OpenCV YAML, JSON or XML "
+                         f"({str(error).strip().splitlines()[-1]})") from None
+    if not fs.isOpened():
+        raise InputError(f"--calib {path}: cannot be opened as OpenCV YAML, JSON or XML")
+    try:
+        values = {key: _matrix(fs, key) for key in ("K", "K1", "K2", "dist", "dist1", "dist2", "R12", "t12")}
+    except InputError as error:
+        raise InputError(f"--calib {path}: {error}") from None
+    finally:
+        fs.release()
+
+    def per_camera(key, required):
+        shared, first, second = values[key], values[key + "1"], values[key + "2"]
+        if shared is not None and (first is not None or second is not None):
+            raise InputError(f"--calib {path}: key {key}: give either {key} (both cameras) or {key}1 and {key}2, "
+                             "not both")
+        if shared is not None:
+            return [(key, shared), (key, shared)]
+        if (first is None) != (second is None) or (required and first is None):
+            missing, camera = (f"{key}1", "left") if first is None else (f"{key}2", "right")
+            raise InputError(f"--calib {path}: no key {missing} (the {camera} camera's; with --right the "
+                             f"calibration gives {key}1 and {key}2, or {key} for both)")
+        return [(f"{key}1", first), (f"{key}2", second)]
+
+    Ks = []
+    for key, K in per_camera("K", True):
+        if K.size != 9 or not np.all(np.isfinite(K)):
+            raise InputError(f"--calib {path}: key {key}: expected a finite 3x3 camera matrix, got {K.size} values")
+        K = K.reshape(3, 3)
+        if not (K[0, 0] > 0 and K[1, 1] > 0 and K[2, 2] != 0):
+            raise InputError(f"--calib {path}: key {key}: the focal lengths K[0,0], K[1,1] must be > 0 and K[2,2] "
+                             "non-zero")
+        Ks.append(K)
+    dists = []
+    for key, dist in per_camera("dist", False):
+        if dist is not None:
+            dist = dist.ravel()
+            if dist.size == 0:
+                dist = None
+            elif dist.size not in (4, 5, 8, 12, 14) or not np.all(np.isfinite(dist)):
+                raise InputError(f"--calib {path}: key {key}: expected 4, 5, 8, 12 or 14 finite distortion "
+                                 f"coefficients, got {dist.size}")
+        dists.append(dist)
+    R12, t12 = values["R12"], values["t12"]
+    for key, value in (("R12", R12), ("t12", t12)):
+        if value is None:
+            raise InputError(f"--calib {path}: no key {key} (with --right, R12 and t12 are the rig: the right "
+                             "camera's pose relative to the left)")
+    if R12.size == 3:
+        R12 = cv2.Rodrigues(R12.reshape(3, 1))[0]
+    if R12.size != 9 or not _is_rotation(R12.reshape(3, 3)):
+        raise InputError(f"--calib {path}: key R12: expected a 3x3 rotation or a rotation vector")
+    if t12.size != 3 or not np.all(np.isfinite(t12)):
+        raise InputError(f"--calib {path}: key t12: expected 3 finite numbers, got {t12.size} values")
+    if not np.any(t12):
+        raise InputError(f"--calib {path}: key t12 is zero: the rig's baseline fixes the scale")
+    return Ks, dists, (np.ascontiguousarray(R12.reshape(3, 3)), t12.reshape(3).copy())
+
+
+def read_initial_poses(path: Path, minimum: int = 2) -> List[Tuple[np.ndarray, np.ndarray]]:
     """The poses (R, t), x_cam = R X + t, of a TUM trajectory's lines (camera-to-world: position
     and orientation of the camera in the world); InputError naming the file and line otherwise."""
     try:
@@ -296,11 +375,13 @@ def read_initial_poses(path: Path) -> List[Tuple[np.ndarray, np.ndarray]]:
                              f"({np.linalg.norm(q):.6g})")
         R = _quaternion_to_rotation(q).T
         poses.append((R, -R @ np.array(values[1:4])))
-    if len(poses) < 2:
+    if not poses and minimum == 1:
+        raise InputError(f"--poses {path}: holds no pose")
+    if len(poses) < minimum:
         raise InputError(f"--poses {path}: holds {len(poses)} pose(s); the first two frames need theirs (they fix "
                          "the world frame and the scale)")
     centres = np.array([-R.T @ t for R, t in poses])
-    if np.all(np.abs(centres - centres[0]).max(axis=1) == 0):
+    if minimum > 1 and np.all(np.abs(centres - centres[0]).max(axis=1) == 0):
         raise InputError(f"--poses {path}: every pose is at the same position: the given frames must be apart "
                          "(their baseline fixes the scale)")
     return poses
@@ -350,6 +431,8 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
     cv2 = _cv2()
     fs = cv2.FileStorage("", cv2.FILE_STORAGE_WRITE | cv2.FILE_STORAGE_MEMORY | cv2.FILE_STORAGE_FORMAT_YAML)
     fs.write("images", str(args.images))
+    if getattr(args, "right", None) is not None:
+        fs.write("right", str(args.right))
     fs.write("calib", str(args.calib))
     if args.poses is not None:
         fs.write("poses", str(args.poses))
@@ -382,6 +465,103 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
     return fs.releaseAndGetString()
 
 
+def _frame_count(source) -> Optional[int]:
+    """The number of frames of a folder or list source without reading them; None for a video."""
+    from . import images
+
+    path = Path(source)
+    try:
+        if path.is_dir():
+            return len(images._folder_files(path))
+        if path.is_file() and (path.suffix.lower() in (".txt", ".lst", ".list") or images._is_text(path)):
+            return len(images._list_entries(path))
+    except ValueError:
+        return None
+    return None
+
+
+def run_stereo(args) -> int:
+    """run() for a stereo rig (--right): tripose.StereoTracker on both sources' frames in lockstep."""
+    import itertools
+
+    import tripose
+    from . import images
+
+    if args.local_adjustment:
+        raise InputError("--local-adjustment: not available with --right (the stereo tracker has none)")
+    (K, K_right), (dist, dist_right), (R12, t12) = read_stereo_calibration(args.calib)
+    given = read_initial_poses(args.poses, minimum=1)[:1] if args.poses is not None else []
+    try:
+        tripose.StereoTracker(K, K_right, R12, t12, dist, dist_right, tracker_options(args))
+    except (ValueError, TypeError) as error:
+        raise InputError(f"--calib {args.calib}: {error}") from None
+    counts = (_frame_count(args.images), _frame_count(args.right))
+    if None not in counts and counts[0] != counts[1]:
+        raise InputError(f"--images {args.images} holds {counts[0]} frames but --right {args.right} holds "
+                         f"{counts[1]}: a rig's two sources must hold the same number of frames")
+    sources = []
+    for option, source in (("--images", args.images), ("--right", args.right)):
+        try:
+            sources.append(images.open_frames(source))
+        except ValueError as error:
+            raise InputError(f"{option} {error}") from None
+    feature_options = images.FeatureOptions()
+    if args.max_image_size is not None:
+        feature_options.max_image_size = args.max_image_size
+
+    tracker, pixel_scale, options = None, 1.0, None
+    frames = []
+    print(f"{'frame':>5}  {'name':<28} {'status':<10} {'inliers/features':>16} {'ms':>7}")
+    ended = object()
+    for index, (left, right) in enumerate(itertools.zip_longest(*sources, fillvalue=ended)):
+        if left is ended or right is ended:
+            longer, shorter = (("--right", args.right), ("--images", args.images)) if left is ended else \
+                (("--images", args.images), ("--right", args.right))
+            raise InputError(f"{longer[0]} {longer[1]} holds more frames than {shorter[0]} {shorter[1]} ({index}): "
+                             "a rig's two sources must hold the same number of frames")
+        stamp, name, image = left
+        features = []
+        for (_, frame_name, frame_image), camera, option in ((left, K, "--images"), (right, K_right, "--right")):
+            if frame_image is None:
+                if index == 0:
+                    raise InputError(f"frame 0 ({frame_name}, {option}): cannot be read or decoded; the first frame "
+                                     "fixes the world and must be read")
+                print(f"{PROGRAM}: frame {index} ({frame_name}, {option}): cannot be read or decoded", file=sys.stderr)
+                features.append(None)
+                continue
+            check_image_fits(camera, frame_image.shape, index, frame_name, args.calib)
+            features.append(images.extract_features(frame_image, camera, options=feature_options))
+        if tracker is None:
+            pixel_scale = images.detection_scale(image.shape, feature_options.max_image_size)
+            options = tracker_options(args, pixel_scale)
+            tracker = tripose.StereoTracker(K, K_right, R12, t12, dist, dist_right, options)
+        result = tracker.track(*features, *(given[0] if index < len(given) else (None, None)))
+        status, reason = result.status.name, result.reason
+        if features[0] is None and status == "LOST":
+            reason = "the left image cannot be read or decoded"
+        frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
+                       "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
+                       "reason": reason})
+        share = f"{result.inliers}/{result.features}"
+        print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
+              + (f"  {reason}" if reason else ""), flush=True)
+
+    poses = tracker.trajectory()
+    rows = [(f["timestamp"], R, t) for f, pose in zip(frames, poses) if pose is not None for R, t in [pose]]
+    texts = [(args.output, _tum_text(rows))]
+    if args.yaml is not None:
+        texts.append((args.yaml, _yaml_text(args, pixel_scale, options, frames, poses)))
+    for path, text in texts:
+        try:
+            _write_atomically(path, text)
+        except OSError as error:
+            raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
+    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
+          f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
+    return 0
+
+
 def run(args) -> int:
     import tripose
     from . import images
@@ -391,6 +571,8 @@ def run(args) -> int:
         _check_writable(args.yaml, "--yaml")
         if args.yaml.resolve() == args.output.resolve():
             raise InputError(f"--yaml {args.yaml}: the same file as --output")
+    if args.right is not None:
+        return run_stereo(args)
     K, dist, relative = read_calibration(args.calib)
     if args.poses is not None:
         given = read_initial_poses(args.poses)

@@ -594,7 +594,9 @@ Problem readFromText(const Text& text)
 
 } // namespace
 
-Problem readProblem(const std::string& path, bool allowUnknownKeys, bool poseOptional)
+namespace {
+
+std::string readFileText(const std::string& path)
 {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
     if (!file)
@@ -605,7 +607,56 @@ Problem readProblem(const std::string& path, bool allowUnknownKeys, bool poseOpt
         text.append(buffer, n);
     if (std::ferror(file.get()))
         throw std::runtime_error("cannot read " + path);
-    Text parsed = parseText(text, path);
+    return text;
+}
+
+//! K (dist) for both cameras, or K1 and K2 (dist1 and dist2); empty where optional and absent.
+void readRigShared(const Text& text, const std::string& key, bool required, cv::Mat out[2])
+{
+    const cv::Mat shared = readMatrix(text, key);
+    const cv::Mat first = readMatrix(text, key + "1"), second = readMatrix(text, key + "2");
+    if (!shared.empty() && (!first.empty() || !second.empty()))
+        throw keyError(key, "give either " + key + " (both cameras) or " + key + "1 and " + key + "2, not both");
+    if (!shared.empty())
+    {
+        out[0] = out[1] = shared;
+        return;
+    }
+    if (first.empty() != second.empty() || (required && first.empty()))
+        throw keyError(first.empty() ? key + "1" : key + "2",
+                       "missing (the " + std::string(first.empty() ? "left" : "right") + " camera's; give " + key +
+                           "1 and " + key + "2, or " + key + " for both)");
+    out[0] = first;
+    out[1] = second;
+}
+
+} // namespace
+
+StereoCalibration readStereoCalibration(const std::string& path)
+{
+    const Text text = parseText(readFileText(path), path);
+    checkKeys(text.keyOrder, problemFileKeys(), text.what);
+    StereoCalibration c;
+    readRigShared(text, "K", true, c.K);
+    for (int v = 0; v < 2; ++v)
+        requireShape(c.K[v], "K" + std::to_string(v + 1), 3, 3);
+    readRigShared(text, "dist", false, c.dist);
+    c.R12 = readMatrix(text, "R12");
+    if (c.R12.empty() || !(c.R12.total() == 9 || c.R12.total() == 3))
+        throw keyError("R12", c.R12.empty() ? "missing (the rig: the right camera's rotation relative to the left)"
+                                            : "expected 3x3 rotation or 3x1 Rodrigues vector");
+    c.t12 = readMatrix(text, "t12");
+    if (c.t12.total() != 3)
+        throw keyError("t12", c.t12.empty() ? "missing (the rig: the right camera's translation relative to the left)"
+                                            : "expected 3x1");
+    if (cv::norm(c.t12) == 0)
+        throw keyError("t12", "zero: the rig's baseline fixes the scale");
+    return c;
+}
+
+Problem readProblem(const std::string& path, bool allowUnknownKeys, bool poseOptional)
+{
+    Text parsed = parseText(readFileText(path), path);
     parsed.allowUnknownKeys = allowUnknownKeys;
     parsed.poseOptional = poseOptional;
     return readFromText(parsed);

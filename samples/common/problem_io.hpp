@@ -44,6 +44,18 @@ key on any unknown, malformed or inconsistent entry.
 */
 Problem readProblem(const std::string& path, bool allowUnknownKeys = false, bool poseOptional = false);
 
+/** A stereo rig's calibration: the left camera K1 (optional dist1), the right camera K2 (dist2), or
+K and dist shared by both, and the rig R12 (3x3 or 3x1 Rodrigues), t12: the right camera's pose
+relative to the left (x_2 = R12 x_1 + t12). Other problem keys pass; any other key, and a missing or
+malformed one, throw std::runtime_error naming it (readProblem()'s messages).
+*/
+struct StereoCalibration
+{
+    cv::Mat K[2], dist[2]; //!< Left, right; dist empty when not given.
+    cv::Mat R12, t12;
+};
+StereoCalibration readStereoCalibration(const std::string& path);
+
 //! The same from text in memory (used by the fuzzer).
 Problem readProblemFromString(const std::string& text, bool allowUnknownKeys = false);
 
