@@ -4,7 +4,7 @@
 
 // tripose_images_report: the image front end (tripose_images' steps) on every run of three consecutive
 // frames of a VGG multi-view sequence that comes with its images, beside other ways to the same pose,
-// against the sequence's cameras. Prints Markdown tables (doc/real_images.md is made of them):
+// against the sequence's cameras. Prints Markdown tables (doc/studies/real_images.md is made of them):
 //  - tripose, points and lines: estimatePoseLinePointRansac (refined under the front end's Cauchy loss,
 //    image_estimation.hpp) on the point tracks and segment triplets;
 //  - tripose, points only: the same on the point tracks alone;

@@ -251,7 +251,7 @@ Rig calibrateRig(const std::vector<Frame>& frames, cv::Size board, double square
     Rig rig;
     // Each camera alone first, then both jointly from there: started from scratch with the shared
     // focal length and rational model of OpenCV's stereo_calib sample, the joint optimisation stops
-    // at a clearly higher reprojection error on this data (see doc/stereo.md).
+    // at a clearly higher reprojection error on this data (see doc/studies/stereo.md).
     for (int s = 0; s < 2; ++s)
     {
         std::vector<cv::Mat> rvecs, tvecs;

@@ -54,7 +54,7 @@ c++ -std=c++17 $(pkg-config --cflags opencv4) -I"$root/build/install/include" -f
 CXX=/usr/bin/c++ CMAKE_CXX_COMPILER_LAUNCHER=ccache bash scripts/test_python_package.sh > build/python-package.log 2>&1 &
 package_job=$!
 # Hardening: the C++ suite under ASan + UBSan, then the two fuzz targets side by side for 60 s
-# (figures in doc/hardening.md).
+# (figures in doc/studies/hardening.md).
 sanitizer_status=0
 bash scripts/test_sanitizers.sh || sanitizer_status=$?
 package_status=0

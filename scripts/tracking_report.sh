@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The drift table of doc/tracking.md: tripose_track on every VGG sequence with more than three
+# The drift table of doc/studies/tracking.md: tripose_track on every VGG sequence with more than three
 # frames, per method, window and local adjustment (--local-refine); time per frame is the median over
 # RUNS runs (default 5) of the tracker's mean time per registered frame.
 #

@@ -2,7 +2,7 @@
 
 The covariance is that of the maximum-likelihood pose for 1 px noise (doc/conventions.md, "Pose
 covariance"); the C++ tests check it against finite differences and a Monte-Carlo study per regime
-(doc/accuracy.md). Here: what the package returns, where, in which order, and the conversion to the
+(doc/studies/accuracy.md). Here: what the package returns, where, in which order, and the conversion to the
 camera centre that doc/conventions.md derives.
 """
 import numpy as np

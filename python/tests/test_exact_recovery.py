@@ -6,7 +6,7 @@ solvers reach ~1e-10 on typical scenes; 1e-6 leaves room for ill-conditioned but
 
 Why ">= 99 % of the scenes" and not all of them: random scenes include rare configurations close
 to degenerate ones, where a minimal solver loses the true root to rounding (the measured rate is in
-doc/accuracy.md). 99 % on 200 scenes allows two such scenes and fails on a third, about ten times
+doc/studies/accuracy.md). 99 % on 200 scenes allows two such scenes and fails on a third, about ten times
 that rate. The scenes are seeded, so each run checks the same ones.
 """
 import numpy as np
@@ -191,7 +191,7 @@ def test_ransac_is_deterministic_for_a_seed():
 
 
 # Refinement from a pose 2 degrees and 5 % of |t| away converges to the truth. Levenberg-Marquardt
-# from that far needs more than the default 30 iterations in a few scenes (doc/accuracy.md), all of
+# from that far needs more than the default 30 iterations in a few scenes (doc/studies/accuracy.md), all of
 # them fewer than 300. The tests give 300 and check every scene;
 # test_refine_default_iterations_mostly_enough checks the default.
 REFINE_ITERATIONS = 300
@@ -230,7 +230,7 @@ def test_refine_from_perturbed_pose(kind):
 
 @pytest.mark.parametrize("kind", ["three", "stereo", "multi"])
 def test_refine_default_iterations_mostly_enough(kind):
-    # The default of 30 iterations: at most 2 of these 100 scenes may need more (doc/accuracy.md).
+    # The default of 30 iterations: at most 2 of these 100 scenes may need more (doc/studies/accuracy.md).
     slow = []
     for seed in range(100):
         s, r = refine_problem(kind, seed)

@@ -68,7 +68,7 @@ def test_large_images_through_the_package(tmp_path):
     assert "reduced by 1.28" in proc.stdout, proc.stdout
     result = read(out, ["R", "point_inliers"])
     # Measured 0.022 deg, 88 % of the tracks inliers; 0.014 deg on the original images
-    # (doc/real_images.md, "Large images").
+    # (doc/studies/real_images.md, "Large images").
     assert rotation_error_deg(result["R"], values["R_gt"]) < 0.1
     assert result["point_inliers"].sum() >= 0.7 * result["point_inliers"].size
     # The tolerances written are the ones the estimate used: the C++ tool with them gives its pose.

@@ -41,7 +41,7 @@ def test_narrow_baselines_report_the_minima_within_the_noise():
         assert result["R"] is not None, seed
         check_report(result)
         ambiguous += result["ambiguous"]
-    # About half of such scenes (4P+4L, 1 px) have a second minimum within the noise (doc/accuracy.md).
+    # About half of such scenes (4P+4L, 1 px) have a second minimum within the noise (doc/studies/accuracy.md).
     assert ambiguous >= 1
 
 

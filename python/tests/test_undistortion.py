@@ -11,7 +11,7 @@ cv2.undistortPoints(..., P=K) and no dist; both results must agree:
   reprojections move with them (by at most about as much): this compares the two undistortions
   in pixels;
 * the linear estimate to 1e-8 only: on noisy input its result moves by up to ~1e-9 (relative t)
-  when the pixels move by 1e-12 px, even without distortion (doc/accuracy.md), so that a 1e-9
+  when the pixels move by 1e-12 px, even without distortion (doc/studies/accuracy.md), so that a 1e-9
   bound on it would test the linear solver's own precision, not the undistortion.
 The observations carry 0.5 px of noise so that the estimates depend on every pixel (on noise-free
 data any good undistortion gives the true pose).

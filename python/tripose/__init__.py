@@ -19,7 +19,16 @@ Conventions (the same as the C++ API, doc/conventions.md):
 * K: one 3x3 camera matrix shared by every view, or a sequence of one per view. dist: None, or
   OpenCV's distortion coefficients (4, 5, 8, 12 or 14 values), shared or one per view; the
   observations are undistorted as cv2.undistortPoints does.
-* Pose covariance (the refiners' and the robust functions' dicts): covariance is the (6, 6)
+* Options: the robust functions take options=RansacOptions() (threshold, confidence,
+  max_iterations: samples drawn, local_optimization, refine, refine_options, seed, min_inliers), the
+  refiners options=RefineOptions() (max_iterations: Levenberg-Marquardt steps, loss, loss_scale,
+  tolerance); the keyword arguments of earlier releases (threshold=..., loss=...) still work for
+  this release and warn (README.md, "Changes").
+* Results: the robust functions, the refiners and adjust_poses_multiview return a PoseResult (R, t,
+  num_inliers, point_inliers, line_inliers, rms, covariance, noise_variance, candidates,
+  candidate_rms, ambiguous, points3d, lines3d, Rs, ts; None where not given; result["R"] reads
+  result.R). The candidate functions (estimate_pose_*) return a list of (R, t), best first.
+* Pose covariance (PoseResult.covariance of the refiners and the robust functions): covariance is the (6, 6)
   covariance of the pose for 1 px image noise, order [rotation; translation], the rotation error d
   with R_est = expm([d]x) @ R_true, the translation error t_est - t_true, the structure
   marginalised; multiply it by the noise variance, estimated from the residuals as noise_variance.
@@ -30,11 +39,13 @@ Conventions (the same as the C++ API, doc/conventions.md):
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _tripose_ext as _ext
+from ._tripose_ext import PoseResult
 from .tracking import (Features, FrameResult, FrameStatus, MatchOptions, RansacOptions, RefineOptions, StereoTracker,
                        Tracker, TrackerOptions, match_triplets)
 
@@ -50,6 +61,7 @@ __all__ = [
     "refine_pose_multiview",
     "adjust_poses_multiview",
     "triangulate_multiview",
+    "PoseResult",
     "Tracker",
     "StereoTracker",
     "TrackerOptions",
@@ -69,6 +81,63 @@ Pose = Tuple[np.ndarray, np.ndarray]
 def _seed(seed: int) -> int:
     """A seed as the 64 bits the sampler's generator starts from (a negative seed is a valid seed)."""
     return int(seed) & 0xFFFFFFFFFFFFFFFF
+
+
+_RANSAC_KEYWORDS = ("threshold", "confidence", "max_iterations", "refine", "seed", "min_inliers")
+_REFINE_KEYWORDS = ("max_iterations", "loss", "loss_scale", "tolerance")
+
+
+def _ransac_options(options: Optional[RansacOptions], function: str, **legacy: Any) -> Tuple[Any, str]:
+    """The RansacOptions to pass and the name its errors give (the fields alone for the keyword
+    arguments of earlier releases, which are deprecated and may not be mixed with options)."""
+    given = [name for name in _RANSAC_KEYWORDS if legacy[name] is not None]
+    if not given:
+        if options is not None and not isinstance(options, RansacOptions):
+            raise TypeError(f"options must be a tripose.RansacOptions, got {type(options).__name__}")
+        return options, "options"
+    if options is not None:
+        raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
+                         f"them in options ({', '.join('options.' + name for name in given)})")
+    warnings.warn(f"{function}: the keyword arguments {', '.join(given)} are deprecated; pass "
+                  f"options=tripose.RansacOptions() with {', '.join('options.' + name for name in given)} set "
+                  "(README.md, 'Changes')", DeprecationWarning, stacklevel=3)
+    built = RansacOptions()
+    for name in ("threshold", "confidence"):
+        if legacy[name] is not None:
+            setattr(built, name, float(legacy[name]))
+    for name in ("max_iterations", "min_inliers"):
+        if legacy[name] is not None:
+            setattr(built, name, int(legacy[name]))
+    if legacy["refine"] is not None:
+        built.refine = bool(legacy["refine"])
+    if legacy["seed"] is not None:
+        built.seed = _seed(legacy["seed"])
+    return built, ""
+
+
+def _refine_options(options: Optional[RefineOptions], function: str, **legacy: Any) -> Tuple[Any, str]:
+    """The RefineOptions to pass and the name its errors give, as _ransac_options()."""
+    given = [name for name in _REFINE_KEYWORDS if legacy[name] is not None]
+    if not given:
+        if options is not None and not isinstance(options, RefineOptions):
+            raise TypeError(f"options must be a tripose.RefineOptions, got {type(options).__name__}")
+        return options, "options"
+    if options is not None:
+        raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
+                         f"them in options ({', '.join('options.' + name for name in given)})")
+    warnings.warn(f"{function}: the keyword arguments {', '.join(given)} are deprecated; pass "
+                  f"options=tripose.RefineOptions() with {', '.join('options.' + name for name in given)} set "
+                  "(README.md, 'Changes')", DeprecationWarning, stacklevel=3)
+    built = RefineOptions()
+    if legacy["max_iterations"] is not None:
+        built.max_iterations = int(legacy["max_iterations"])
+    if legacy["loss"] is not None:
+        built.loss = str(legacy["loss"])
+    if legacy["loss_scale"] is not None:
+        built.loss_scale = float(legacy["loss_scale"])
+    if legacy["tolerance"] is not None:
+        built.tolerance = float(legacy["tolerance"])
+    return built, ""
 
 
 def _view_list(value: Any, name: str) -> Any:

@@ -15,7 +15,7 @@ not Gaussian: on the VGG sequences the point tracks that fit the sequence's came
 (median) sit beside a tail of 1-2 px (large SIFT key points, whose position moves with the
 viewpoint, and features far from the centre), which least squares over the RANSAC inliers (2 px)
 follows: the estimate then lies 10-14 standard deviations of its own covariance from the camera
-(doc/real_images.md, "Where the error came from"). A Cauchy loss a few times the core's spread keeps
+(doc/studies/real_images.md, "Where the error came from"). A Cauchy loss a few times the core's spread keeps
 the tail from pulling; 0.3-1 px give the same picture there. */
 const double kImageLossScale = 0.5;
 

@@ -24,7 +24,7 @@ only gets the orientation; one of zero length is dropped.
 
 Why: edge chaining detectors (EDLines) fit their lines to whole pixels, so a segment within a
 fraction of a degree of an image axis comes out up to 0.5 px off its edge; after the fit, edges
-rendered at known sub-pixel positions are found within 0.01 px at every slope (doc/real_images.md).
+rendered at known sub-pixel positions are found within 0.01 px at every slope (doc/studies/real_images.md).
 */
 std::vector<cv::Vec4f> fitSegmentsToEdges(const cv::Mat& image, const std::vector<cv::Vec4f>& segments);
 

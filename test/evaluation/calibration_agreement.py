@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""How the front ends tell a calibration that contradicts images 1 and 2 (doc/real_images.md,
+"""How the front ends tell a calibration that contradicts images 1 and 2 (doc/studies/real_images.md,
 "A calibration that contradicts the images"): for every consecutive pair of a VGG sequence with
 images, the share of the Python sample's descriptor matches found without the calibration
 (epipolar_agreement(): up to 300 points of the first image against all of the second) that lie

@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""The image front end on more triplets than the consecutive ones (doc/real_images.md, "Segments:
+"""The image front end on more triplets than the consecutive ones (doc/studies/real_images.md, "Segments:
 EDLines fitted to their edges"): points and lines against points only, by tripose_images.
 
     .venv/bin/python test/evaluation/images_many_triplets.py --model-house <Model House folder with its images> \

@@ -3,7 +3,7 @@
 # of this distribution and at http://opencv.org/license.html.
 
 """How far the sequence's cameras are from what their own correspondences say, and the image front
-end's estimates measured against both (doc/real_images.md, "Where the error came from").
+end's estimates measured against both (doc/studies/real_images.md, "Where the error came from").
 
     python test/evaluation/images_vs_own_fit.py --data <VGG folder with images> \
         [--tool build/samples/tripose_images_report]

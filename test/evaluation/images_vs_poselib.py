@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""PoseLib's PnPL beside tripose on the image front end's matches (doc/real_images.md).
+"""PoseLib's PnPL beside tripose on the image front end's matches (doc/studies/real_images.md).
 
     .venv/bin/python test/evaluation/images_vs_poselib.py --data <VGG folder with images> \
         [--tool build/samples/tripose_images_report] [--threshold 2] [--seed 0]

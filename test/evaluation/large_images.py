@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""Images larger than the front end's --max-image-size (doc/real_images.md, "Large images"): the
+"""Images larger than the front end's --max-image-size (doc/studies/real_images.md, "Large images"): the
 bundled Merton College I triplet enlarged to a 12-megapixel camera's size (4096 x 3072, bicubic,
 JPEG quality 92, the calibration enlarged with it), then the C++ tripose_images and the Python
 sample at several --max-image-size values: the whole process's wall-clock time and peak memory,

@@ -4,7 +4,7 @@
 
 """The work of the stereo rig's robust estimate per seeded scene, counted in instructions, and its
 slowest scene over the median: the ratio of the goal "worst-case time within 3 times the median
-over 100 seeded scenes" (doc/speed.md, Stereo rig), without the timing noise of a shared 2-core
+over 100 seeded scenes" (doc/studies/speed.md, Stereo rig), without the timing noise of a shared 2-core
 machine.
 
     .venv/bin/python test/evaluation/rig_scene_cost.py --tool build/test/evaluation/tripose_evaluate \\
@@ -18,7 +18,7 @@ run alone as --seed S + k, the sampler would draw other samples.) A batch of T s
 costs T (T + 1) / 2 scene runs. The first call of a process costs 0.6 % more than a second call on
 the same scene (seed 8000, trial 0), so trial 0 is counted as the others.
 The count of a scene is the same on every run of the same binary, whatever else the machine does;
-the time ratios of repeated timed passes scatter around it (doc/speed.md).
+the time ratios of repeated timed passes scatter around it (doc/studies/speed.md).
 Needs valgrind (Debian package valgrind). Runs two valgrind processes at a time.
 """
 

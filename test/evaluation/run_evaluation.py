@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""Regenerates every figure and table of doc/evaluation.md.
+"""Regenerates every figure and table of doc/studies/evaluation.md.
 
     .venv/bin/python test/evaluation/run_evaluation.py --size smoke   # CI size, a few minutes at most
     .venv/bin/python test/evaluation/run_evaluation.py --size full    # the paper's 500 trials
@@ -838,8 +838,8 @@ def _runs_by_command(runs):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--size", choices=sorted(SIZES), default="smoke")
-    parser.add_argument("--out", type=Path, default=REPO / "doc" / "evaluation",
-                        help="output folder for PNGs, tables.md and data/summary.json (default doc/evaluation)")
+    parser.add_argument("--out", type=Path, default=REPO / "doc" / "studies" / "evaluation",
+                        help="output folder for PNGs, tables.md and data/summary.json (default doc/studies/evaluation)")
     parser.add_argument("--only", nargs="*", choices=["fig3", "fig4", "fig5", "fig6", "outliers", "regimes", "stereo"],
                         help="run only these experiments (the others are kept from <out>/data/summary.json when "
                              "it has the same size)")

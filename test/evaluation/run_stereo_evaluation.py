@@ -2,10 +2,10 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""Regenerates the tables and the figure of doc/stereo.md: every frame pair of OpenCV's stereo
+"""Regenerates the tables and the figure of doc/studies/stereo.md: every frame pair of OpenCV's stereo
 calibration sample (test/data/stereo), our stereo-rig estimators beside the peers.
 
-    .venv/bin/python test/evaluation/run_stereo_evaluation.py [--out doc/stereo]
+    .venv/bin/python test/evaluation/run_stereo_evaluation.py [--out doc/studies/stereo]
 
 The sample tripose_stereo_chessboard (looked up in $TRIPOSE_BUILD_DIR, then <repo>/build) calibrates
 the rig, builds each pair's four-view problem from image features, runs our estimators and writes
@@ -255,8 +255,8 @@ def plot(rows, path):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=REPO / "doc" / "stereo",
-                        help="output folder for tables.md, errors.png and data/summary.json (default doc/stereo)")
+    parser.add_argument("--out", type=Path, default=REPO / "doc" / "studies" / "stereo",
+                        help="output folder for tables.md, errors.png and data/summary.json (default doc/studies/stereo)")
     args = parser.parse_args(argv)
     calibration, rows = evaluate(find_tool())
     summary = medians(rows)

@@ -11,7 +11,7 @@ camera's centre that the estimate's covariance gives (sigma^2 (J^T J)^-1, sigma 
     .venv/bin/python test/evaluation/sequence_ml_floor.py test/data/vgg/Corridor     # about a minute
 
 Prints the RMS error at the sequence's poses (points re-fitted) and at the estimate, and the last
-camera's distance from the sequence's in % of the path, beside its standard deviation. doc/tracking.md
+camera's distance from the sequence's in % of the path, beside its standard deviation. doc/studies/tracking.md
 quotes it for Corridor.
 """
 

@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""How precisely SIFT places a point, by the size of its key point (doc/real_images.md, "Tracking
+"""How precisely SIFT places a point, by the size of its key point (doc/studies/real_images.md, "Tracking
 Model House from images"): on every consecutive triplet of a VGG sequence with images, the point
 tracks of samples/python/pose_from_images.py (triplet_rows(): views 1-2 matched under their pose,
 view 3 under the fundamental matrix of its descriptor matches) are triangulated at the sequence's cameras (DLT) and

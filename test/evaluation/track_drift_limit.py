@@ -2,7 +2,7 @@
 # It is subject to the license terms in the LICENSE file found in the top-level directory
 # of this distribution and at http://opencv.org/license.html.
 
-"""What the observations of a tracked sequence allow (doc/real_images.md, "Tracking Model House from
+"""What the observations of a tracked sequence allow (doc/studies/real_images.md, "Tracking Model House from
 images"): the last frame's drift when the tracks are registered frame by frame, and at the
 maximum-likelihood fit of all frames at once, on the tracks as written and with every observation
 more than 2 px or 1 px off at the sequence's cameras removed (which no tracker can do: it measures

@@ -3,7 +3,7 @@
 # of this distribution and at http://opencv.org/license.html.
 
 """How well the tracks that tripose_track builds from images fit the sequence's own cameras
-(doc/real_images.md, "Tracking Model House from images").
+(doc/studies/real_images.md, "Tracking Model House from images").
 
     build/samples/tripose_track --data <VGG folder with images> --from-images --output track.yml \
         --observations tracks.yml

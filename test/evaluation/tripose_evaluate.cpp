@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// tripose_evaluate: one experiment of the evaluation suite (doc/evaluation.md) per invocation.
+// tripose_evaluate: one experiment of the evaluation suite (doc/studies/evaluation.md) per invocation.
 // Every trial is one JSON object on one line of stdout, so that a driver in any language reads
 // the results as they come and runs further peers on exactly the same inputs.
 //

@@ -21,7 +21,7 @@
 // one).
 //
 // --time adds the estimators' median time per scene (microseconds, the call alone, one thread): run
-// two builds side by side in one session to compare them (doc/speed.md).
+// two builds side by side in one session to compare them (doc/studies/speed.md).
 
 #include <algorithm>
 #include <cmath>

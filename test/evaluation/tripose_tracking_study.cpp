@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The Corridor analysis of doc/tracking.md: where registration and maximum-likelihood refinement
+// The Corridor analysis of doc/studies/tracking.md: where registration and maximum-likelihood refinement
 // put the frames of a VGG sequence when frames 0 and 1 are given.
 //
 //   tripose_tracking_study --data <sequence> --floor

@@ -65,7 +65,7 @@ def test_calibration_is_the_sequence_cameras():
 
 
 def test_merton_triplet_pose(merton_result):
-    # doc/real_images.md has the figures of this triplet; the bounds leave room for other OpenCV
+    # doc/studies/real_images.md has the figures of this triplet; the bounds leave room for other OpenCV
     # builds' detectors, not for a wrong pose.
     _, out = merton_result
     fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
@@ -130,7 +130,7 @@ def test_one_kind_of_feature(tmp_path, kinds):
     values = read_matrices(out, PROBLEM_KEYS + ["R"])
     absent = "lines1" if kinds == "points" else "points1"
     assert absent not in values
-    # Either kind alone still fixes the pose well below this bound (doc/real_images.md).
+    # Either kind alone still fixes the pose well below this bound (doc/studies/real_images.md).
     assert np.degrees(rotation_error(values["R"], truth()[0])) < 0.3
 
 
@@ -184,7 +184,7 @@ def test_distortion_given_is_undistorting_first(distorted):
     a, b = read_matrices(with_dist, ["R", "points3"]), read_matrices(first, ["R", "points3"])
     # Both see the scene through the same pinhole camera: as many tracks within a tenth, and poses as
     # close to the truth as on the original images (0.021 and 0.038 deg against 0.018 deg,
-    # doc/real_images.md), below the bound that ignoring the distortion breaks (the test below).
+    # doc/studies/real_images.md), below the bound that ignoring the distortion breaks (the test below).
     assert abs(len(a["points3"]) - len(b["points3"])) <= 0.1 * len(b["points3"])
     assert pose_error_deg(with_dist) < BOUND_DEG and pose_error_deg(first) < BOUND_DEG
     assert np.degrees(rotation_error(a["R"], b["R"])) < BOUND_DEG
@@ -434,7 +434,7 @@ def test_large_images_are_detected_reduced(enlarged):
     # Detected at 1600 x 1200 (the default --max-image-size), pixel tolerances 2.56 times the given ones.
     assert "reduced by 2.56" in output, output
     # Measured 0.032 deg (0.021 on the original images); 1.1 GB at its peak, against 4.8 GB and five
-    # times the time for the full images (--max-image-size 0; doc/real_images.md).
+    # times the time for the full images (--max-image-size 0; doc/studies/real_images.md).
     assert pose_error_deg(out) < BOUND_DEG
     assert peak < 2048, peak
     # The estimate's tolerances are the given ones (2 px, loss scale 0.5 px) times the reduction, and

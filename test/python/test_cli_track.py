@@ -1,5 +1,5 @@
 """End-to-end tests of `tripose_track_vgg` (test/evaluation) on the VGG sequences: the drift it reaches (bounds set from
-the figures of doc/tracking.md), the output file, the plot, the lost-frame status and the rejection
+the figures of doc/studies/tracking.md), the output file, the plot, the lost-frame status and the rejection
 of bad input (a clear message naming the file or argument, exit status 1, nothing written)."""
 import shutil
 import subprocess
@@ -28,7 +28,7 @@ def drift(out):
 
 
 # The bounds: Model House's drift at the default window, without and with the local adjustment
-# (doc/tracking.md), and half as much again for other OpenCV versions' rounding in RANSAC and refinement.
+# (doc/studies/tracking.md), and half as much again for other OpenCV versions' rounding in RANSAC and refinement.
 @pytest.mark.parametrize("local_refine,bound", [(0, 0.25), (1, 0.16)])
 def test_model_house_drift(tmp_path, local_refine, bound):
     proc, out = track(tmp_path, VGG / "Model-House", "--local-refine", local_refine)

@@ -24,7 +24,7 @@ def track(tmp_path, data, *options, name="track.yml"):
 
 def test_merton_college_i_from_images(tmp_path):
     # Frame 2 is the one new frame: it must be registered from the images' tracks (figures in
-    # doc/real_images.md).
+    # doc/studies/real_images.md).
     proc, out = track(tmp_path, VGG / "Merton-College-I")
     assert proc.returncode == 0, proc.stderr
     assert "warning" not in proc.stderr  # frames 0-1 agree with their cameras

@@ -4,7 +4,7 @@
 
 """The evaluation suite (test/evaluation/run_evaluation.py) at its smoke size, into a temporary folder.
 
-Runs every experiment of doc/evaluation.md with few trials (well under 3 minutes on 2 cores) and
+Runs every experiment of doc/studies/evaluation.md with few trials (well under 3 minutes on 2 cores) and
 checks what must hold whatever the machine: every artefact is written, noise-free problems are
 solved to rounding error, errors grow with the noise, the maximum-likelihood estimate is at least
 as accurate as the linear solver it starts from, RANSAC survives outliers that break the linear
@@ -147,7 +147,7 @@ def test_regimes_cover_every_method_and_refinement_helps(smoke):
         ours = methods["ransac"]["rot_deg"]["median"]
         if g["key"]["regime"].startswith("planar"):
             # Planar structure: RANSAC + refine reaches the ML optimum in every scene of the study in
-            # doc/accuracy.md (100 scenes); 1.5x leaves room for 10 smoke scenes.
+            # doc/studies/accuracy.md (100 scenes); 1.5x leaves room for 10 smoke scenes.
             assert ours <= 1.5 * methods["ml_from_truth"]["rot_deg"]["median"] + 1e-3, g["key"]
         else:
             # Narrow pair: triangulating from it is the weak step of the peers (5-7 deg at 1 px in
@@ -167,7 +167,7 @@ def test_stereo_covers_every_method_and_the_right_image_helps(smoke):
         if g["key"]["points"] != 10:
             continue
         # Ten scenes only: loose bounds that the full run's 500 scenes per setting meet by far
-        # (doc/evaluation.md, Stereo rig): near the four-view limit, and the right image at B helps.
+        # (doc/studies/evaluation.md, Stereo rig): near the four-view limit, and the right image at B helps.
         limit = methods["stereo_ml_from_truth"]["rot_deg"]["median"]
         ours = methods["stereo_ransac"]["rot_deg"]["median"]
         assert ours <= 1.5 * limit, g["key"]

@@ -40,7 +40,7 @@ def matched_problem(tmp_path_factory):
 
 
 def test_matched_problem_gives_the_pose(matched_problem, tmp_path):
-    # The same triplet as tripose_images (doc/real_images.md): the matching must find as many tracks.
+    # The same triplet as tripose_images (doc/studies/real_images.md): the matching must find as many tracks.
     values = read_matrices(matched_problem, ["points1", "points3", "lines1", "lines3", "R"])
     assert "R" not in values  # --problem-only: no estimate
     assert values["points1"].shape[0] >= 200 and values["lines1"].shape[0] >= 30
@@ -151,7 +151,7 @@ def test_image_with_values_that_are_not_numbers_is_rejected(tmp_path):
 
 @pytest.mark.parametrize("axis", [0, 1])
 def test_sift_positions_have_no_upsampling_offset(axis):
-    # SIFT as detected is 0.25 px off on both axes (doc/real_images.md); the front end removes it.
+    # SIFT as detected is 0.25 px off on both axes (doc/studies/real_images.md); the front end removes it.
     sys.path.insert(0, str(REPO / "test" / "evaluation"))
     from feature_position_bias import sift_offset
     image = cv2.imread(str(IMAGES[1]), cv2.IMREAD_GRAYSCALE)
@@ -166,7 +166,7 @@ def test_sift_positions_have_no_upsampling_offset(axis):
 
 def test_segments_lie_on_rendered_edges():
     # EDLines chains whole pixels: a segment along an axis comes out up to half a pixel off its edge
-    # (doc/real_images.md); the front end fits the segments to their edges.
+    # (doc/studies/real_images.md); the front end fits the segments to their edges.
     sys.path.insert(0, str(REPO / "test" / "evaluation"))
     from feature_position_bias import rendered_edge_shift
     _, raw_left = rendered_edge_shift(corrected=False)

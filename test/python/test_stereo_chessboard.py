@@ -4,7 +4,7 @@
 
 """tripose_stereo_chessboard on one frame pair of OpenCV's stereo calibration sample (test/data/stereo).
 
-The tolerances come from the 78 pairs of doc/stereo.md: over all of them the stereo RANSAC's
+The tolerances come from the 78 pairs of doc/studies/stereo.md: over all of them the stereo RANSAC's
 largest errors are 0.67 deg and 3.0 %, the stereo linear solver's on the lines alone 1.74 deg and
 4.3 %. Each test takes about a second.
 """
@@ -67,7 +67,7 @@ def test_a_missing_list_file_is_named(tmp_path):
 def test_three_view_ransac_on_lines_alone_is_never_turned_over(tmp_path):
     # Every one of the 78 pairs (about 3 s). Seen through lines alone, the planar board admits the
     # pose turned by pi about its normal, which fits every line exactly but sees the segments behind
-    # the camera (doc/stereo.md, "Lines alone"); it once came back on 29 pairs. The largest error
+    # the camera (doc/studies/stereo.md, "Lines alone"); it once came back on 29 pairs. The largest error
     # is now 2.0 deg; 5 deg is the table's line between an inaccurate and a wrong answer.
     out = tmp_path / "lines.yml"
     proc = subprocess.run([str(build_tool("tripose_stereo_chessboard")), "--data", str(DATA), "--pairs", "all",

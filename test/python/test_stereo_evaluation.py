@@ -3,8 +3,8 @@
 # of this distribution and at http://opencv.org/license.html.
 
 """test/evaluation/run_stereo_evaluation.py into a temporary folder (about 5 s): every artefact of
-doc/stereo.md is written, every frame pair is evaluated, and the methods that use the corners stay
-within the errors doc/stereo.md reports (the largest median there is 0.36 deg and 1.1 %).
+doc/studies/stereo.md is written, every frame pair is evaluated, and the methods that use the corners stay
+within the errors doc/studies/stereo.md reports (the largest median there is 0.36 deg and 1.1 %).
 """
 
 import json

@@ -61,7 +61,7 @@ TEST_P(Tripose_LinearExact, true_pose_is_found_and_selected)
               << worstSelectedRotation << " deg" << std::endl;
     EXPECT_GE(found, scenes * 999 / 1000);
     // Planar structure is held to the found criterion: its target is the true pose selected in
-    // 99.9 % of scenes (doc/accuracy.md).
+    // 99.9 % of scenes (doc/studies/accuracy.md).
     EXPECT_GE(selected, planar ? scenes * 999 / 1000 : scenes * 99 / 100);
 }
 

@@ -442,7 +442,7 @@ double trackingDrift(const std::string& name, int window)
 
 TEST(Tripose_MultiView, tracks_model_house)
 {
-    // The window is tripose_track's default, 5 (its drift here: doc/tracking.md). The bound leaves
+    // The window is tripose_track's default, 5 (its drift here: doc/studies/tracking.md). The bound leaves
     // half as much again for other OpenCV versions' rounding in RANSAC and refinement, and stays under
     // the 0.3 % the tracker is meant to reach on this sequence.
     const double drift = trackingDrift("Model-House", 5);

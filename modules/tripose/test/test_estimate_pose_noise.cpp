@@ -9,7 +9,7 @@ namespace {
 
 // Accuracy of the linear solver under Gaussian pixel noise on the paper's protocol (Sec. IV-A),
 // 300 seeded scenes per setting. The reference medians were measured with this code (table in
-// doc/accuracy.md); a median over 300 scenes varies by about 7 % between seeds sets, so the
+// doc/studies/accuracy.md); a median over 300 scenes varies by about 7 % between seeds sets, so the
 // assertion allows 30 % above the reference: a real regression (a lost factor, a broken
 // weighting) moves them by far more.
 struct NoiseReference
@@ -93,7 +93,7 @@ INSTANTIATE_TEST_CASE_P(/**/, Tripose_LinearNoise, testing::ValuesIn(kReferences
 // 1-2 slightly thick, and the general combinations then misread a kernel that is nearly as wide as
 // the exactly planar one; the planar closed form, tried beside them, gives the pose. The references
 // are the median over these 300 scenes and half as many gross errors (no pose, or more than 10
-// degrees) again as they have (doc/accuracy.md, "Noisy planar structure", gives the figures and
+// degrees) again as they have (doc/studies/accuracy.md, "Noisy planar structure", gives the figures and
 // those without the closed form, several times as many gross errors); the median may be 30 %
 // higher. Losing the closed form breaks both bounds by far.
 struct PlanarNoiseReference

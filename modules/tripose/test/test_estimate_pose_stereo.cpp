@@ -210,7 +210,7 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
     // views 3 and 4, as a stereo matcher would make them), a fifth seen by one time-B view only.
     // Not every scene succeeds: hypotheses are scored against structure triangulated from the rig
     // at time A alone, which a 0.1-0.5 m baseline places poorly at 5-30 m, so in some scenes the
-    // consensus stops short of the truth (doc/evaluation.md, "Stereo rig", counts them).
+    // consensus stops short of the truth (doc/studies/evaluation.md, "Stereo rig", counts them).
     // Where it succeeds the pose and the masks must be right.
     const int scenes = 10;
     for (double outliers : { 0.0, 0.25, 0.5 })
@@ -293,7 +293,7 @@ TEST(Tripose_Stereo, ransac_is_not_pulled_off_by_wrong_lines_that_pass_the_inlie
     // --outliers 0.5 --threshold 3 --seed 4000, trials 55, 94, 161 and 177) in which the estimate was
     // 0.6-2.7 degrees off while the four-view refinement from the truth on the true matches is within
     // 0.1: wrong line matches consistent between the two time-B images pass the re-triangulated
-    // inlier test, and the least-squares settle followed them (doc/evaluation.md, Stereo rig).
+    // inlier test, and the least-squares settle followed them (doc/studies/evaluation.md, Stereo rig).
     for (int trial : { 55, 94, 161, 177 })
     {
         const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(100, 40, 4000 + trial, 1.0, 0.5));
@@ -387,7 +387,7 @@ TEST(Tripose_Stereo, ransac_reaches_the_four_view_limit_and_beats_the_alternativ
     // median rotation error of the robust estimate within 5 % of the four-view limit (refinement
     // from the true pose), and below the three-view estimate on views 1-3 (the right image at B
     // must help) and triangulation from the rig at A + SQPnP on the left image at B. Measured
-    // over 500 scenes per mix (doc/evaluation.md, Stereo rig): 1.00x the limit. A single
+    // over 500 scenes per mix (doc/studies/evaluation.md, Stereo rig): 1.00x the limit. A single
     // refinement from the linear estimate (refinePoseLinePointStereo) does not meet it with
     // 10 + 10 features: the linear estimate is degrees off in some scenes, in another basin.
     const int scenes = 30;

@@ -5,7 +5,7 @@
 // Does the estimator reach the three-view maximum-likelihood optimum in the hard regimes (a narrow
 // known pair, planar structure)? The reference is refinement started from the true pose. A small
 // sample of each regime for CI; the full study (all regimes, 100+ scenes) is
-// build/test/evaluation/tripose_ml_study, reported in doc/accuracy.md.
+// build/test/evaluation/tripose_ml_study, reported in doc/studies/accuracy.md.
 
 #include "test_precomp.hpp"
 #include "test_pose_common.hpp"
@@ -76,7 +76,7 @@ TEST_P(Tripose_MlOptimum, estimates_reach_the_optimum_from_the_truth)
               << ransacReached << "/" << scenes << ", linear + refine " << linearReached << "/" << scenes
               << std::endl;
     // The target, 95 %: at most one scene of twenty. Linear + refinement falls short of it in the
-    // narrowest and planar large-motion regimes (doc/accuracy.md): it is allowed one scene more, the
+    // narrowest and planar large-motion regimes (doc/studies/accuracy.md): it is allowed one scene more, the
     // gap documented rather than hidden. (Bounds on the misses: they hold on any prefix of the seeds.)
     EXPECT_GE(ransacReached, scenes - 1);
     EXPECT_GE(linearReached, scenes - 2);

@@ -18,7 +18,7 @@
 //     TRIPOSE_NARROW_STUDY=100 TRIPOSE_NARROW_FIRST_SEED=S build/modules/tripose/opencv_test_tripose \
 //         --gtest_filter='Regimes/*NarrowMinima*'
 //
-// reported in doc/accuracy.md, "Narrow known baselines: the lowest minimum".
+// reported in doc/studies/accuracy.md, "Narrow known baselines: the lowest minimum".
 
 #include <cstdio>
 #include <cstdlib>
@@ -43,7 +43,7 @@ using ::tripose::LocalMinimum;
 using ::tripose::ViewSet;
 
 // The reference refinements run to convergence: in a narrow scene the cost creeps along a valley for
-// tens of iterations (doc/accuracy.md), and the default 30 could stop short of the minimum.
+// tens of iterations (doc/studies/accuracy.md), and the default 30 could stop short of the minimum.
 const int kReferenceIterations = 300;
 /** Two refinements reach the same cost when their sums of squares agree within this fraction.
 Convergence leaves about 1e-9 of the cost (the stopping tolerance is 1e-10 per step); distinct

@@ -5,7 +5,7 @@
 // A planar target seen through lines alone: the pose turned by pi about the plane's normal puts
 // every point of the plane at minus its depth in the estimated view, which leaves each line's
 // image, and so its residuals, unchanged. Only the side of the observed segments tells the two
-// apart (geometry/segment_cheirality.hpp). The scenes imitate the chessboard pairs of doc/stereo.md,
+// apart (geometry/segment_cheirality.hpp). The scenes imitate the chessboard pairs of doc/studies/stereo.md,
 // where the three-view RANSAC on lines alone returned that pose on 29 of 78 pairs.
 
 #include "test_pose_common.hpp"
@@ -19,7 +19,7 @@
 namespace opencv_test {
 namespace {
 
-// The board of doc/stereo.md: 9x6 inner corners, one unit per square, seen by a rig of 3.3 units
+// The board of doc/studies/stereo.md: 9x6 inner corners, one unit per square, seen by a rig of 3.3 units
 // baseline along its x axis from 12 to 20 units away.
 const int kColumns = 9, kRows = 6;
 const double kBaseline = 3.3;

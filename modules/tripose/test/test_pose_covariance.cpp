@@ -9,7 +9,7 @@
 //
 // The Monte-Carlo test takes its size from the environment: TRIPOSE_COVARIANCE_STUDY=SCENESxDRAWS
 // (default 20x100, what CI runs, about a second). It prints its table; the full study of
-// doc/accuracy.md is
+// doc/studies/accuracy.md is
 //   TRIPOSE_COVARIANCE_STUDY=20x500 opencv_test_tripose --gtest_filter='*PoseCovariance.*'
 
 #include "test_precomp.hpp"
@@ -202,7 +202,7 @@ TEST(Tripose_PoseCovariance, consistent_with_monte_carlo)
 {
     // The narrow regime (views 1 and 2 1 % of the scene depth apart) is far from linear at 1 px:
     // the depth of the structure, and with it the pose of view 3, is a reciprocal of a small noisy
-    // disparity, and the estimate has heavy tails that no covariance describes (doc/accuracy.md,
+    // disparity, and the estimate has heavy tails that no covariance describes (doc/studies/accuracy.md,
     // "Pose covariance"). Its 1 px rows are printed, not held to the targets; at 0.03 px, where the
     // first-order theory applies, it must meet them like the other regimes. A rare 1 px draw there
     // may also end with a line whose structure block is singular to rounding (its eigenvalues

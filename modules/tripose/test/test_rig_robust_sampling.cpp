@@ -195,7 +195,7 @@ TEST(Tripose_RigRobustSampling, sliding_scorer_is_exact_at_the_true_pose)
 // re-classifies the inliers; when they have settled, the refinement of the same features goes on
 // from the structure that round reached instead of re-triangulating it (robust_estimator.cpp,
 // multi_start_refiner.hpp). On the small sets whose refinement is slow (far lines on a short
-// baseline: the slowest of the seeded 10P+10L scenes of doc/speed.md, "Stereo rig"), refined from
+// baseline: the slowest of the seeded 10P+10L scenes of doc/studies/speed.md, "Stereo rig"), refined from
 // a perturbed true pose, the continued refinement starts where the capped one stopped, takes no
 // more iterations than re-triangulating there, and ends where both that and (where it converged)
 // one uncapped refinement end.

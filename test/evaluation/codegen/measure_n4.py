@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Measurements behind the N = 4 design choice (reported in doc/accuracy.md,
+"""Measurements behind the N = 4 design choice (reported in doc/studies/accuracy.md,
 "The N = 4 null vector").
 
 Compares ways to obtain the null vector u(b3) of the 5x6 matrix of eq. (24):

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Measurements behind the choice of method per kernel dimension d of the stereo-rig system
-(reported in doc/accuracy.md, "The stereo rig's method per kernel dimension").
+(reported in doc/studies/accuracy.md, "The stereo rig's method per kernel dimension").
 
 1. Reach (exact data, random d-dimensional affine kernels through a pose): the dimension of the
    solution space of C m = 0, each monomial of c an unknown, with the six column constraints

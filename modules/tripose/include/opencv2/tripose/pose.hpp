@@ -50,7 +50,7 @@ same distance, and, when the best minimum's rotation differs from that candidate
 around it; each refinement is repeated from its result with the structure triangulated afresh
 until it settles. The distinct minima that use every usable feature are returned, ranked by their
 RMS reprojection error over the three views: with a narrow known baseline or planar structure the
-linear candidates alone lead to another local minimum in many scenes (doc/accuracy.md). Minima
+linear candidates alone lead to another local minimum in many scenes (doc/studies/accuracy.md). Minima
 whose costs the noise cannot order are all there: see doc/conventions.md, "Several minima", for the
 rule (from @p reprojectionErrors and @p noiseVariance) that tells them.
 

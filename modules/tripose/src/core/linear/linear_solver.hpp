@@ -29,7 +29,7 @@ struct CandidateOptions
     bool twistedPairs;
     /** Four or five features: rotate the kernel basis so that its last vector fits best. It helps
     samples scored without twisted pairs; with twisted pairs the QR order fails less often (the
-    figures are in doc/accuracy.md).
+    figures are in doc/studies/accuracy.md).
     */
     bool orderedKernel;
 };

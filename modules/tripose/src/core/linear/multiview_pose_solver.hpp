@@ -11,7 +11,7 @@
 namespace tripose {
 
 /** Pairs of known views for the over-determined multi-view system. Measured by tracking the VGG
-sequences (doc/tracking.md): after RANSAC and refinement, every pair gives a drift equal to or below
+sequences (doc/studies/tracking.md): after RANSAC and refinement, every pair gives a drift equal to or below
 that of the best pair alone on every sequence and window; the linear estimate alone is better with
 every pair on Corridor and Wadham College and worse on Model House.
 */

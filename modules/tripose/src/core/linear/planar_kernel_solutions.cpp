@@ -29,7 +29,7 @@ namespace {
 constexpr double kPlanarTolerance = 1e-6;
 // Relative thickness below which noisy data may come from planar structure, whose kernel the general
 // combinations misread: pixel-level noise on planar scenes leaves a few hundredths (large motion,
-// after trimming; doc/accuracy.md), while structure in general position is near 1.
+// after trimming; doc/studies/accuracy.md), while structure in general position is near 1.
 constexpr double kNearPlanarTolerance = 0.1;
 // Rounds of trimming the positions far from the plane before judging near-planarity, and the
 // relative thickness of all positions above which no trimming is tried (general structure).

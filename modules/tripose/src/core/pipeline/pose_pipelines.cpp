@@ -40,7 +40,7 @@ the solver's starts of distinct rotations and the centre-direction starts around
 (searchBasins(), refine/hypothesis_starts.hpp); each is re-triangulated until it settles. Returns
 the distinct minima that use as many features as the best one (an RMS over fewer residuals is not
 comparable), lowest RMS first: with a narrow known pair or planar structure the linear candidates
-alone lead refinement to another minimum in most scenes (doc/accuracy.md). Candidates whose
+alone lead refinement to another minimum in most scenes (doc/studies/accuracy.md). Candidates whose
 refinement has no usable feature are dropped. */
 void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool severalBasins,
                       std::vector<ScoredPose>& candidates)
@@ -95,12 +95,12 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
                     const RansacOptions& options, RobustEstimate& estimate)
 {
     // Mixed minimal samples include three-line samples of the whole set, scored on all of it: they
-    // find the basin of a line-dominated set as three-point samples do for points (doc/speed.md,
+    // find the basin of a line-dominated set as three-point samples do for points (doc/studies/speed.md,
     // "Mixed samples of points and lines"), and the starts would cost a hundred times the rest.
     // The structure's own regimes (narrow pair, planar) still call for them, except where the
     // scorer lets the known structure slide in depth (the stereo rig): its minimal samples then
     // find the basin too, and the starts changed no result over 100 rig scenes at 10P+10L while
-    // they took 99 % of the time (doc/speed.md, "Stereo rig"); settling from all features, which
+    // they took 99 % of the time (doc/studies/speed.md, "Stereo rig"); settling from all features, which
     // costs one refinement, stays.
     const bool severalBasins =
         solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);

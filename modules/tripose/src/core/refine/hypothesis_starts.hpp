@@ -15,7 +15,7 @@ namespace tripose {
 
 /** Starts of different rotations for the search where the cost has several basins. With a narrow
 known pair the estimate over all features (and the starts that keep its rotation) can lie 40 to 150
-degrees from the rotation of the lowest minimum (doc/accuracy.md, "Narrow known baselines: the
+degrees from the rotation of the lowest minimum (doc/studies/accuracy.md, "Narrow known baselines: the
 lowest minimum"); the solver's minimal samples of @p features, each fitting a different few
 features, spread their rotations over those basins. Every distinct sample is solved (up to
 kMaxHypothesisSamples, else that many drawn with a fixed seed), each pose scored by the RMS of all

@@ -27,7 +27,7 @@ constexpr double kSameRms = 1e-9;
 constexpr double kRecentreRotation = 1e-2;
 // searchBasins() refines from its starts with at least this many iterations: in a narrow scene the
 // cost creeps along valleys for tens of iterations, and at the default 30 a start stopped short of
-// its minimum ranks above or below the others by where it stopped (doc/accuracy.md, "Narrow known
+// its minimum ranks above or below the others by where it stopped (doc/studies/accuracy.md, "Narrow known
 // baselines: the lowest minimum").
 constexpr int kSearchIterations = 100;
 // settleMinima(): the lowest minima of a search, at most kMaxSettled of them (distinct rotations)

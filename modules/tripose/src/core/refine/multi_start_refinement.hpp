@@ -75,7 +75,7 @@ centreDirectionStarts() around the first of them; then, when the best minimum's 
 apart from that first start's, from the centre-direction starts around the best minimum as well.
 The first start's rotation is a hypothesis' (a linear estimate: 5-9 degrees off at 1 px with a
 narrow known pair), and the starts that keep it miss basins that the same starts around the refined
-rotation reach (doc/accuracy.md, "Narrow known baselines: the lowest minimum"). The refinements
+rotation reach (doc/studies/accuracy.md, "Narrow known baselines: the lowest minimum"). The refinements
 run at least 100 iterations (more when @p params asks); then the lowest minima (up to eight, within
 twice the best cost) are refined again from their poses, with three times the iterations and the
 structure re-triangulated there, and replaced by where that ends: the best is chosen among minima
@@ -91,7 +91,7 @@ LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& sta
 alone, with @p params' iterations, then the lowest minima settled as in searchBasins(). On 100P+40L
 with a narrow known pair the starts of the solver's estimates (the inliers' and hypothesis_starts')
 find the basin; searchBasins() with its 26 centre-direction starts and 100 iterations over the 140
-features gave the same errors over 60 scenes at ten times the time (3 s a call; doc/accuracy.md,
+features gave the same errors over 60 scenes at ten times the time (3 s a call; doc/studies/accuracy.md,
 "Narrow known baselines, large sets"). Appends every minimum kept to @p minima when given; returns
 the best.
 */

@@ -26,7 +26,7 @@ only with a narrow known pair (searchesBasinOfLargeSets()), once per estimate: o
 alone (searchFromStarts()); the estimator's later calls, on the inliers as they settle, refine once
 from the pose they are given. Refined once from the RANSAC's pose, 100P+40L scenes with a narrow
 known pair ended at the lowest minimum of a reference search in 52 and 44 of 60 (1 % and 0.5 %
-baselines); searched once, in 58 and 49 (doc/accuracy.md, "Narrow known baselines, large sets").
+baselines); searched once, in 58 and 49 (doc/studies/accuracy.md, "Narrow known baselines, large sets").
 Large planar sets with a wide baseline are refined once: their samples find the basin, and the
 search left their errors as they were (medians and means to four decimals over 50 scenes) at eight
 times the time. Elsewhere one refinement from the

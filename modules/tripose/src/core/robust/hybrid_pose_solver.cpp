@@ -18,7 +18,7 @@ namespace tripose {
 namespace {
 
 // Time of a sample with lines relative to a P3P sample: the line solvers take three times as long
-// (doc/minimal_solvers.md) and return more poses to score.
+// (doc/studies/minimal_solvers.md) and return more poses to score.
 constexpr double kLineSampleCost = 3.0;
 /** Three lines of the known structure within this angle of one direction are a degenerate sample
 in practice: the rotation about that direction and the translation along it are fixed only by

@@ -27,7 +27,7 @@ constexpr int kSettleRounds = 3;
 // on small rig sets whose consensus leaves true features out, the first round's refinement on the
 // partial set ran to the 30-iteration cap, a third of its steps rejected (far lines on a short
 // baseline), only to be re-triangulated and refined again on the settled set. 12 takes the slowest
-// of 100 seeded 10P+10L scenes from 3.8-4.0 to 2.9-3.0 times the median (doc/speed.md).
+// of 100 seeded 10P+10L scenes from 3.8-4.0 to 2.9-3.0 times the median (doc/studies/speed.md).
 constexpr int kSettleRoundIterations = 12;
 // Problems up to this many features are also settled from all of them (run()).
 constexpr int kMaxSettleFromAll = 60;

@@ -45,7 +45,7 @@ constexpr double kPlanarThickness = 0.05;
 thicken planar structure: a median of 0.08 and a tenth of the scenes above 0.3 at 1 px, against 0.4
 to 0.6 for structure in a cube (a tenth below 0.18-0.35). Below this angle, structure up to this
 thickness counts as planar: the cube scenes it takes in pay the multi-start search, which leaves
-their errors as they are (doc/accuracy.md has the figures). */
+their errors as they are (doc/studies/accuracy.md has the figures). */
 constexpr double kModerateTriangulationAngleDeg = 15.0;
 constexpr double kNoisyPlanarThickness = 0.35;
 

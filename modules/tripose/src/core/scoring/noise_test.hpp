@@ -21,7 +21,7 @@ stereo rig a wrong line match that is consistent between the two images at the n
 pixels off at most: each pair's planes nearly coincide (a short baseline), and two planes always
 meet in a line. Such lines, 0.3-2.9 px RMS (most above 1.2) where true ones are 0.7 px at 1 px
 noise, pass the threshold, and a handful of them pulls the least-squares settle 0.5-2.7 degrees
-off (doc/evaluation.md, Stereo rig). Here a line stays an inlier only if its sum of squared residuals
+off (doc/studies/evaluation.md, Stereo rig). Here a line stays an inlier only if its sum of squared residuals
 (RMS^2 times their number n) is below the 99.9 % quantile of chi-square with n - 4 degrees of
 freedom (its four parameters fitted) times the noise variance: 1.5 px RMS in four views at 1 px,
 so one true line in a thousand is lost. The variance is estimated from the inlier points (sum of
