@@ -107,7 +107,7 @@ if [ "$cpp_tests" = 1 ]; then modules+=,ts,imgcodecs,videoio,highgui; fi
 # at -O1 (scripts/opencv/tripose_optimization.cmake), so that its suite runs at a useful speed.
 # Neither GCC nor clang reorders floating-point arithmetic without -ffast-math at any level (and the
 # baseline x86-64 target has no fused multiply-add), so the level does not change the results.
-# Compile times are in doc/test_time.md. The perf tests, built on request, get -O3 everywhere: their timings are
+# The perf tests, built on request, get -O3 everywhere: their timings are
 # meant to be read (switching rebuilds everything).
 optimization=-O0
 tripose_optimization=-O1
