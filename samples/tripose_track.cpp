@@ -26,6 +26,7 @@
 #include "image_features.hpp"
 #include "image_input.hpp"
 #include "problem_io.hpp"
+#include "tracker_arguments.hpp"
 #include "trajectory_io.hpp"
 
 namespace {
@@ -70,9 +71,10 @@ Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
-    const std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
-                                             "--window", "--min-inliers", "--threshold", "--local-adjustment",
-                                             "--keyframe-parallax", "--seed", "--max-image-size" };
+    std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
+                                       "--max-image-size" };
+    for (const std::string& name : trackerOptionNames("--local-adjustment"))
+        known.push_back(name);
     for (const auto& option : optionPairs(argc, argv, kUsage, known, {}))
     {
         const std::string& arg = option.first;
@@ -89,33 +91,10 @@ Options parseArguments(int argc, char** argv)
             o.output = value;
         else if (arg == "--yaml")
             o.yaml = value;
-        else if (arg == "--window")
-            o.track.window = parseInteger(arg, value, 2.0);
-        else if (arg == "--min-inliers")
-            o.track.minInliers = parseInteger(arg, value, 1.0);
         else if (arg == "--max-image-size")
             o.maxImageSize = parseInteger(arg, value, 0.0);
-        else if (arg == "--local-adjustment")
-        {
-            const int on = parseInteger(arg, value, 0.0);
-            if (on > 1)
-                throw argumentError(arg, "expected 0 or 1, got '" + value + "'");
-            o.track.localAdjustment = on == 1;
-        }
-        else if (arg == "--keyframe-parallax")
-        {
-            o.track.keyframeParallaxDeg = parseNumber(arg, value);
-            if (!(o.track.keyframeParallaxDeg >= 0 && o.track.keyframeParallaxDeg < 180))
-                throw argumentError(arg, "expected degrees from 0 to below 180, got '" + value + "'");
-        }
-        else if (arg == "--threshold")
-        {
-            o.track.ransac.threshold = parseNumber(arg, value);
-            if (!(o.track.ransac.threshold > 0))
-                throw argumentError(arg, "expected a positive number of pixels, got '" + value + "'");
-        }
-        else // --seed
-            o.track.ransac.seed = parseInteger(arg, value, -2147483647.0);
+        else
+            readTrackerOption(arg, value, "--local-adjustment", o.track);
     }
     for (const auto& required : { std::make_pair("--images", &o.images), std::make_pair("--calib", &o.calib),
                                   std::make_pair("--output", &o.output) })

@@ -27,6 +27,7 @@
 #include "image_estimation.hpp"
 #include "problem_io.hpp"
 #include "sequence_tracking.hpp"
+#include "tracker_arguments.hpp"
 #if TRIPOSE_HAVE_IMAGE_FRONT_END
 #include "image_input.hpp"
 #include "image_features.hpp"
@@ -78,22 +79,14 @@ struct Options
     cv::tripose::TrackerParams track;
 };
 
-//! A 0|1 option's value.
-bool parseSwitch(const std::string& arg, const std::string& value)
-{
-    const int on = tripose_samples::parseInteger(arg, value, 0.0);
-    if (on > 1)
-        throw tripose_samples::argumentError(arg, "expected 0 or 1, got '" + value + "'");
-    return on == 1;
-}
-
 Options parseArguments(int argc, char** argv)
 {
     using namespace tripose_samples;
     Options o;
-    const std::vector<std::string> known = { "--data", "--output", "--window", "--plot", "--method", "--threshold", "--seed",
-                                             "--local-refine", "--check-tracks", "--min-inliers",
-                                             "--keyframe-parallax", "--observations", "--max-image-size" };
+    std::vector<std::string> known = { "--data", "--output", "--plot", "--method", "--check-tracks", "--observations",
+                                       "--max-image-size" };
+    for (const std::string& name : trackerOptionNames("--local-refine"))
+        known.push_back(name);
     for (const auto& option : optionPairs(argc, argv, kUsage, known, { "--from-images" }))
     {
         const std::string& arg = option.first;
@@ -110,30 +103,12 @@ Options parseArguments(int argc, char** argv)
             o.observations = value;
         else if (arg == "--method")
             o.method = value;
-        else if (arg == "--local-refine")
-            o.track.localAdjustment = parseSwitch(arg, value);
         else if (arg == "--check-tracks")
             o.track.checkTracks = parseSwitch(arg, value);
         else if (arg == "--max-image-size")
             o.maxImageSize = parseInteger(arg, value, 0.0);
-        else if (arg == "--window")
-            o.track.window = parseInteger(arg, value, 2.0);
-        else if (arg == "--min-inliers")
-            o.track.minInliers = parseInteger(arg, value, 1.0);
-        else if (arg == "--keyframe-parallax")
-        {
-            o.track.keyframeParallaxDeg = parseNumber(arg, value);
-            if (!(o.track.keyframeParallaxDeg >= 0 && o.track.keyframeParallaxDeg < 180))
-                throw argumentError(arg, "expected degrees from 0 to below 180, got '" + value + "'");
-        }
-        else if (arg == "--threshold")
-        {
-            o.track.ransac.threshold = parseNumber(arg, value);
-            if (!(o.track.ransac.threshold > 0))
-                throw argumentError(arg, "expected a positive number of pixels, got '" + value + "'");
-        }
-        else // --seed
-            o.track.ransac.seed = parseInteger(arg, value, -2147483647.0);
+        else
+            readTrackerOption(arg, value, "--local-refine", o.track);
     }
     if (o.data.empty())
         throw std::runtime_error("argument --data is required");
