@@ -121,3 +121,21 @@ def test_bad_input_is_rejected_naming_it(tmp_path):
     big = tmp_path / "big.yml"
     big.write_text(calib.read_text().replace("506.56333333333333", "1013.1266666666667"))
     expect_rejected(tmp_path, "K", "--images", SEQUENCE / "images", "--calib", big)
+
+
+def test_video_file_is_tracked(tmp_path):
+    # The same frames as a Motion-JPEG video: read frame by frame, timestamped by the video's clock
+    # (1 frame per second here), every frame registered near the ground truth.
+    import cv2
+    video = tmp_path / "fountain.avi"
+    writer = cv2.VideoWriter(str(video), cv2.VideoWriter_fourcc(*"MJPG"), 1.0, (1024, 683))
+    assert writer.isOpened()
+    for k in range(11):
+        writer.write(cv2.imread(str(SEQUENCE / "images" / f"{k:04d}.jpg")))
+    writer.release()
+    proc, out = track(tmp_path, "--images", video, "--calib", SEQUENCE / "calib.yml")
+    assert proc.returncode == 0, proc.stderr
+    assert "11 frames: 2 given, 9 registered, 0 lost" in proc.stdout
+    per_frame = errors(out)
+    assert all(e is not None for e in per_frame)
+    assert max(e[0] for e in per_frame) < 0.2 and max(e[1] for e in per_frame) < 0.3
