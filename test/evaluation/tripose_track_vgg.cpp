@@ -3,7 +3,7 @@
 // of this distribution and at http://opencv.org/license.html.
 
 // tripose_track_vgg: cv::tripose::Tracker along a sequence in the Oxford VGG multi-view format,
-// for the tracking evaluation (doc/tracking.md). Frames 0 and 1 take their poses from the sequence;
+// for the tracking evaluation (doc/studies/tracking.md). Frames 0 and 1 take their poses from the sequence;
 // the others are tracked from the sequence's own correspondences or, with --from-images, from the
 // folder's images (one per camera, in name order). Writes the poses, prints per-frame errors
 // against the sequence's cameras and, with --plot, draws both trajectories seen from above.
