@@ -179,6 +179,33 @@ def test_a_frame_of_noise_is_lost_and_tracking_goes_on():
     assert tracker.track(None, None).status == LOST
 
 
+def test_a_rig_turning_on_the_spot_keeps_registering():
+    """Standing still adds no keyframe; turning 1.4 rad on the spot adds them as the view leaves
+    the keyframe's, and every frame is registered."""
+    seq = StereoSequence(2, seed=6)
+    rng = np.random.default_rng(7)
+    points = rng.uniform([-30, -4, -30], [30, 4, 30], (3000, 3))
+    seq.points = points[np.linalg.norm(points[:, [0, 2]], axis=1) > 6]
+    seq.point_descriptors = rng.uniform(0, 1, (len(seq.points), 128)).astype(np.float32)
+    seq.segments = seq.segments[:0]
+    seq.line_descriptors = seq.line_descriptors[:0]
+    R0, t0 = seq.poses[0]
+    seq.poses = [(R0, t0)] * 4 + [(rotation([0, 0.06 * j, 0]) @ R0, rotation([0, 0.06 * j, 0]) @ t0)
+                                  for j in range(1, 25)]
+    tracker = make_tracker(seq)
+    keyframes = []
+    for k in range(len(seq.poses)):
+        result = tracker.track(*seq.frame(k))
+        if k == 0:
+            continue
+        assert result.status == REGISTERED, f"frame {k}: {result.reason}"
+        rotation_error, position_error = errors((result.R, result.t), seq.poses[k])
+        assert rotation_error < ROTATION_BOUND_DEG and position_error < 0.05, f"frame {k}"
+        if result.keyframe:
+            keyframes.append(k)
+    assert keyframes and min(keyframes) > 3
+
+
 def _raises(error, match, f):
     with pytest.raises(error, match=match):
         f()

@@ -158,8 +158,9 @@ keyframes that gives a pose with at least TrackerParams::minInliers inliers; a f
 is lost (FRAME_LOST, TrackedFrame::reason says why), never given a wrong pose, and tracking goes on
 with the next frame. A registered frame becomes a keyframe when its inlier structure subtends at
 least TrackerParams::keyframeParallaxDeg between it and the keyframe (a rig standing still adds
-none). TrackerParams::localAdjustment is not used. TrackedFrame::knownViews is 1 (one stereo
-keyframe) for a registered frame.
+none), or when the keyframe's stereo pair sees less than half of its own stereo matches (a rig
+turning on the spot adds them before its view leaves the keyframe's). TrackerParams::localAdjustment
+is not used. TrackedFrame::knownViews is 1 (one stereo keyframe) for a registered frame.
 
 Poses follow the module: a frame's pose is its left camera's, x ~ K_left (R X + t), X in the world
 frame; the right camera is at the rig composed with it. Bad input throws cv::Exception naming the

@@ -25,6 +25,9 @@ namespace {
 // The rig's linear solver needs three features.
 const int kMinFeatures = 3;
 
+// A frame whose stereo matches the keyframe's pair sees less than this fraction of is a keyframe.
+const double kMinOverlap = 0.5;
+
 const FeatureKind kKinds[2] = { FeatureKind::Point, FeatureKind::Line };
 
 double nowSeconds()
@@ -148,6 +151,8 @@ struct StereoTracker::Attempt
     CameraPose relative; //!< Of the frame's left camera in the frame of the keyframe's.
     int features = 0, inliers = 0;
     double parallaxDeg = 0;
+    //! Of the frame's stereo matches, the fraction that the keyframe's stereo pair also sees.
+    double overlap = 1;
     std::string reason;
     std::vector<int> rejected[2]; //!< Tracks (points, lines) whose observation in the frame the estimate rejected.
 };
@@ -301,6 +306,15 @@ StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) c
         }
     }
     out.features = (int)(shared[0].size() + shared[1].size());
+    int stereoMatches = 0, sharedStereo = 0;
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        for (int right : kind == 0 ? stereoB.pointRight : stereoB.lineRight)
+            stereoMatches += right >= 0 ? 1 : 0;
+        for (const Shared& s : shared[kind])
+            sharedStereo += s.rightB >= 0 ? 1 : 0;
+    }
+    out.overlap = stereoMatches > 0 ? double(sharedStereo) / stereoMatches : 0.0;
     const int needed = std::max(kMinFeatures, options_.minInliers);
     if (out.features < needed)
     {
@@ -474,7 +488,7 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
             else
             {
                 f.status = FrameStatus::Registered;
-                f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg);
+                f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap;
                 for (int kind = 0; kind < 2; ++kind)
                     for (int track : chosen.rejected[kind])
                         store_.split(kKinds[kind], frame, store_.rowIn(kKinds[kind], track, frame));

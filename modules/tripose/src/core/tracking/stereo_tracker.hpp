@@ -40,8 +40,9 @@ Each frame:
 
 A registered frame becomes a keyframe when the median angle its inlier structure (triangulated from
 A's stereo pair) subtends between A's left camera and its own is at least
-TrackerOptions::keyframeParallaxDeg: a rig that stands still adds no keyframes, so its error does not
-grow. Frames given a pose are keyframes. With TrackerOptions::checkTracks (and robust), the features a
+TrackerOptions::keyframeParallaxDeg, or when A's stereo pair sees less than half of its own stereo
+matches: a rig that stands still adds no keyframes, so its error does not grow, and one that turns
+on the spot adds them before its view leaves A's. Frames given a pose are keyframes. With TrackerOptions::checkTracks (and robust), the features a
 registration rejects start new tracks. TrackerOptions::localAdjustment is not used.
 
 Poses follow the library: x_cam = R X + t, X in the world frame; the pose of a frame is its left
