@@ -72,18 +72,25 @@ class StereoSequence:
             return rows ^ flips
         return (rows + self.rng.normal(0, 0.03, rows.shape)).astype(np.float32)
 
-    def _project(self, R, t, X):
+    def _project(self, R, t, X, dist=None):
         c = X @ R.T + t
-        h = c @ K.T
-        x = h[:, :2] / h[:, 2:3] + self.rng.normal(0, NOISE_PX, (len(X), 2))
+        n = c[:, :2] / c[:, 2:3]
+        if dist is not None:
+            # OpenCV's model with k1, k2 (and p1, p2) only.
+            k1, k2, p1, p2 = dist
+            r2 = np.sum(n * n, axis=1, keepdims=True)
+            x, y = n[:, :1], n[:, 1:]
+            n = n * (1 + k1 * r2 + k2 * r2 * r2) + np.hstack([2 * p1 * x * y + p2 * (r2 + 2 * x * x),
+                                                               p1 * (r2 + 2 * y * y) + 2 * p2 * x * y])
+        x = n @ K[:2, :2].T + K[:2, 2] + self.rng.normal(0, NOISE_PX, (len(X), 2))
         visible = (c[:, 2] > 1) & (x[:, 0] >= 0) & (x[:, 0] < WIDTH) & (x[:, 1] >= 0) & (x[:, 1] < HEIGHT)
         return x, visible
 
-    def observe(self, R, t):
-        """A tripose.Features of what a camera at (R, t) sees, rows shuffled."""
-        x, seen = self._project(R, t, self.points)
-        a, seen_a = self._project(R, t, self.segments[:, :3])
-        b, seen_b = self._project(R, t, self.segments[:, 3:])
+    def observe(self, R, t, dist=None):
+        """A tripose.Features of what a camera at (R, t) with distortion dist sees, rows shuffled."""
+        x, seen = self._project(R, t, self.points, dist)
+        a, seen_a = self._project(R, t, self.segments[:, :3], dist)
+        b, seen_b = self._project(R, t, self.segments[:, 3:], dist)
         points = np.flatnonzero(seen)
         lines = np.flatnonzero(seen_a & seen_b)
         points, lines = self.rng.permutation(points), self.rng.permutation(lines)
@@ -91,8 +98,8 @@ class StereoSequence:
                                 segments=np.hstack([a[lines], b[lines]]),
                                 line_descriptors=self._descriptors(self.line_descriptors[lines]))
 
-    def frame(self, k):
-        return self.observe(*self.poses[k]), self.observe(*self.right_pose(k))
+    def frame(self, k, dist_left=None, dist_right=None):
+        return self.observe(*self.poses[k], dist_left), self.observe(*self.right_pose(k), dist_right)
 
 
 def noise_features(rng, binary=False, points=200, segments=40):
@@ -204,6 +211,28 @@ def test_a_rig_turning_on_the_spot_keeps_registering():
         if result.keyframe:
             keyframes.append(k)
     assert keyframes and min(keyframes) > 3
+
+
+def test_each_camera_undistorted_with_its_own_coefficients():
+    seq = StereoSequence(10, seed=8)
+    dist_left, dist_right = [-0.25, 0.08, 0.001, -0.002], [0.15, -0.05, -0.001, 0.001]
+
+    def worst(given_left, given_right):
+        tracker = tripose.StereoTracker(K, K, seq.rig_R, seq.rig_t, given_left, given_right)
+        out, lost = np.zeros(2), 0
+        for k in range(10):
+            result = tracker.track(*seq.frame(k, dist_left, dist_right))
+            if result.status == LOST:
+                lost += 1
+            elif k > 0:
+                out = np.maximum(out, errors((result.R, result.t), seq.poses[k]))
+        return out, lost
+
+    right, lost = worst(dist_left, dist_right)
+    assert lost == 0
+    assert right[0] < ROTATION_BOUND_DEG and right[1] < POSITION_BOUND * seq.path_length
+    swapped, lost = worst(dist_right, dist_left)
+    assert lost > 0 or swapped[1] > 3 * right[1]
 
 
 def _raises(error, match, f):
