@@ -4,8 +4,13 @@ Points and segments of a 3D scene are projected into both cameras of a rig movin
 path, with 0.5 px noise; each 3D feature has a descriptor (float32 values, or uint8 bytes) and each
 observation a little noise on it. Every frame must be registered at metric scale (the rig's
 baseline); a frame of noise must be lost and the next ones registered; bad input must raise naming
-the argument.
+the argument. The program tripose-track --right tracks a rendered rig sequence (a textured box room)
+from its images.
 """
+import subprocess
+import sys
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -270,3 +275,128 @@ def test_bad_input_raises_naming_the_argument():
     assert tracker.track(left, right).status == GIVEN
     with pytest.raises(IndexError):
         tracker.pose(1)
+
+
+# --- the program on rendered images --------------------------------------------------------------------
+
+REPO = Path(__file__).resolve().parents[2]
+TEXTURES = [REPO / "test" / "data" / "sequences" / "fountain-P11" / "images" / f"{k:04d}.jpg" for k in (0, 5)]
+RENDER_K = np.array([[400.0, 0, 240], [0, 400, 180], [0, 0, 1]])
+RENDER_SIZE = (480, 360)
+
+
+def render(cv2, textures, R, t):
+    """The image of a box room (walls 4 m either side, 9 m ahead, floor and ceiling, a panel 5.5 m
+    ahead) textured with photographs, seen by a camera at (R, t) with RENDER_K."""
+    width, height = RENDER_SIZE
+    planes = [  # (point, normal, u axis, v axis, u range, v range, texture)
+        ((0, 0, 9), (0, 0, -1), (1, 0, 0), (0, 1, 0), (-5, 5), (-3, 3), 0),
+        ((-4, 0, 0), (1, 0, 0), (0, 0, 1), (0, 1, 0), (-2, 9), (-3, 3), 1),
+        ((4, 0, 0), (-1, 0, 0), (0, 0, 1), (0, 1, 0), (-2, 9), (-3, 3), 1),
+        ((0, 2, 0), (0, -1, 0), (1, 0, 0), (0, 0, 1), (-4, 4), (-2, 9), 0),
+        ((0, -3, 0), (0, 1, 0), (1, 0, 0), (0, 0, 1), (-4, 4), (-2, 9), 1),
+        ((-1, 0.5, 5.5), (0, 0, -1), (1, 0, 0), (0, 1, 0), (-1, 1), (-1, 1.5), 1),
+    ]
+    centre = -R.T @ t
+    u, v = np.meshgrid(np.arange(width, dtype=np.float64), np.arange(height, dtype=np.float64))
+    rays = np.stack([u, v, np.ones_like(u)], -1) @ np.linalg.inv(RENDER_K).T @ R
+    nearest = np.full((height, width), np.inf)
+    image = np.zeros((height, width), np.uint8)
+    for point, normal, u_axis, v_axis, u_range, v_range, texture in planes:
+        point, normal = np.array(point, np.float64), np.array(normal, np.float64)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            depth = ((point - centre) @ normal) / (rays @ normal)
+            X = centre + rays * depth[..., None]
+            a, b = (X - point) @ np.array(u_axis, np.float64), (X - point) @ np.array(v_axis, np.float64)
+            hit = ((depth > 0.1) & (depth < nearest) & (a >= u_range[0]) & (a <= u_range[1]) & (b >= v_range[0])
+                   & (b <= v_range[1]))
+        tex = textures[texture]
+        mx = np.nan_to_num((a - u_range[0]) * 120.0) % tex.shape[1]
+        my = np.nan_to_num((b - v_range[0]) * 120.0) % tex.shape[0]
+        sample = cv2.remap(tex, mx.astype(np.float32), my.astype(np.float32), cv2.INTER_LINEAR)
+        image[hit] = sample[hit]
+        nearest[hit] = depth[hit]
+    return image
+
+
+@pytest.fixture(scope="module")
+def rendered_rig(tmp_path_factory):
+    """Six frames of a rig (0.25 m baseline) moving 1.2 m along a curve: left/ and right/ PNGs,
+    calib.yml (K1, K2, R12, t12) and the left camera's true poses."""
+    cv2 = pytest.importorskip("cv2")
+    folder = tmp_path_factory.mktemp("rendered-rig")
+    textures = [cv2.imread(str(p), cv2.IMREAD_GRAYSCALE) for p in TEXTURES]
+    assert all(t is not None for t in textures), f"the textures {TEXTURES} cannot be read"
+    rig_R = rotation([0, 0.005, 0])
+    rig_t = -rig_R @ np.array([0.25, 0, 0])
+    poses = []
+    for camera in ("left", "right"):
+        (folder / camera).mkdir()
+    for k in range(6):
+        s = k / 5
+        centre = np.array([0.4 * np.sin(np.pi * s), 0.1 * s, 1.1 * s])
+        R = rotation([0.02 * s, 0.08 * np.sin(np.pi * s), 0.01 * s])
+        t = -R @ centre
+        poses.append((R, t))
+        assert cv2.imwrite(str(folder / "left" / f"{k:04d}.png"), render(cv2, textures, R, t))
+        assert cv2.imwrite(str(folder / "right" / f"{k:04d}.png"), render(cv2, textures, rig_R @ R, rig_R @ t + rig_t))
+    fs = cv2.FileStorage(str(folder / "calib.yml"), cv2.FILE_STORAGE_WRITE)
+    fs.write("K1", RENDER_K)
+    fs.write("K2", RENDER_K)
+    fs.write("R12", rig_R)
+    fs.write("t12", rig_t.reshape(3, 1))
+    fs.release()
+    return folder, poses
+
+
+def run_program(*arguments):
+    return subprocess.run([sys.executable, "-m", "tripose.track_cli", *map(str, arguments)], capture_output=True,
+                          text=True, timeout=120)
+
+
+def read_tum(path):
+    """(R, t) per line of a TUM trajectory, in order."""
+    poses = []
+    for line in path.read_text().splitlines():
+        if line.strip() and not line.startswith("#"):
+            v = [float(x) for x in line.split()]
+            x, y, z, w = v[4:8]
+            R_world = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                                [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                                [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+            poses.append((R_world.T, -R_world.T @ np.array(v[1:4])))
+    return poses
+
+
+def test_program_tracks_a_rendered_rig_from_its_images(tmp_path, rendered_rig):
+    folder, truth = rendered_rig
+    out = tmp_path / "trajectory.txt"
+    proc = run_program("--images", folder / "left", "--right", folder / "right", "--calib", folder / "calib.yml",
+                       "--output", out)
+    assert proc.returncode == 0, proc.stderr
+    assert "6 frames: 1 given, 5 registered, 0 lost" in proc.stdout
+    tracked = read_tum(out)
+    assert len(tracked) == 6
+    centres = np.array([-R.T @ t for R, t in truth])
+    path_length = np.sum(np.linalg.norm(np.diff(centres, axis=0), axis=1))
+    for k, (pose, true_pose) in enumerate(zip(tracked, truth)):
+        rotation_error, position_error = errors(pose, true_pose)
+        assert rotation_error < ROTATION_BOUND_DEG and position_error < POSITION_BOUND * path_length, f"frame {k}"
+
+
+def test_program_rejects_sources_of_different_lengths_and_a_calibration_without_the_rig(tmp_path, rendered_rig):
+    folder, _ = rendered_rig
+    short = tmp_path / "short"
+    short.mkdir()
+    for k in range(4):
+        (short / f"{k:04d}.png").write_bytes((folder / "right" / f"{k:04d}.png").read_bytes())
+    out = tmp_path / "trajectory.txt"
+    proc = run_program("--images", folder / "left", "--right", short, "--calib", folder / "calib.yml", "--output", out)
+    assert proc.returncode == 1
+    assert "--images" in proc.stderr and "--right" in proc.stderr and "6 frames" in proc.stderr and "4" in proc.stderr
+    assert not out.exists()
+    calib = tmp_path / "no-right-camera.yml"
+    calib.write_text((folder / "calib.yml").read_text().replace("K2:", "K3:"))
+    proc = run_program("--images", folder / "left", "--right", folder / "right", "--calib", calib, "--output", out)
+    assert proc.returncode == 1 and "K2" in proc.stderr, proc.stderr
+    assert not out.exists()
