@@ -19,7 +19,7 @@ for sequence in Corridor Model-House Wadham-College; do
         [ "$method" = linear ] && [ "$adjust" != 0 ] && continue
         times=()
         for ((r = 0; r < runs; ++r)); do
-          log=$("$build/samples/tripose_track" --data "$data/$sequence" --output "$out/track.yml" --window "$window" \
+          log=$("$build/test/evaluation/tripose_track_vgg" --data "$data/$sequence" --output "$out/track.yml" --window "$window" \
                   --method "$method" --local-refine "$adjust")
           times+=("$(echo "$log" | sed -n 's/.*; \([0-9.]*\) ms per frame/\1/p')")
         done

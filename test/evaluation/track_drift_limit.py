@@ -8,7 +8,7 @@ maximum-likelihood fit of all frames at once, on the tracks as written and with 
 more than 2 px or 1 px off at the sequence's cameras removed (which no tracker can do: it measures
 how much of the drift the wrong links and the imprecise observations make).
 
-    build/samples/tripose_track --data <VGG folder> [--from-images] --check-tracks 0 --output track.yml \
+    build/test/evaluation/tripose_track_vgg --data <VGG folder> [--from-images] --check-tracks 0 --output track.yml \
         --observations tracks.yml
     python test/evaluation/track_drift_limit.py --data <VGG folder> --observations tracks.yml [--window 5]
 

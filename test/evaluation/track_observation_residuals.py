@@ -5,7 +5,7 @@
 """How well the tracks that tripose_track builds from images fit the sequence's own cameras
 (doc/studies/real_images.md, "Tracking Model House from images").
 
-    build/samples/tripose_track --data <VGG folder with images> --from-images --output track.yml \
+    build/test/evaluation/tripose_track_vgg --data <VGG folder with images> --from-images --output track.yml \
         --observations tracks.yml
     .venv/bin/python test/evaluation/track_observation_residuals.py --data <VGG folder> --observations tracks.yml
 
