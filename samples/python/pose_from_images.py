@@ -73,7 +73,7 @@ class ArgumentParser(argparse.ArgumentParser):
 
 def check_writable(path, option):
     """Raises InputError naming option and path when the file cannot be written there, checked before
-    the work as the C++ samples do (checkWritable(), samples/common/problem_io.hpp): an existing file
+    the work as the C++ samples do (checkWritable(), samples/common/file_output.hpp): an existing file
     must be writable, a new one is created and removed."""
     path = Path(path)
     folder = path.parent

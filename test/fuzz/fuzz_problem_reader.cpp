@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// libFuzzer target over the problem reader of the command-line tools (samples/common/problem_io):
+// libFuzzer target over the problem reader of the command-line tools (samples/common/problem_reader):
 // the input is the problem text (YAML or JSON), read strictly and with unknown keys allowed. The
 // reader's contract is a Problem or a std::runtime_error naming the key or the line; any other
 // exception, a crash, a sanitizer report or a timeout is a bug. What it returns is checked against
@@ -16,7 +16,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "problem_io.hpp"
+#include "problem_reader.hpp"
 
 namespace {
 

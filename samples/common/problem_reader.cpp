@@ -2,7 +2,7 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-#include "problem_io.hpp"
+#include "problem_reader.hpp"
 
 #include <yaml.h>
 
@@ -13,8 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -38,23 +36,6 @@ struct Node
     std::vector<size_t> items;                            //!< A sequence's nodes.
     std::vector<std::pair<std::string, size_t>> entries;  //!< A mapping's keys and their nodes, in order.
 };
-
-/** The keys readFromText reads, written once: Text::find refuses any other key, so that a key the
-reader reads cannot be missing here, and the unknown-key check (checkKeys) accepts exactly these and
-kSceneKeys.
-*/
-const char* const kProblemKeys[] = { "K",       "K1",      "K2",      "K3",     "K4",     "dist",   "dist1",
-                                     "dist2",   "dist3",   "dist4",   "R12",    "t12",    "points1", "points2",
-                                     "points3", "points4", "lines1",  "lines2", "lines3", "lines4" };
-
-/** The ground truth tripose_make_scene writes beside the problem keys. A scene file is a problem file
-(tools and tests pass it to tripose_estimate as it is), so these keys are known, though not read.
-*/
-const char* const kSceneKeys[] = { "R_gt",         "t_gt",         "points3d",         "lines3d",
-                                   "point_inliers", "line_inliers", "point_visibility", "line_visibility" };
-
-//! The fields of a matrix as FileStorage writes one: rows and cols or sizes, dt, data; JSON adds type_id.
-const char* const kMatrixFields[] = { "type_id", "rows", "cols", "sizes", "dt", "data" };
 
 template <size_t N>
 bool listed(const char* const (&names)[N], const std::string& name)
@@ -667,188 +648,6 @@ Problem readProblemFromString(const std::string& text, bool allowUnknownKeys)
     Text parsed = parseText(text, "the problem text");
     parsed.allowUnknownKeys = allowUnknownKeys;
     return readFromText(parsed);
-}
-
-std::vector<std::string> problemFileKeys()
-{
-    std::vector<std::string> keys(std::begin(kProblemKeys), std::end(kProblemKeys));
-    keys.insert(keys.end(), std::begin(kSceneKeys), std::end(kSceneKeys));
-    return keys;
-}
-
-size_t editDistance(const std::string& a, const std::string& b)
-{
-    // Insertions, deletions, substitutions and swaps of two neighbours (R21 for R12), each one edit:
-    // the optimal string alignment distance, over the whole table (keys are short).
-    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-    for (size_t i = 0; i <= a.size(); ++i)
-        d[i][0] = i;
-    for (size_t j = 0; j <= b.size(); ++j)
-        d[0][j] = j;
-    for (size_t i = 1; i <= a.size(); ++i)
-        for (size_t j = 1; j <= b.size(); ++j)
-        {
-            d[i][j] = std::min({ d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1) });
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    return d[a.size()][b.size()];
-}
-
-std::string closestKey(const std::string& key, const std::vector<std::string>& valid)
-{
-    // Near enough to be a slip of the keyboard: a third of the key's length, at least one edit.
-    const size_t limit = std::max<size_t>(1, key.size() / 3);
-    std::string best;
-    size_t bestDistance = limit + 1;
-    for (const std::string& candidate : valid)
-    {
-        const size_t d = editDistance(key, candidate);
-        if (d < bestDistance)
-        {
-            bestDistance = d;
-            best = candidate;
-        }
-    }
-    return best;
-}
-
-void checkKeys(const std::vector<std::string>& keys, const std::vector<std::string>& valid, const std::string& file,
-               const std::string& parent)
-{
-    for (const std::string& key : keys)
-    {
-        if (std::find(valid.begin(), valid.end(), key) != valid.end())
-            continue;
-        std::string message = "unknown key '" + key + "'" + (parent.empty() ? "" : " of '" + parent + "'") + " in " + file;
-        const std::string suggestion = closestKey(key, valid);
-        if (!suggestion.empty())
-            message += " (did you mean '" + suggestion + "'?)";
-        else
-        {
-            message += " (known keys:";
-            for (size_t i = 0; i < valid.size(); ++i)
-                message += (i ? ", " : " ") + valid[i];
-            message += "; --allow-unknown-keys reads a file that carries other data)";
-        }
-        throw std::runtime_error(message);
-    }
-}
-
-std::string problemKeyNamedBy(const std::string& solverMessage)
-{
-    static const char* const names[][2] = {
-        { "cameraMatrix[0]", "K1" }, { "cameraMatrix[1]", "K2" }, { "cameraMatrix[2]", "K3" },
-        { "cameraMatrix[3]", "K4" }, { "cameraMatrix", "K" },
-        { "distCoeffs[0]", "dist1" }, { "distCoeffs[1]", "dist2" }, { "distCoeffs[2]", "dist3" },
-        { "distCoeffs[3]", "dist4" }, { "distCoeffs", "dist" },
-        { "points1", "points1" }, { "points2", "points2" }, { "points3", "points3" }, { "points4", "points4" },
-        { "lines1", "lines1" }, { "lines2", "lines2" }, { "lines3", "lines3" }, { "lines4", "lines4" },
-        { "R12", "R12" }, { "t12", "t12" },
-    };
-    // The subject comes first ("points3 has 2 points but points1 has 3"); at one position the
-    // longer name wins ("cameraMatrix[1]" over "cameraMatrix").
-    size_t bestAt = std::string::npos, bestLength = 0;
-    const char* key = nullptr;
-    for (const auto& name : names)
-    {
-        const size_t at = solverMessage.find(name[0]);
-        const size_t length = std::char_traits<char>::length(name[0]);
-        if (at != std::string::npos && (at < bestAt || (at == bestAt && length > bestLength)))
-        {
-            bestAt = at;
-            bestLength = length;
-            key = name[1];
-        }
-    }
-    return key ? std::string(" (key '") + key + "')" : std::string();
-}
-
-void writeProblem(cv::FileStorage& fs, const Problem& problem)
-{
-    CV_Assert(!problem.stereo);
-    const auto writeShared = [&](const std::string& key, const std::vector<cv::Mat>& perView) {
-        if (perView.size() == 1)
-            fs << key << perView[0];
-        else
-            for (size_t v = 0; v < perView.size(); ++v)
-                fs << key + std::to_string(v + 1) << perView[v];
-    };
-    writeShared("K", problem.K);
-    writeShared("dist", problem.dist);
-    fs << "R12" << problem.R12 << "t12" << problem.t12;
-    for (int v = 0; v < 3; ++v)
-        if (problem.points[0].rows > 0)
-            fs << "points" + std::to_string(v + 1) << problem.points[v];
-    for (int v = 0; v < 3; ++v)
-        if (problem.lines[0].rows > 0)
-            fs << "lines" + std::to_string(v + 1) << problem.lines[v];
-}
-
-cv::Mat inlierColumn(const cv::Mat& mask)
-{
-    cv::Mat column = mask.empty() ? cv::Mat(0, 1, CV_32S) : cv::Mat(mask.reshape(1, (int)mask.total()));
-    column.convertTo(column, CV_32S);
-    return column;
-}
-
-std::string temporaryNameFor(const std::string& path)
-{
-    // Keep the extension: FileStorage picks YAML or JSON from it.
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return path + ".partial";
-    return path.substr(0, dot) + ".partial" + path.substr(dot);
-}
-
-void commitAtomicWrite(const std::string& temporary, const std::string& path)
-{
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    {
-        std::remove(temporary.c_str());
-        throw std::runtime_error("cannot write " + path);
-    }
-}
-
-void checkWritable(const std::string& path, const std::string& option)
-{
-    if (path.empty())
-        return;
-    std::error_code error;
-    const std::filesystem::path file(path);
-    const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-    std::string reason;
-    if (!std::filesystem::is_directory(folder, error))
-        reason = "no folder " + folder.string();
-    else if (std::filesystem::is_directory(file, error))
-        reason = "a folder of that name exists";
-    else
-    {
-        const std::string temporary = temporaryNameFor(path);
-        if (std::ofstream(temporary, std::ios::binary))
-            std::remove(temporary.c_str());
-        else
-            reason = "no file can be created in " + folder.string();
-    }
-    if (!reason.empty())
-        throw std::runtime_error(option + " " + path + ": cannot be written (" + reason + ")");
-}
-
-void writeFileAtomically(const std::string& path, const std::vector<unsigned char>& bytes)
-{
-    const std::string temporary = temporaryNameFor(path);
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()), (std::streamsize)bytes.size());
-        if (!out)
-        {
-            out.close();
-            std::remove(temporary.c_str());
-            throw std::runtime_error("cannot write " + path);
-        }
-    }
-    commitAtomicWrite(temporary, path);
 }
 
 } // namespace tripose_samples
