@@ -284,9 +284,10 @@ class StereoTracker:
     LOST (FrameResult.reason says why) and the next frame looks back over the same keyframes. A
     registered frame is a keyframe when its structure subtends options.keyframe_parallax_deg
     between it and its keyframe, or when that keyframe's stereo pair sees less than half of its own
-    stereo matches (a rig turning on the spot). options.local_adjustment is not used; known_views
-    is 1 (one stereo keyframe) for a registered frame. Bad input raises ValueError or TypeError
-    naming the argument.
+    stereo matches (a rig turning on the spot). options.local_adjustment is not used. In a
+    FrameResult, features counts the features the frame shares with its keyframe's stereo pair
+    (those with the newest keyframe when lost), and known_views is 1 (one stereo keyframe) for a
+    registered frame. Bad input raises ValueError or TypeError naming the argument.
     """
 
     def __init__(self, K_left: Any, K_right: Any, R: Any, t: Any, dist_left: Any = None, dist_right: Any = None,

@@ -203,6 +203,13 @@ TEST(Tripose_StereoTracker, registers_every_frame_at_metric_scale_without_poses)
     EXPECT_EQ(tracker->numFrames(), (int)seq.poses.size());
     Mat R, t;
     EXPECT_TRUE(tracker->getPose(5, R, t));
+    Mat pointTracks, lineTracks, pointStereo, lineStereo;
+    tracker->getTracks(5, pointTracks, lineTracks, pointStereo, lineStereo);
+    EXPECT_EQ(pointTracks.total(), pointStereo.total());
+    EXPECT_EQ(lineTracks.total(), lineStereo.total());
+    EXPECT_GT(countNonZero(pointStereo >= 0), 50);
+    EXPECT_GT(countNonZero(lineStereo >= 0), 5);
+    EXPECT_THROW(tracker->getPose(20, R, t), cv::Exception);
 }
 
 TEST(Tripose_StereoTracker, a_frame_of_noise_is_lost_and_the_next_ones_register)

@@ -160,7 +160,9 @@ with the next frame. A registered frame becomes a keyframe when its inlier struc
 least TrackerParams::keyframeParallaxDeg between it and the keyframe (a rig standing still adds
 none), or when the keyframe's stereo pair sees less than half of its own stereo matches (a rig
 turning on the spot adds them before its view leaves the keyframe's). TrackerParams::localAdjustment
-is not used. TrackedFrame::knownViews is 1 (one stereo keyframe) for a registered frame.
+is not used. TrackedFrame::features counts the features the frame shares with its keyframe's
+stereo pair (with the newest keyframe's when lost), and TrackedFrame::knownViews is 1 (one stereo
+keyframe) for a registered frame.
 
 Poses follow the module: a frame's pose is its left camera's, x ~ K_left (R X + t), X in the world
 frame; the right camera is at the rig composed with it. Bad input throws cv::Exception naming the
