@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything tripose needs, idempotently and quickly when it is already there:
 #  - Debian packages (compiler, CMake, Ninja, OpenCV 4.6, Eigen 3.4, GoogleTest, libyaml, Python
-#    headers, clang with libFuzzer, ccache);
+#    headers, clang with libFuzzer, ccache, valgrind);
 #  - a Python virtual environment in .venv from the pinned requirements/python.txt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,7 +12,8 @@ apt_packages=(build-essential cmake ninja-build pkg-config
               libyaml-dev                    # the problem reader of the command-line tools
               python3 python3-dev python3-venv python3-numpy
               clang-14 libclang-rt-14-dev    # libFuzzer for scripts/fuzz.sh
-              ccache)                        # the test command compiles the core once for two builds
+              ccache                         # the test command compiles the core once for two builds
+              valgrind)                      # callgrind counts the hot paths' instructions (test_instruction_guard.py)
 
 missing=()
 for p in "${apt_packages[@]}"; do
