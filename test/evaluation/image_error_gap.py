@@ -168,7 +168,7 @@ def main():
         for k in range(count - 2):
             views = (k, k + 1, k + 2)
             calib_path, result_path, again_path = tmp / "calib.yml", tmp / "result.yml", tmp / "again.yml"
-            run([samples / "tripose_images_report", "--data", a.data, "--calib-output", calib_path,
+            run([Path(a.build) / "test" / "evaluation" / "tripose_images_report", "--data", a.data, "--calib-output", calib_path,
                  "--views", *views])
             run([samples / "tripose_images", "--calib", calib_path, "--images", *[images[v] for v in views],
                  "--output", result_path, "--threshold", a.threshold])

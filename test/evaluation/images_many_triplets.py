@@ -58,7 +58,7 @@ def main():
         for folder, views in triplets:
             images = sorted(p for p in Path(folder).iterdir() if p.suffix in (".pgm", ".jpg", ".png"))
             calib = Path(tmp) / "calib.yml"
-            subprocess.run([str(samples / "tripose_images_report"), "--data", folder, "--calib-output", str(calib),
+            subprocess.run([str(Path(a.build) / "test" / "evaluation" / "tripose_images_report"), "--data", folder, "--calib-output", str(calib),
                             "--views", *map(str, views)], check=True, capture_output=True)
             truth = read(calib, "R_gt")
             row = []

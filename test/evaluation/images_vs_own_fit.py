@@ -6,7 +6,7 @@
 end's estimates measured against both (doc/studies/real_images.md, "Where the error came from").
 
     python test/evaluation/images_vs_own_fit.py --data <VGG folder with images> \
-        [--tool build/samples/tripose_images_report]
+        [--tool build/test/evaluation/tripose_images_report]
 
 Needs the tripose package (pip install .) and the report tool. For every run of three consecutive
 frames: the maximum-likelihood fit of view 3 to the sequence's own correspondences of the triplet
@@ -39,7 +39,7 @@ def rotation_deg(Ra, Rb):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True, help="VGG sequence folder with its images")
-    ap.add_argument("--tool", default=str(ROOT / "build" / "samples" / "tripose_images_report"))
+    ap.add_argument("--tool", default=str(ROOT / "build" / "test" / "evaluation" / "tripose_images_report"))
     ap.add_argument("--threshold", type=float, default=2.0)
     a = ap.parse_args()
     triplets = front_end_triplets(a.tool, a.data, a.threshold)

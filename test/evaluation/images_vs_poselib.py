@@ -5,7 +5,7 @@
 """PoseLib's PnPL beside tripose on the image front end's matches (doc/studies/real_images.md).
 
     .venv/bin/python test/evaluation/images_vs_poselib.py --data <VGG folder with images> \
-        [--tool build/samples/tripose_images_report] [--threshold 2] [--seed 0]
+        [--tool build/test/evaluation/tripose_images_report] [--threshold 2] [--seed 0]
 
 Runs tripose_images_report --dump-inputs on the sequence: for every run of three consecutive frames,
 the point tracks and segment triplets the front end found, and their structure triangulated from
@@ -45,7 +45,7 @@ def front_end_triplets(tool, data, threshold, seed=0):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--data", required=True, help="VGG sequence folder with its images")
-    ap.add_argument("--tool", default="build/samples/tripose_images_report")
+    ap.add_argument("--tool", default="build/test/evaluation/tripose_images_report")
     ap.add_argument("--threshold", type=float, default=2.0)
     ap.add_argument("--seed", type=int, default=0)
     a = ap.parse_args()

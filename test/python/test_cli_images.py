@@ -273,8 +273,8 @@ def test_triplet_that_too_few_features_support_gives_no_pose(tmp_path):
     # segment triplets; the best pose agrees with 5 of them and was 156 degrees off. Fewer inliers
     # than the floor (RansacParams::minInliers, 15): exit status 3, the counts said, nothing written.
     calib = tmp_path / "calib.yml"
-    subprocess.run([str(build_tool("tripose_images_report")), "--data", str(MODEL_HOUSE), "--calib-output",
-                    str(calib), "--views", "4", "6", "9"], check=True, capture_output=True, timeout=60)
+    subprocess.run([str(build_tool("tripose_images_report", folder="test/evaluation")), "--data", str(MODEL_HOUSE),
+                    "--calib-output", str(calib), "--views", "4", "6", "9"], check=True, capture_output=True, timeout=60)
     images = [MODEL_HOUSE / f"house.00{k}.pgm" for k in (4, 6, 9)]
     proc, out = run_images(tmp_path, "--overlay", tmp_path / "overlay.png", calib=calib, images=images)
     assert proc.returncode == 3, proc.stdout + proc.stderr
