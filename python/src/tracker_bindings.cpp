@@ -104,7 +104,8 @@ void bindTracker(nb::module_& m)
     nb::class_<tripose::RansacOptions>(m, "RansacOptions",
                                        "Options of the robust estimators (LO-MSAC over minimal samples, then the "
                                        "maximum-likelihood refinement over the inliers). Fields: threshold (px), "
-                                       "confidence, max_iterations, local_optimization, refine, refine_options, seed.")
+                                       "confidence, max_iterations (samples), local_optimization, refine, "
+                                       "refine_options (a RefineOptions), seed, min_inliers.")
         .def(nb::init<>())
         .def_rw("threshold", &tripose::RansacOptions::threshold, "Inlier threshold in pixels (> 0).")
         .def_rw("confidence", &tripose::RansacOptions::confidence,
@@ -116,12 +117,20 @@ void bindTracker(nb::module_& m)
                 "Finish with the maximum-likelihood refinement over the inliers.")
         .def_rw("refine_options", &tripose::RansacOptions::refineOptions, "Options of that refinement.")
         .def_rw("seed", &tripose::RansacOptions::seed, "Seed of the sampler: the same seed gives the same result.")
+        .def_rw("min_inliers", &tripose::RansacOptions::minInliers,
+                "Fewest inliers of a returned pose (>= 0); an estimate with fewer is no pose. Chance matches agree "
+                "with a pose in numbers up to about a dozen: lower it only where every feature is known to be right.")
         .def("__repr__", [](const tripose::RansacOptions& o) {
+            const tripose::RefineOptions& r = o.refineOptions;
             return tripose::formatString("RansacOptions(threshold=%g, confidence=%g, max_iterations=%d, "
-                                         "local_optimization=%s, refine=%s, seed=%llu)",
+                                         "local_optimization=%s, refine=%s, seed=%llu, min_inliers=%d, "
+                                         "refine_options=RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, "
+                                         "tolerance=%g))",
                                          o.threshold, o.confidence, o.maxIterations,
                                          o.localOptimization ? "True" : "False", o.refine ? "True" : "False",
-                                         (unsigned long long)o.seed);
+                                         (unsigned long long)o.seed, o.minInliers, r.maxIterations,
+                                         r.loss == tripose::Loss::Huber ? "huber" : r.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
+                                         r.lossScale, r.tolerance);
         });
 
     nb::class_<tripose::MatchOptions>(m, "MatchOptions",

@@ -12,6 +12,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nanobind/nanobind.h>
@@ -26,6 +28,7 @@
 #include "pipeline/posed_structure.hpp"
 #include "problem/view_set_builder.hpp"
 #include "support/error.hpp"
+#include "pose_result.hpp"
 #include "stereo_tracker_bindings.hpp"
 #include "tracker_bindings.hpp"
 
@@ -416,41 +419,54 @@ nb::list candidateList(const std::vector<tripose::ScoredPose>& candidates)
 }
 
 //! The pose's uncertainty into @p out: covariance (6, 6) and noise_variance, both None when not valid.
-void writeCovariance(const tripose::PoseCovariance& uncertainty, nb::dict& out)
+void writeCovariance(const tripose::PoseCovariance& uncertainty, PoseResult& out)
 {
     if (!uncertainty.valid)
-    {
-        out["covariance"] = nb::none();
-        out["noise_variance"] = nb::none();
         return;
-    }
     const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rowMajor = uncertainty.covariance;
-    out["covariance"] = newArray({ 6, 6 }, rowMajor.data());
-    out["noise_variance"] = uncertainty.noiseVariance;
+    out.covariance = newArray({ 6, 6 }, rowMajor.data());
+    out.noise_variance = nb::float_(uncertainty.noiseVariance);
 }
 
-nb::dict robustResult(bool found, const tripose::RobustEstimate& estimate, const tripose::PoseCovariance& uncertainty)
+PoseResult robustResult(bool found, const tripose::RobustEstimate& estimate, const tripose::PoseCovariance& uncertainty)
 {
-    nb::dict out;
-    out["R"] = found ? rotationArray(estimate.pose.R) : nb::none();
-    out["t"] = found ? vectorArray(estimate.pose.t) : nb::none();
-    out["num_inliers"] = found ? estimate.numInliers : 0;
-    out["point_inliers"] = maskArray(estimate.pointInliers);
-    out["line_inliers"] = maskArray(estimate.lineInliers);
-    out["rms"] = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
+    PoseResult out;
+    out.kind = PoseResult::Kind::Robust;
+    out.hasPose = found;
+    if (found)
+    {
+        out.rotation = estimate.pose.R;
+        out.translation = estimate.pose.t;
+        out.R = rotationArray(estimate.pose.R);
+        out.t = vectorArray(estimate.pose.t);
+    }
+    out.num_inliers = nb::int_(found ? estimate.numInliers : 0);
+    out.point_inliers = maskArray(estimate.pointInliers);
+    out.line_inliers = maskArray(estimate.lineInliers);
+    out.numPoints = (int)estimate.pointInliers.size();
+    out.numLines = (int)estimate.lineInliers.size();
+    for (unsigned char inlier : estimate.pointInliers)
+        out.pointInliers += inlier != 0;
+    for (unsigned char inlier : estimate.lineInliers)
+        out.lineInliers += inlier != 0;
+    out.rmsValue = found ? estimate.inlierRms : std::numeric_limits<double>::quiet_NaN();
+    out.rms = nb::float_(out.rmsValue);
     writeCovariance(uncertainty, out);
     // The minima of the final refinement that the data cannot tell apart (the returned pose first).
-    out["candidates"] = candidateList(estimate.minima);
+    out.candidates = candidateList(estimate.minima);
     nb::list rms;
     for (const tripose::ScoredPose& m : estimate.minima)
         rms.append(m.rms);
-    out["candidate_rms"] = rms;
-    out["ambiguous"] = estimate.minima.size() > 1;
+    out.candidate_rms = rms;
+    out.numCandidates = (int)estimate.minima.size();
+    out.ambiguous = nb::bool_(estimate.minima.size() > 1);
     return out;
 }
 
-void writeStructure(const std::vector<Eigen::Vector3d>& pointList, const std::vector<Eigen::Vector3d>& lineEnds,
-                    int numPoints, int numLines, nb::dict& out)
+//! The refined structure as (points3d (N, 3), lines3d (M, 6): two points of each line).
+std::pair<nb::object, nb::object> structureArrays(const std::vector<Eigen::Vector3d>& pointList,
+                                                  const std::vector<Eigen::Vector3d>& lineEnds, int numPoints,
+                                                  int numLines)
 {
     std::vector<double> points(3 * (size_t)numPoints), lines(6 * (size_t)numLines);
     for (int i = 0; i < numPoints; ++i)
@@ -462,45 +478,43 @@ void writeStructure(const std::vector<Eigen::Vector3d>& pointList, const std::ve
             lines[6 * i + c] = lineEnds[2 * i](c);
             lines[6 * i + 3 + c] = lineEnds[2 * i + 1](c);
         }
-    out["points3d"] = newArray({ (size_t)numPoints, 3 }, points.data());
-    out["lines3d"] = newArray({ (size_t)numLines, 6 }, lines.data());
+    return { newArray({ (size_t)numPoints, 3 }, points.data()), newArray({ (size_t)numLines, 6 }, lines.data()) };
 }
 
-tripose::RansacOptions ransacOptions(double threshold, double confidence, int maxIterations, bool refine,
-                                     uint64_t seed, int minInliers)
+void writeStructure(const std::vector<Eigen::Vector3d>& pointList, const std::vector<Eigen::Vector3d>& lineEnds,
+                    int numPoints, int numLines, nb::dict& out)
 {
-    tripose::RansacOptions options;
-    options.threshold = threshold;
-    options.confidence = confidence;
-    options.maxIterations = maxIterations;
-    options.refine = refine;
-    options.seed = seed;
-    options.minInliers = minInliers;
+    const std::pair<nb::object, nb::object> arrays = structureArrays(pointList, lineEnds, numPoints, numLines);
+    out["points3d"] = arrays.first;
+    out["lines3d"] = arrays.second;
+}
+
+/** The caller's RansacOptions (the defaults for None), checked: errors name a field as
+"<name>.<field>" in Python's words, or the field alone when @p name is empty (the keyword
+arguments of earlier releases). */
+tripose::RansacOptions ransacOptions(const tripose::RansacOptions* given, const std::string& name)
+{
+    const tripose::RansacOptions options = given ? *given : tripose::RansacOptions();
     tripose::RansacOptionNames names;
     names.maxIterations = "max_iterations";
     names.minInliers = "min_inliers";
-    tripose::checkRansacOptions(options, "", names);
+    names.refineOptions = "refine_options";
+    names.refine.maxIterations = "max_iterations";
+    names.refine.lossValues = "'squared', 'huber' or 'cauchy'";
+    names.refine.lossScale = "loss_scale";
+    tripose::checkRansacOptions(options, name.c_str(), names);
     return options;
 }
 
-tripose::RefineOptions refineOptions(int maxIterations, const std::string& loss, double lossScale, double tolerance)
+//! The caller's RefineOptions (the defaults for None), checked and named as ransacOptions().
+tripose::RefineOptions refineOptions(const tripose::RefineOptions* given, const std::string& name)
 {
-    tripose::RefineOptions options;
-    options.maxIterations = maxIterations;
-    options.lossScale = lossScale;
-    options.tolerance = tolerance;
-    if (loss == "squared")
-        options.loss = tripose::Loss::Squared;
-    else if (loss == "huber")
-        options.loss = tripose::Loss::Huber;
-    else if (loss == "cauchy")
-        options.loss = tripose::Loss::Cauchy;
-    else
-        raiseValue("loss must be 'squared', 'huber' or 'cauchy', got '" + loss + "'");
+    const tripose::RefineOptions options = given ? *given : tripose::RefineOptions();
     tripose::RefineOptionNames names;
     names.maxIterations = "max_iterations";
+    names.lossValues = "'squared', 'huber' or 'cauchy'";
     names.lossScale = "loss_scale";
-    tripose::checkRefineOptions(options, "", names);
+    tripose::checkRefineOptions(options, name.c_str(), names);
     return options;
 }
 
@@ -573,14 +587,22 @@ struct MultiViewProblem
     }
 };
 
-nb::dict refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
-                       const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
+PoseResult refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
+                         const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
 {
-    nb::dict out;
-    out["R"] = rotationArray(pose.R);
-    out["t"] = vectorArray(pose.t);
-    out["rms"] = rms;
-    writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
+    PoseResult out;
+    out.kind = PoseResult::Kind::Refined;
+    out.hasPose = true;
+    out.rotation = pose.R;
+    out.translation = pose.t;
+    out.R = rotationArray(pose.R);
+    out.t = vectorArray(pose.t);
+    out.rmsValue = rms;
+    out.rms = nb::float_(rms);
+    std::tie(out.points3d, out.lines3d) = structureArrays(structure.points, structure.lineEnds, views.numPoints,
+                                                          views.numLines);
+    out.numPoints = views.numPoints;
+    out.numLines = views.numLines;
     writeCovariance(uncertainty, out);
     return out;
 }
@@ -604,7 +626,7 @@ nb::list runCandidates(Build build, bool refine)
 //! @p options, on the ViewSet that @p build makes (GIL released); with refinement, the uncertainty
 //! of the refined pose over the inliers.
 template <class Build, class Estimate>
-nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options, bool wantCovariance)
+PoseResult runRobust(Build build, Estimate estimate, const tripose::RansacOptions& options, bool wantCovariance)
 {
     tripose::RobustEstimate result;
     tripose::PoseCovariance uncertainty;
@@ -623,7 +645,7 @@ nb::dict runRobust(Build build, Estimate estimate, const tripose::RansacOptions&
 
 //! The refinement of the initial pose (@p R, @p t) over the ViewSet that @p build makes (GIL released).
 template <class Build>
-nb::dict runRefinement(Build build, const tripose::ArgumentMatrix& R, const tripose::ArgumentMatrix& t,
+PoseResult runRefinement(Build build, const tripose::ArgumentMatrix& R, const tripose::ArgumentMatrix& t,
                        const tripose::RefineOptions& options)
 {
     tripose::RefinedStructure structure;
@@ -659,6 +681,7 @@ NB_MODULE(_tripose_ext, m)
     });
 
     bindTracker(m);
+    bindPoseResult(m);
     bindStereoTracker(m);
 
     m.def("estimate_pose_line_point",
@@ -671,10 +694,10 @@ NB_MODULE(_tripose_ext, m)
 
     m.def("estimate_pose_line_point_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
-             nb::handle R12, nb::handle t12, nb::handle dist, double threshold, double confidence, int maxIterations,
-             bool refine, uint64_t seed, bool wantCovariance, int minInliers) {
+             nb::handle R12, nb::handle t12, nb::handle dist, const tripose::RansacOptions* given,
+             const std::string& optionsName, bool wantCovariance) {
               const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
+              const tripose::RansacOptions options = ransacOptions(given, optionsName);
               return runRobust(problem.builder(kMinFeatures),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::LinearPoseSolver linear(views);
@@ -682,18 +705,18 @@ NB_MODULE(_tripose_ext, m)
                                },
                                options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"), nb::arg("covariance"));
 
     m.def("refine_pose_line_point",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle l1, nb::handle l2, nb::handle l3, nb::handle K,
-             nb::handle R12, nb::handle t12, nb::handle R, nb::handle t, nb::handle dist, int maxIterations,
-             const std::string& loss, double lossScale, double tolerance) {
+             nb::handle R12, nb::handle t12, nb::handle R, nb::handle t, nb::handle dist,
+             const tripose::RefineOptions* given, const std::string& optionsName) {
               const ThreeViewProblem problem(p1, p2, p3, l1, l2, l3, K, R12, t12, dist);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
-              const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
+              const tripose::RefineOptions options = refineOptions(given, optionsName);
               return runRefinement(problem.builder(kMinRefineFeatures), Rm, tm, options);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"));
 
     m.def("estimate_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
@@ -705,29 +728,28 @@ NB_MODULE(_tripose_ext, m)
 
     m.def("estimate_pose_line_point_stereo_ransac",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
-             nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist, double threshold,
-             double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance,
-             int minInliers) {
+             nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle dist,
+             const tripose::RansacOptions* given, const std::string& optionsName, bool wantCovariance) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
+              const tripose::RansacOptions options = ransacOptions(given, optionsName);
               return runRobust(problem.builder(kMinStereoRansacFeatures),
                                [options](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    return tripose::estimateRobustRig(views, options, estimate);
                                },
                                options, wantCovariance);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"), nb::arg("covariance"));
 
     m.def("refine_pose_line_point_stereo",
           [](nb::handle p1, nb::handle p2, nb::handle p3, nb::handle p4, nb::handle l1, nb::handle l2, nb::handle l3,
              nb::handle l4, nb::handle K, nb::handle R12, nb::handle t12, nb::handle R, nb::handle t, nb::handle dist,
-             int maxIterations, const std::string& loss, double lossScale, double tolerance) {
+             const tripose::RefineOptions* given, const std::string& optionsName) {
               const StereoProblem problem(p1, p2, p3, p4, l1, l2, l3, l4, K, R12, t12, dist);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
-              const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
+              const tripose::RefineOptions options = refineOptions(given, optionsName);
               return runRefinement(problem.builder(kMinStereoFeatures), Rm, tm, options);
           },
-          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+          nb::arg("points1").none(), nb::arg("points2").none(), nb::arg("points3").none(), nb::arg("points4").none(), nb::arg("lines1").none(), nb::arg("lines2").none(), nb::arg("lines3").none(), nb::arg("lines4").none(), nb::arg("K").none(), nb::arg("R12").none(), nb::arg("t12").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"));
 
     m.def("estimate_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
@@ -739,10 +761,9 @@ NB_MODULE(_tripose_ext, m)
 
     m.def("estimate_pose_multiview_ransac",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist,
-             double threshold, double confidence, int maxIterations, bool refine, uint64_t seed, bool wantCovariance,
-             int minInliers) {
+             const tripose::RansacOptions* given, const std::string& optionsName, bool wantCovariance) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
-              const tripose::RansacOptions options = ransacOptions(threshold, confidence, maxIterations, refine, seed, minInliers);
+              const tripose::RansacOptions options = ransacOptions(given, optionsName);
               return runRobust(problem.newViewBuilder(),
                                [&](const tripose::ViewSet& views, tripose::RobustEstimate& estimate) {
                                    const tripose::MultiViewPoseSolver linear(views);
@@ -750,25 +771,25 @@ NB_MODULE(_tripose_ext, m)
                                },
                                options, wantCovariance);
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("threshold"), nb::arg("confidence"), nb::arg("max_iterations"), nb::arg("refine"), nb::arg("seed"), nb::arg("covariance"), nb::arg("min_inliers"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"), nb::arg("covariance"));
 
     m.def("refine_pose_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle R,
-             nb::handle t, nb::handle dist, int maxIterations, const std::string& loss, double lossScale,
-             double tolerance) {
+             nb::handle t, nb::handle dist, const tripose::RefineOptions* given,
+             const std::string& optionsName) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 1);
               const tripose::ArgumentMatrix Rm = readRotation(R, "R"), tm = readTranslation(t, "t");
-              const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
+              const tripose::RefineOptions options = refineOptions(given, optionsName);
               return runRefinement(problem.newViewBuilder(), Rm, tm, options);
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("R").none(), nb::arg("t").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"));
 
     m.def("adjust_poses_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, const std::vector<int>& fixedViews, nb::handle Rs,
-             nb::handle ts, nb::handle dist, int maxIterations, const std::string& loss,
-             double lossScale, double tolerance) {
+             nb::handle ts, nb::handle dist, const tripose::RefineOptions* given,
+             const std::string& optionsName) {
               const MultiViewProblem problem(points, lines, K, Rs, ts, dist, 0);
-              const tripose::RefineOptions options = refineOptions(maxIterations, loss, lossScale, tolerance);
+              const tripose::RefineOptions options = refineOptions(given, optionsName);
               tripose::RefinedStructure structure;
               std::vector<tripose::CameraPose> all;
               double rms;
@@ -782,20 +803,24 @@ NB_MODULE(_tripose_ext, m)
                   rms = tripose::refineSeveralPoses(views, poseOfView, poses, options, &structure);
                   all = tripose::allViewPoses(views, poseOfView, poses);
               }
-              nb::dict out;
+              PoseResult out;
+              out.kind = PoseResult::Kind::Adjusted;
               nb::list Rout, tout;
               for (const tripose::CameraPose& pose : all)
               {
                   Rout.append(rotationArray(pose.R));
                   tout.append(vectorArray(pose.t));
               }
-              out["Rs"] = Rout;
-              out["ts"] = tout;
-              out["rms"] = rms;
-              writeStructure(structure.points, structure.lineEnds, views.numPoints, views.numLines, out);
+              out.Rs = Rout;
+              out.ts = tout;
+              out.numPoses = (int)all.size();
+              out.rmsValue = rms;
+              out.rms = nb::float_(rms);
+              std::tie(out.points3d, out.lines3d) = structureArrays(structure.points, structure.lineEnds, views.numPoints,
+                                                                    views.numLines);
               return out;
           },
-          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("fixed_views"), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("max_iterations"), nb::arg("loss"), nb::arg("loss_scale"), nb::arg("tolerance"));
+          nb::arg("points").none(), nb::arg("lines").none(), nb::arg("K").none(), nb::arg("fixed_views"), nb::arg("Rs").none(), nb::arg("ts").none(), nb::arg("dist").none(), nb::arg("options").none(), nb::arg("options_name"));
 
     m.def("triangulate_multiview",
           [](nb::handle points, nb::handle lines, nb::handle K, nb::handle Rs, nb::handle ts, nb::handle dist) {

@@ -87,14 +87,16 @@ _RANSAC_KEYWORDS = ("threshold", "confidence", "max_iterations", "refine", "seed
 _REFINE_KEYWORDS = ("max_iterations", "loss", "loss_scale", "tolerance")
 
 
-def _ransac_options(options: Optional[RansacOptions], function: str, **legacy: Any) -> Tuple[Any, str]:
+def _ransac_options(options: Optional[RansacOptions], function: str, *values: Any) -> Tuple[Any, str]:
     """The RansacOptions to pass and the name its errors give (the fields alone for the keyword
-    arguments of earlier releases, which are deprecated and may not be mixed with options)."""
-    given = [name for name in _RANSAC_KEYWORDS if legacy[name] is not None]
-    if not given:
+    arguments of earlier releases, values in _RANSAC_KEYWORDS' order, which are deprecated and may
+    not be mixed with options)."""
+    if values.count(None) == len(values):
         if options is not None and not isinstance(options, RansacOptions):
             raise TypeError(f"options must be a tripose.RansacOptions, got {type(options).__name__}")
         return options, "options"
+    legacy = dict(zip(_RANSAC_KEYWORDS, values))
+    given = [name for name in _RANSAC_KEYWORDS if legacy[name] is not None]
     if options is not None:
         raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
                          f"them in options ({', '.join('options.' + name for name in given)})")
@@ -115,13 +117,15 @@ def _ransac_options(options: Optional[RansacOptions], function: str, **legacy: A
     return built, ""
 
 
-def _refine_options(options: Optional[RefineOptions], function: str, **legacy: Any) -> Tuple[Any, str]:
-    """The RefineOptions to pass and the name its errors give, as _ransac_options()."""
-    given = [name for name in _REFINE_KEYWORDS if legacy[name] is not None]
-    if not given:
+def _refine_options(options: Optional[RefineOptions], function: str, *values: Any) -> Tuple[Any, str]:
+    """The RefineOptions to pass and the name its errors give, as _ransac_options() (values in
+    _REFINE_KEYWORDS' order)."""
+    if values.count(None) == len(values):
         if options is not None and not isinstance(options, RefineOptions):
             raise TypeError(f"options must be a tripose.RefineOptions, got {type(options).__name__}")
         return options, "options"
+    legacy = dict(zip(_REFINE_KEYWORDS, values))
+    given = [name for name in _REFINE_KEYWORDS if legacy[name] is not None]
     if options is not None:
         raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
                          f"them in options ({', '.join('options.' + name for name in given)})")
@@ -169,22 +173,26 @@ def estimate_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: Ar
 def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
                                     lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
                                     K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
-                                    dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
-                                    max_iterations: int = 10000, refine: bool = True,
-                                    seed: int = 0, covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
+                                    dist: ArrayLike = None, options: Optional[RansacOptions] = None,
+                                    covariance: bool = False, threshold: Optional[float] = None,
+                                    confidence: Optional[float] = None, max_iterations: Optional[int] = None,
+                                    refine: Optional[bool] = None, seed: Optional[int] = None,
+                                    min_inliers: Optional[int] = None) -> PoseResult:
     """Robust pose of view 3 from point and line triplets with wrong matches (RANSAC).
 
-    threshold: inlier threshold in pixels (a feature's RMS reprojection error over the three views,
-    re-triangulated with the pose); confidence: probability of drawing an all-inlier sample;
-    max_iterations: most samples drawn; refine: finish with the maximum-likelihood refinement over
-    the inliers; seed: the same seed gives the same result; covariance: also return the pose's
-    uncertainty (it costs one more refinement over the inliers, about half the estimate's time);
-    min_inliers: the fewest inliers of a returned pose (>= 0): chance matches agree with a pose in
-    numbers up to about a dozen, so lower it only where every feature is known to be right.
+    options: a RansacOptions (None: the defaults): threshold (px: a feature's RMS reprojection error
+    over the three views, re-triangulated with the pose), confidence, max_iterations (samples drawn),
+    local_optimization, refine (finish with the maximum-likelihood refinement over the inliers, under
+    refine_options: a RefineOptions with its loss), seed (the same seed gives the same result) and
+    min_inliers (the fewest inliers of a returned pose, 15: chance matches agree with a pose in
+    numbers up to about a dozen, so lower it only where every feature is known to be right).
+    covariance: also return the pose's uncertainty (it costs one more refinement over the inliers,
+    about half the estimate's time). threshold=, confidence=, max_iterations=, refine=, seed=,
+    min_inliers=: the keyword arguments of earlier releases, deprecated (set them in options).
 
-    Returns a dict: R (3x3) and t (3,) (None when no pose was found or its inliers are fewer than
-    min_inliers, num_inliers then 0; a pose also needs one inlier more than a minimal sample holds,
-    four or five: a sample fits wrong matches too), num_inliers, point_inliers and
+    Returns a PoseResult: R (3x3) and t (3,) (None when no pose was found or its inliers are fewer
+    than min_inliers, num_inliers then 0; a pose also needs one inlier more than a minimal sample
+    holds, four or five: a sample fits wrong matches too), num_inliers, point_inliers and
     line_inliers (bool arrays), rms (the RMS of the inliers' residuals in pixels), covariance ((6, 6)
     for 1 px noise, see help(tripose)) and noise_variance (px^2) of the refined pose over the inliers
     (None unless covariance=True, and without refinement or when no pose was found). The pose is view 3's
@@ -201,33 +209,35 @@ def estimate_pose_line_point_ransac(points1: ArrayLike, points2: ArrayLike, poin
     returned pose where the refinement searched one basin (a wide baseline, or more than 60
     inliers); empty without refinement or when no pose was found.
     """
-    return _ext.estimate_pose_line_point_ransac(points1, points2, points3, lines1,
-                                                lines2, lines3, K, R12,
-                                                t12, dist, float(threshold), float(confidence),
-                                                int(max_iterations), bool(refine), _seed(seed), bool(covariance),
-                                                int(min_inliers))
+    options, name = _ransac_options(options, "estimate_pose_line_point_ransac", threshold, confidence,
+                                    max_iterations, refine, seed, min_inliers)
+    return _ext.estimate_pose_line_point_ransac(points1, points2, points3, lines1, lines2, lines3, K, R12, t12, dist,
+                                                options, name, bool(covariance))
 
 
 def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
                            lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
                            K: ArrayLike, R12: ArrayLike, t12: ArrayLike, R: ArrayLike, t: ArrayLike, *,
-                           dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
-                           loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+                           dist: ArrayLike = None, options: Optional[RefineOptions] = None,
+                           max_iterations: Optional[int] = None, loss: Optional[str] = None,
+                           loss_scale: Optional[float] = None, tolerance: Optional[float] = None) -> PoseResult:
     """Maximum-likelihood refinement of the pose (R, t) of view 3 and of the structure.
 
     Minimises the reprojection error in pixels in all three views (Levenberg-Marquardt, structure
-    eliminated). R: 3x3 or a rotation vector. loss: 'squared', 'huber' or 'cauchy' with scale
-    loss_scale pixels; tolerance: stop when a step lowers the cost by less than this fraction.
+    eliminated). R: 3x3 or a rotation vector. options: a RefineOptions (None: the defaults):
+    max_iterations (Levenberg-Marquardt steps), loss ('squared', 'huber' or 'cauchy') with scale
+    loss_scale pixels, tolerance (stop when a step lowers the cost by less than this fraction).
+    max_iterations=, loss=, loss_scale=, tolerance=: the keyword arguments of earlier releases,
+    deprecated (set them in options).
 
-    Returns a dict: R (3x3), t (3,), rms (final RMS reprojection error, px), points3d (N, 3),
+    Returns a PoseResult: R (3x3), t (3,), rms (final RMS reprojection error, px), points3d (N, 3),
     lines3d (M, 6: two 3D end points per line), covariance ((6, 6), of the pose for 1 px noise: see
     help(tripose); None when the pose is not determined) and noise_variance (the estimate of the
     noise variance in px^2 from the residuals; None with the covariance).
     """
-    return _ext.refine_pose_line_point(points1, points2, points3, lines1,
-                                       lines2, lines3, K, R12, t12,
-                                       R, t, dist, int(max_iterations), str(loss),
-                                       float(loss_scale), float(tolerance))
+    options, name = _refine_options(options, "refine_pose_line_point", max_iterations, loss, loss_scale, tolerance)
+    return _ext.refine_pose_line_point(points1, points2, points3, lines1, lines2, lines3, K, R12, t12, R, t, dist,
+                                       options, name)
 
 
 def estimate_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
@@ -249,30 +259,32 @@ def estimate_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, poin
 def estimate_pose_line_point_stereo_ransac(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
                                            points4: ArrayLike, lines1: ArrayLike, lines2: ArrayLike,
                                            lines3: ArrayLike, lines4: ArrayLike, K: ArrayLike, R12: ArrayLike,
-                                           t12: ArrayLike, *, dist: ArrayLike = None, threshold: float = 2.0,
-                                           confidence: float = 0.999, max_iterations: int = 10000,
-                                           refine: bool = True, seed: int = 0,
-                                           covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
+                                           t12: ArrayLike, *, dist: ArrayLike = None,
+                                           options: Optional[RansacOptions] = None, covariance: bool = False,
+                                           threshold: Optional[float] = None, confidence: Optional[float] = None,
+                                           max_iterations: Optional[int] = None, refine: Optional[bool] = None,
+                                           seed: Optional[int] = None, min_inliers: Optional[int] = None) -> PoseResult:
     """Robust motion of a stereo rig (see estimate_pose_line_point_stereo and
-    estimate_pose_line_point_ransac for the arguments). Returns the dict of
+    estimate_pose_line_point_ransac for the arguments). Returns the PoseResult of
     estimate_pose_line_point_ransac."""
-    return _ext.estimate_pose_line_point_stereo_ransac(
-        points1, points2, points3, points4, lines1, lines2,
-        lines3, lines4, K, R12, t12, dist, float(threshold),
-        float(confidence), int(max_iterations), bool(refine), _seed(seed), bool(covariance), int(min_inliers))
+    options, name = _ransac_options(options, "estimate_pose_line_point_stereo_ransac", threshold, confidence,
+                                    max_iterations, refine, seed, min_inliers)
+    return _ext.estimate_pose_line_point_stereo_ransac(points1, points2, points3, points4, lines1, lines2, lines3,
+                                                       lines4, K, R12, t12, dist, options, name, bool(covariance))
 
 
 def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
                                   lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike, lines4: ArrayLike,
                                   K: ArrayLike, R12: ArrayLike, t12: ArrayLike, R: ArrayLike, t: ArrayLike, *,
-                                  dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
-                                  loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+                                  dist: ArrayLike = None, options: Optional[RefineOptions] = None,
+                                  max_iterations: Optional[int] = None, loss: Optional[str] = None,
+                                  loss_scale: Optional[float] = None, tolerance: Optional[float] = None) -> PoseResult:
     """Maximum-likelihood refinement of a stereo rig's motion over its four views (arguments and
     result as refine_pose_line_point)."""
-    return _ext.refine_pose_line_point_stereo(
-        points1, points2, points3, points4, lines1, lines2,
-        lines3, lines4, K, R12, t12, R, t,
-        dist, int(max_iterations), str(loss), float(loss_scale), float(tolerance))
+    options, name = _refine_options(options, "refine_pose_line_point_stereo", max_iterations, loss, loss_scale,
+                                    tolerance)
+    return _ext.refine_pose_line_point_stereo(points1, points2, points3, points4, lines1, lines2, lines3, lines4, K,
+                                              R12, t12, R, t, dist, options, name)
 
 
 def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
@@ -290,44 +302,50 @@ def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Option
 
 def estimate_pose_multiview_ransac(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
                                    K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
-                                   dist: ArrayLike = None, threshold: float = 2.0, confidence: float = 0.999,
-                                   max_iterations: int = 10000, refine: bool = True,
-                                   seed: int = 0, covariance: bool = False, min_inliers: int = 15) -> Dict[str, Any]:
+                                   dist: ArrayLike = None, options: Optional[RansacOptions] = None,
+                                   covariance: bool = False, threshold: Optional[float] = None,
+                                   confidence: Optional[float] = None, max_iterations: Optional[int] = None,
+                                   refine: Optional[bool] = None, seed: Optional[int] = None,
+                                   min_inliers: Optional[int] = None) -> PoseResult:
     """Robust world pose of a new view against several known views (arguments as
     estimate_pose_multiview and estimate_pose_line_point_ransac; result as the latter)."""
-    return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
-                                               _view_list(ts, "ts"), dist, float(threshold), float(confidence),
-                                               int(max_iterations), bool(refine), _seed(seed), bool(covariance),
-                                               int(min_inliers))
+    options, name = _ransac_options(options, "estimate_pose_multiview_ransac", threshold, confidence,
+                                    max_iterations, refine, seed, min_inliers)
+    return _ext.estimate_pose_multiview_ransac(_view_list(points, "points"), _view_list(lines, "lines"), K,
+                                               _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist, options, name,
+                                               bool(covariance))
 
 
 def refine_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
                           K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], R: ArrayLike,
-                          t: ArrayLike, *, dist: ArrayLike = None, max_iterations: int = 30, loss: str = "squared",
-                          loss_scale: float = 1.0, tolerance: float = 1e-10) -> Dict[str, Any]:
+                          t: ArrayLike, *, dist: ArrayLike = None, options: Optional[RefineOptions] = None,
+                          max_iterations: Optional[int] = None, loss: Optional[str] = None,
+                          loss_scale: Optional[float] = None, tolerance: Optional[float] = None) -> PoseResult:
     """Maximum-likelihood refinement of a new view's world pose (R, t) and the structure over every
     view, the known views fixed (result as refine_pose_line_point)."""
+    options, name = _refine_options(options, "refine_pose_multiview", max_iterations, loss, loss_scale, tolerance)
     return _ext.refine_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
-                                      _view_list(ts, "ts"), R, t, dist, int(max_iterations),
-                                      str(loss), float(loss_scale), float(tolerance))
+                                      _view_list(ts, "ts"), R, t, dist, options, name)
 
 
 def adjust_poses_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
                            K: ArrayLike, fixed_views: Sequence[bool], Rs: Sequence[ArrayLike],
-                           ts: Sequence[ArrayLike], *, dist: ArrayLike = None, max_iterations: int = 30,
-                           loss: str = "squared", loss_scale: float = 1.0,
-                           tolerance: float = 1e-10) -> Dict[str, Any]:
+                           ts: Sequence[ArrayLike], *, dist: ArrayLike = None,
+                           options: Optional[RefineOptions] = None, max_iterations: Optional[int] = None,
+                           loss: Optional[str] = None, loss_scale: Optional[float] = None,
+                           tolerance: Optional[float] = None) -> PoseResult:
     """Local adjustment: the world poses of the views not in fixed_views and the structure refined
     together (at least two fixed views at distinct centres fix the frame and the scale).
 
     fixed_views: one flag per view, true where its pose stays fixed. Rs, ts: every view's world pose
-    (the initial values of the free ones). Returns a dict: Rs, ts (every view's pose; the fixed ones
-    as given, made exact rotations), rms, points3d, lines3d.
+    (the initial values of the free ones). options: a RefineOptions, as refine_pose_line_point.
+    Returns a PoseResult: Rs, ts (every view's pose; the fixed ones as given, made exact rotations),
+    rms, points3d, lines3d (R and t None).
     """
     flags = [int(bool(f)) for f in np.asarray(fixed_views).ravel()]
+    options, name = _refine_options(options, "adjust_poses_multiview", max_iterations, loss, loss_scale, tolerance)
     return _ext.adjust_poses_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, flags,
-                                       _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist,
-                                       int(max_iterations), str(loss), float(loss_scale), float(tolerance))
+                                       _view_list(Rs, "Rs"), _view_list(ts, "ts"), dist, options, name)
 
 
 def triangulate_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],

@@ -32,16 +32,18 @@ def main():
     triplet = load_triplet(args.data, tuple(args.views))
     print(f"Sequence {args.data}, views {args.views}: {len(triplet.points[0])} point and "
           f"{len(triplet.lines[0])} line triplets")
+    options = tripose.RansacOptions()
+    options.threshold = args.threshold
     start = time.perf_counter()
     result = tripose.estimate_pose_line_point_ransac(*triplet.points, *triplet.lines, triplet.K, triplet.R12,
-                                                     triplet.t12, threshold=args.threshold, refine=True)
+                                                     triplet.t12, options=options)
     elapsed = time.perf_counter() - start
-    if result["R"] is None:
+    if result.R is None:
         raise SystemExit("no pose found")
-    R, t = result["R"], result["t"]
+    R, t = result.R, result.t
     np.set_printoptions(precision=6, suppress=True)
-    print(f"Solved in {1e3 * elapsed:.3f} ms: {result['num_inliers']} inliers of "
-          f"{len(triplet.points[0]) + len(triplet.lines[0])}, RMS {result['rms']:.3f} px")
+    print(f"Solved in {1e3 * elapsed:.3f} ms: {result.num_inliers} inliers of "
+          f"{len(triplet.points[0]) + len(triplet.lines[0])}, RMS {result.rms:.3f} px")
     print(f"Estimated R =\n{R}\nGround truth R =\n{triplet.R}")
     print(f"Estimated t = {t}\nGround truth t = {triplet.t}")
     direction = np.degrees(np.arccos(np.clip(t @ triplet.t / (np.linalg.norm(t) * np.linalg.norm(triplet.t)), -1, 1)))

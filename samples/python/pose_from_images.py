@@ -506,6 +506,7 @@ def estimate_pose(points, lines, K, R12, t12, threshold, seed, loss_scale=IMAGE_
                                                        min_inliers=0)
     except (ValueError, TypeError) as e:
         raise SolverRejection(str(e)) from None
+    pose = {key: pose[key] for key in pose.keys()}  # a PoseResult is read-only
     if pose["num_inliers"] == 0:
         return pose
     p, l = np.asarray(pose["point_inliers"], bool), np.asarray(pose["line_inliers"], bool)

@@ -137,11 +137,14 @@ def main():
     refine_variants = {
         "4P+4L linear + refine, tripose": lambda: tripose.estimate_pose_line_point(*small, refine=True),
     }
+    no_refine = tripose.RansacOptions()
+    no_refine.refine = False
     ransac_variants = {
         "100P+40L RANSAC + refine, extension": lambda: ext.estimate_pose_line_point_ransac(
-            *big, None, 2.0, 0.999, 10000, True, 0, False),
-        "100P+40L RANSAC + refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, seed=0),
-        "100P+40L RANSAC, no refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big, refine=False),
+            *big, None, None, "options", False),
+        "100P+40L RANSAC + refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big),
+        "100P+40L RANSAC, no refine, tripose": lambda: tripose.estimate_pose_line_point_ransac(*big,
+                                                                                              options=no_refine),
     }
     # Same results both ways, and a correct pose, or the comparison means nothing.
     a, c = ext.estimate_pose_line_point(*small, None, False), tripose.estimate_pose_line_point(*small)
@@ -150,7 +153,7 @@ def main():
     for x, y in zip(a, c):
         if not (np.array_equal(x[0], y[0]) and np.array_equal(x[1], y[1])):
             sys.exit("4P+4L: the extension and the wrapper return different poses")
-    ransac = tripose.estimate_pose_line_point_ransac(*big, seed=0)
+    ransac = tripose.estimate_pose_line_point_ransac(*big)
     for name, R, R_true in (("4P+4L linear", c[0][0], s.R), ("100P+40L RANSAC", ransac["R"], b.R)):
         if R is None or not rotation_error_deg(R, R_true) < MAX_ROTATION_ERROR_DEG:
             error = "no pose" if R is None else f"{rotation_error_deg(R, R_true):.2f} deg off the truth"

@@ -1,0 +1,146 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#include "pose_result.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+#include <nanobind/stl/string.h>
+
+#include "support/error.hpp"
+
+namespace nb = nanobind;
+
+namespace {
+
+struct Field
+{
+    const char* name;
+    nb::object PoseResult::*member;
+    const char* doc;
+};
+
+// Every field once: its attribute, its dictionary key (the names of the dicts the functions
+// returned before) and its docstring.
+const Field kFields[] = {
+    { "R", &PoseResult::R, "Rotation (3, 3) of the pose, x_cam = R @ X + t; None when no pose was found." },
+    { "t", &PoseResult::t, "Translation (3,) of the pose; None when no pose was found." },
+    { "num_inliers", &PoseResult::num_inliers,
+      "Robust functions: points + lines that agree with the pose (0 when no pose was found)." },
+    { "point_inliers", &PoseResult::point_inliers, "Robust functions: bool (N,), the points that agree with the pose." },
+    { "line_inliers", &PoseResult::line_inliers, "Robust functions: bool (M,), the lines that agree with the pose." },
+    { "rms", &PoseResult::rms,
+      "RMS reprojection error (px): over the inliers (robust functions; NaN without a pose), over every "
+      "observation (refiners)." },
+    { "covariance", &PoseResult::covariance,
+      "(6, 6) covariance of the pose for 1 px image noise, [rotation; translation] (help(tripose)); None "
+      "when not asked for (robust functions: covariance=False), without refinement or not determined." },
+    { "noise_variance", &PoseResult::noise_variance,
+      "Estimate of the image noise variance (px^2) from the residuals; None with the covariance." },
+    { "candidates", &PoseResult::candidates,
+      "Robust functions: the minima of the final refinement that the data cannot tell apart, as (R, t), the "
+      "returned pose first; empty without refinement or without a pose." },
+    { "candidate_rms", &PoseResult::candidate_rms, "Robust functions: the RMS (px) over the inliers of each candidate." },
+    { "ambiguous", &PoseResult::ambiguous, "Robust functions: more than one candidate (the pose is a coin toss)." },
+    { "points3d", &PoseResult::points3d, "Refiners: the refined points (N, 3) in the world (view 1's) frame." },
+    { "lines3d", &PoseResult::lines3d, "Refiners: two refined points (M, 6) of each line." },
+    { "Rs", &PoseResult::Rs, "adjust_poses_multiview: every view's rotation (the fixed ones as given)." },
+    { "ts", &PoseResult::ts, "adjust_poses_multiview: every view's translation." },
+};
+
+std::string vectorText(const Eigen::Vector3d& v)
+{
+    return tripose::formatString("[%.4g, %.4g, %.4g]", v[0], v[1], v[2]);
+}
+
+//! "12.3 deg about [0.1, 0.9, 0.1]": the rotation as an angle and an axis.
+std::string rotationText(const Eigen::Matrix3d& R)
+{
+    const Eigen::AngleAxisd angleAxis(R);
+    return tripose::formatString("%.4g deg about ", angleAxis.angle() * 180.0 / M_PI) + vectorText(angleAxis.axis());
+}
+
+std::string shapeText(const nb::object& value)
+{
+    if (value.is_none())
+        return "None";
+    const nb::object shape = value.attr("shape");
+    return tripose::formatString("(%d, %d)", nb::cast<int>(shape[0]), nb::cast<int>(shape[1]));
+}
+
+std::string repr(const PoseResult& r)
+{
+    std::string text = "PoseResult(";
+    if (r.kind == PoseResult::Kind::Adjusted)
+        text += tripose::formatString("Rs, ts: %d poses", r.numPoses);
+    else if (!r.hasPose)
+        return text + tripose::formatString("no pose, num_inliers=0 of %d points and %d lines)", r.numPoints, r.numLines);
+    else
+        text += "rotation=" + rotationText(r.rotation) + ", t=" + vectorText(r.translation);
+    if (r.kind == PoseResult::Kind::Robust)
+        text += tripose::formatString(", num_inliers=%d (points %d/%d, lines %d/%d)", r.pointInliers + r.lineInliers,
+                                      r.pointInliers, r.numPoints, r.lineInliers, r.numLines);
+    text += tripose::formatString(", rms=%.4g px", r.rmsValue);
+    if (r.kind != PoseResult::Kind::Adjusted)
+        text += r.noise_variance.is_none()
+                    ? std::string(", covariance=None")
+                    : tripose::formatString(", noise_variance=%.4g px^2, covariance=(6, 6)",
+                                            PyFloat_AsDouble(r.noise_variance.ptr()));
+    if (r.kind == PoseResult::Kind::Robust)
+        text += tripose::formatString(", candidates=%d, ambiguous=%s", r.numCandidates,
+                                      r.numCandidates > 1 ? "True" : "False");
+    else
+        text += ", points3d=" + shapeText(r.points3d) + ", lines3d=" + shapeText(r.lines3d);
+    return text + ")";
+}
+
+const Field* findField(const std::string& name)
+{
+    for (const Field& field : kFields)
+        if (name == field.name)
+            return &field;
+    return nullptr;
+}
+
+} // namespace
+
+void bindPoseResult(nb::module_& m)
+{
+    nb::class_<PoseResult> cls(m, "PoseResult",
+                               "The result of the robust functions (estimate_pose_*_ransac), the refiners "
+                               "(refine_pose_*) and adjust_poses_multiview: R, t, num_inliers, point_inliers, "
+                               "line_inliers, rms, covariance, noise_variance, candidates, candidate_rms, ambiguous, "
+                               "points3d, lines3d, Rs, ts; None where the function does not give one. "
+                               "result['R'] reads a field as result.R does (the dictionaries of earlier releases).");
+    for (const Field& field : kFields)
+    {
+        nb::object PoseResult::*member = field.member;
+        cls.def_prop_ro(field.name, [member](const PoseResult& r) { return r.*member; }, field.doc);
+    }
+    cls.def("__getitem__",
+            [](const PoseResult& r, const std::string& key) {
+                const Field* field = findField(key);
+                if (!field)
+                    throw nb::key_error(key.c_str());
+                return r.*(field->member);
+            })
+        .def("__contains__", [](const PoseResult&, const std::string& key) { return findField(key) != nullptr; })
+        .def("get",
+             [](const PoseResult& r, const std::string& key, nb::object fallback) {
+                 const Field* field = findField(key);
+                 return field ? r.*(field->member) : fallback;
+             },
+             nb::arg("key"), nb::arg("default") = nb::none())
+        .def("keys",
+             [](const PoseResult&) {
+                 nb::list names;
+                 for (const Field& field : kFields)
+                     names.append(field.name);
+                 return names;
+             },
+             "The names of every field, as a dictionary's keys.")
+        .def("__repr__", &repr);
+}
