@@ -75,15 +75,15 @@ CV_EXPORTS_W int estimatePoseMultiView(
 outliers.
 
 The problem of estimatePoseMultiView() with RANSAC as in estimatePoseLinePointRansac(): samples of
-three points and lines mixed, solved on the structure triangulated from the known views, from 20
+three points and lines mixed, solved on the structure triangulated from the known views, from enough
 features with structure that the new view sees when the known views triangulate well (the median
-over the features of the widest angle between the rays of the known views that see them is 2
-degrees or more), else samples of four features for the linear solver; hypotheses scored (MSAC) on their residuals in the new view against the structure
-triangulated from the known views that see each feature, truncated at 2 x RansacParams::threshold;
-local optimisation, adaptive stopping; then maximum-likelihood refinement over every view on the
-inliers (known poses fixed). A feature is an inlier when its RMS reprojection error over every view
-that sees it, re-triangulated from all of them with the returned pose, is below
-RansacParams::threshold.
+over the features of the widest angle between the rays of the known views that see them decides),
+else samples of four features for the linear solver; hypotheses scored (MSAC) on their residuals in
+the new view against the structure triangulated from the known views that see each feature,
+truncated at 2 x RansacParams::threshold; local optimisation, adaptive stopping; then
+maximum-likelihood refinement over every view on the inliers (known poses fixed). A feature is an
+inlier when its RMS reprojection error over every view that sees it, re-triangulated from all of
+them with the returned pose, is below RansacParams::threshold.
 
 Arguments as in estimatePoseMultiView().
 @param params See RansacParams.

@@ -42,12 +42,12 @@ view 3 (points: pixel distance; segments: distances of both end points to the pr
 Four or five features whose constraints are dependent (e.g. collinear points) give no candidate.
 
 With POSE_LINEAR_REFINE every candidate is then refined over the three views. Where the cost has
-several basins (a narrow baseline of views 1-2, planar structure, mostly lines) so are: up to six
-poses of distinct rotations from the linear solver on four-feature subsets (every subset up to 128,
-else 128 drawn; the best by their reprojection error with the structure triangulated at them), 26
-starts that keep the best-ranked candidate's rotation and move view 3's centre around view 1 at the
-same distance, and, when the best minimum's rotation differs from that candidate's, the same 26
-around it; each refinement is repeated from its result with the structure triangulated afresh
+several basins (a narrow baseline of views 1-2, planar structure, mostly lines) so are: a few
+poses of distinct rotations from the linear solver on four-feature subsets (every subset of a small
+set, else a sample of them; the best by their reprojection error with the structure triangulated
+at them), starts that keep the best-ranked candidate's rotation and move view 3's centre around
+view 1 at the same distance, and, when the best minimum's rotation differs from that candidate's,
+the same starts around it; each refinement is repeated from its result with the structure triangulated afresh
 until it settles. The distinct minima that use every usable feature are returned, ranked by their
 RMS reprojection error over the three views: with a narrow known baseline or planar structure the
 linear candidates alone lead to another local minimum in many scenes (doc/studies/accuracy.md). Minima

@@ -46,15 +46,15 @@ struct CV_EXPORTS_W_SIMPLE RansacParams
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 
 RANSAC over minimal samples, with:
-- when the median triangulation angle between views 1 and 2 is 2 degrees or more, samples of three
-  features solved as absolute-pose problems on the structure triangulated from views 1 and 2:
-  from 20 features with structure on, three points (P3P), two points and a line, a point and two
-  lines, or three lines, each kind chosen per sample in proportion to the probability that it is
-  all inliers (from the inlier ratios of points and of lines of the best model so far; lines whose
-  planes in views 1 and 2 meet at under 3 degrees are not drawn), and the stopping rule counts the
-  samples of every kind; on smaller sets three points when there are at least 8 with structure
-  and a quarter of the features or more. Every feature votes in every score and takes part in the
-  local optimisation and the refinement;
+- when views 1 and 2 triangulate well (a wide enough baseline: the median triangulation angle
+  decides), samples of three features solved as absolute-pose problems on the structure
+  triangulated from views 1 and 2: from enough features with structure on, three points (P3P), two
+  points and a line, a point and two lines, or three lines, each kind chosen per sample in
+  proportion to the probability that it is all inliers (from the inlier ratios of points and of
+  lines of the best model so far; lines whose planes in views 1 and 2 meet at a grazing angle are
+  not drawn), and the stopping rule counts the samples of every kind; on smaller sets three points
+  when enough points have structure and they are a fair share of the features. Every feature votes
+  in every score and takes part in the local optimisation and the refinement;
 - otherwise (narrow baselines, small sets with few points) samples of four features (any mix of
   points and lines: the smallest set the linear solver of estimatePoseLinePoint() handles), which
   need no triangulated structure;
@@ -64,20 +64,20 @@ RANSAC over minimal samples, with:
   reprojected 3D line, truncated at 2 x RansacParams::threshold (see there);
 - local optimisation: the linear solver re-run on the inliers of each new best model;
 - adaptive stopping from the inlier ratios at the requested confidence;
-- with few features (at most 1024 distinct samples, and no more than maxIterations), every distinct
-  sample drawn once instead, in an order set by the seed; when none has support, the linear solution
-  over all features goes on to the inlier test;
+- with few features (few enough distinct samples to enumerate, and no more than maxIterations),
+  every distinct sample drawn once instead, in an order set by the seed; when none has support, the
+  linear solution over all features goes on to the inlier test;
 - final maximum-likelihood refinement (as refinePoseLinePoint(), with RansacParams::refineParams) on
-  the inliers, the inliers then re-classified and the refinement repeated until they settle (at most
-  three rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
-  structure; also under a quarter of the features points, on sets that do not draw the samples of
-  points and lines mixed), with at most 60 inliers the refinement also starts from the linear
-  solution on the inliers, from up to six poses of distinct rotations from four-inlier subsets (as
-  in estimatePoseLinePoint() with #POSE_LINEAR_REFINE) and from 26 starts that keep the rotation and
-  move view 3's centre around view 1 (repeated around the best minimum when its rotation moved),
-  each re-triangulated until it settles, and keeps the lowest cost; with at most 60 features the
-  same is done from all features too, and the lower truncated cost of the two wins. There a single
-  refinement leaves the pose in another local minimum in many scenes. The other minima it reaches
+  the inliers, the inliers then re-classified and the refinement repeated until they settle (in a
+  few rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
+  structure; also few points among the features, on sets that do not draw the samples of points
+  and lines mixed), on moderate inlier sets the refinement also starts from the linear solution on
+  the inliers, from poses of distinct rotations from four-inlier subsets (as in
+  estimatePoseLinePoint() with #POSE_LINEAR_REFINE) and from starts that keep the rotation and move
+  view 3's centre around view 1 (repeated around the best minimum when its rotation moved), each
+  re-triangulated until it settles, and keeps the lowest cost; on moderate sets the same is done
+  from all features too, and the lower truncated cost of the two wins. There a single refinement
+  can leave the pose in another local minimum (doc/studies/accuracy.md). The other minima it reaches
   that the noise cannot tell from the returned one are reported in @p candidateRs.
 
 Arguments as in estimatePoseLinePoint().
@@ -99,7 +99,7 @@ degrees of freedom) times the noise variance estimated at it, so they lie inside
 likelihood-ratio confidence region (doc/conventions.md, "Several minima"). More than one: the pose
 is ambiguous, as with a narrow baseline of views 1-2, and a tracker should wait for more parallax
 rather than trust the first. Only the returned pose where the refinement searched one basin (see
-above: a wide baseline, or more than 60 inliers); empty without refinement or when no pose was found.
+above: a wide baseline, or a large inlier set); empty without refinement or when no pose was found.
 @param candidateTs Optional output: the matching translations (3x1 CV_64F).
 @param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
 (px, CV_64F) over the inliers in the three views after refinement.

@@ -10,10 +10,8 @@
 
 namespace tripose {
 
-/** Pairs of known views for the over-determined multi-view system. Measured by tracking the VGG
-sequences (doc/studies/tracking.md): after RANSAC and refinement, every pair gives a drift equal to or below
-that of the best pair alone on every sequence and window; the linear estimate alone is better with
-every pair on Corridor and Wadham College and worse on Model House.
+/** Pairs of known views for the over-determined multi-view system: after RANSAC and refinement,
+every pair drifts no more than the best pair alone (doc/studies/tracking.md).
 */
 const PairSelection kMultiViewPairs = PairSelection::All;
 

@@ -53,7 +53,7 @@ void refineCandidates(const ViewSet& views, const PoseSolver& solver, bool sever
     if (severalBasins)
     {
         // The solver's minimal samples give starts even where its estimate over all features has
-        // no candidate (a narrow known pair: 2 of 100 scenes at 0.5 %, 4P+4L).
+        // no candidate, as can happen with a narrow known pair (doc/studies/accuracy.md).
         appendHypothesisStarts(views, solver, FeatureSubset::all(views.numPoints, views.numLines), starts);
         searchBasins(views, starts, params, nullptr, nullptr, &minima);
     }
@@ -99,9 +99,9 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     // "Mixed samples of points and lines"), and the starts would cost a hundred times the rest.
     // The structure's own regimes (narrow pair, planar) still call for them, except where the
     // scorer lets the known structure slide in depth (the stereo rig): its minimal samples then
-    // find the basin too, and the starts changed no result over 100 rig scenes at 10P+10L while
-    // they took 99 % of the time (doc/studies/speed.md, "Stereo rig"); settling from all features, which
-    // costs one refinement, stays.
+    // find the basin too, and the starts would take nearly all of the time without changing the
+    // result (doc/studies/speed.md, "Stereo rig"); settling from all features, which costs one
+    // refinement, stays.
     const bool severalBasins =
         solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
     const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth(),

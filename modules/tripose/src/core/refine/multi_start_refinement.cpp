@@ -152,11 +152,12 @@ namespace {
 /** The minima of a search, refined to their ends: each of @p minima that could be the lowest (see
 the constants above) is replaced by the minimum that refineRetriangulating() reaches from its pose
 with kSettleFactor times the iterations. Two things change there: a minimum that stopped on the
-iteration limit goes on along its valley (in narrow scenes 1.08 to 3.2 times the best cost at 30
-iterations was the lowest at convergence), and one that the search's structure held (a line kept
-in front, a point at another depth) moves to the minimum that refinement of its pose alone reaches,
-which is what a refinement of the returned pose finds. Returns the best of the result; @p minima
-holds the settled minima in place of those. A minimum already settled costs a few iterations. */
+iteration limit goes on along its valley (in narrow scenes a minimum ranked above the best at the
+iteration limit can be the lowest at convergence; doc/studies/accuracy.md), and one that the
+search's structure held (a line kept in front, a point at another depth) moves to the minimum that
+refinement of its pose alone reaches, which is what a refinement of the returned pose finds. Returns
+the best of the result; @p minima holds the settled minima in place of those. A minimum already
+settled costs a few iterations. */
 LocalMinimum settleMinima(const ViewSet& set, std::vector<LocalMinimum>& minima, const RefineOptions& params,
                           const std::vector<int>* pointIndices, const std::vector<int>* lineIndices)
 {

@@ -73,14 +73,14 @@ LocalMinimum refineFromStarts(const ViewSet& set, const std::vector<CameraPose>&
 /** The search where the cost has several basins: refineFromStarts() from @p starts and from the
 centreDirectionStarts() around the first of them; then, when the best minimum's rotation lies
 apart from that first start's, from the centre-direction starts around the best minimum as well.
-The first start's rotation is a hypothesis' (a linear estimate: 5-9 degrees off at 1 px with a
-narrow known pair), and the starts that keep it miss basins that the same starts around the refined
-rotation reach (doc/studies/accuracy.md, "Narrow known baselines: the lowest minimum"). The refinements
-run at least 100 iterations (more when @p params asks); then the lowest minima (up to eight, within
-twice the best cost) are refined again from their poses, with three times the iterations and the
-structure re-triangulated there, and replaced by where that ends: the best is chosen among minima
-refined to their ends, and refinement of the returned pose stays at its cost. Appends every minimum
-kept to @p minima when given; returns the best.
+The first start's rotation is a hypothesis' (a linear estimate, degrees off with a narrow known
+pair), and the starts that keep it miss basins that the same starts around the refined
+rotation reach (doc/studies/accuracy.md, "Narrow known baselines: the lowest minimum"). The
+refinements run at least kSearchIterations (multi_start_refinement.cpp; more when @p params asks);
+then the lowest minima (a few, within a factor of the best cost) are refined again from their poses,
+with more iterations and the structure re-triangulated there, and replaced by where that ends: the
+best is chosen among minima refined to their ends, and refinement of the returned pose stays at its
+cost. Appends every minimum kept to @p minima when given; returns the best.
 */
 LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& starts, const RefineOptions& params,
                           const std::vector<int>* pointIndices = nullptr,
@@ -88,10 +88,9 @@ LocalMinimum searchBasins(const ViewSet& set, const std::vector<CameraPose>& sta
                           std::vector<LocalMinimum>* minima = nullptr);
 
 /** The search of large sets where the cost has several basins: refineFromStarts() from @p starts
-alone, with @p params' iterations, then the lowest minima settled as in searchBasins(). On 100P+40L
-with a narrow known pair the starts of the solver's estimates (the inliers' and hypothesis_starts')
-find the basin; searchBasins() with its 26 centre-direction starts and 100 iterations over the 140
-features gave the same errors over 60 scenes at ten times the time (3 s a call; doc/studies/accuracy.md,
+alone, with @p params' iterations, then the lowest minima settled as in searchBasins(). On large sets
+the starts of the solver's estimates (the inliers' and hypothesis_starts') find the basin, and
+searchBasins()' centre-direction starts add time without lowering the errors (doc/studies/accuracy.md,
 "Narrow known baselines, large sets"). Appends every minimum kept to @p minima when given; returns
 the best.
 */

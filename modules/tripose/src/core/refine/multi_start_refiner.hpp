@@ -16,7 +16,7 @@ namespace tripose {
 
 /** The robust estimator's final stage: maximum-likelihood refinement over every view from the
 estimator's pose, from the solver's estimates on the inliers (when it has one and they are enough),
-from the solver's starts of distinct rotations (hypothesis_starts.hpp) and from the 26 starts of
+from the solver's starts of distinct rotations (hypothesis_starts.hpp) and from the starts of
 centreDirectionStarts() around the best minimum (searchBasins()), each re-triangulated until it
 settles, the lowest cost kept and the minima within the noise of it remembered
 (minimaWithinNoise()). Only where the problem has several basins (a narrow known baseline, planar
@@ -24,13 +24,11 @@ structure) and the caller asks for the starts. Sets larger than kMaxMultiStartFe
 only with a narrow known pair (searchesBasinOfLargeSets()), once per estimate: on the first call
 (the inliers at the robust estimator's pose), from the estimator's pose and the solver's estimates
 alone (searchFromStarts()); the estimator's later calls, on the inliers as they settle, refine once
-from the pose they are given. Refined once from the RANSAC's pose, 100P+40L scenes with a narrow
-known pair ended at the lowest minimum of a reference search in 52 and 44 of 60 (1 % and 0.5 %
-baselines); searched once, in 58 and 49 (doc/studies/accuracy.md, "Narrow known baselines, large sets").
-Large planar sets with a wide baseline are refined once: their samples find the basin, and the
-search left their errors as they were (medians and means to four decimals over 50 scenes) at eight
-times the time. Elsewhere one refinement from the
-estimator's pose reaches the optimum.
+from the pose they are given. With a narrow known pair, one search reaches the lowest minimum more
+often than one refinement from the RANSAC's pose (doc/studies/accuracy.md, "Narrow known baselines,
+large sets"). Large planar sets with a wide baseline are refined once: their samples find the basin,
+and the search does not change their errors at several times the time. Elsewhere one refinement
+from the estimator's pose reaches the optimum.
 */
 class MultiStartRefiner : public PoseRefiner
 {
@@ -103,8 +101,8 @@ public:
             pose.R == last_.result.R && pose.t == last_.result.t)
             return true;
         // The solver's estimates on the inliers first: the centre-direction starts keep the first
-        // start's rotation, and around the estimate's pose alone they missed the lowest minimum
-        // that POSE_LINEAR_REFINE's search reaches (narrow 0.5 % 4P+4L: 2 of 100 scenes).
+        // start's rotation, so around the estimate's pose alone they can miss the lowest minimum
+        // that POSE_LINEAR_REFINE's search reaches with a narrow known pair (doc/studies/accuracy.md).
         std::vector<CameraPose> starts;
         if (solver_ && inliers.size() >= solver_->nonMinimalSize())
             solver_->estimateNonMinimal(inliers, starts);

@@ -24,10 +24,9 @@ constexpr int kLocalOptimizationRounds = 3;
 // Rounds of refinement and inlier re-classification at the end; they settle in one or two.
 constexpr int kSettleRounds = 3;
 // Iterations of a settle round's refinement before its inliers are re-classified (settleInliers()):
-// on small rig sets whose consensus leaves true features out, the first round's refinement on the
-// partial set ran to the 30-iteration cap, a third of its steps rejected (far lines on a short
-// baseline), only to be re-triangulated and refined again on the settled set. 12 takes the slowest
-// of 100 seeded 10P+10L scenes from 3.8-4.0 to 2.9-3.0 times the median (doc/studies/speed.md).
+// on small rig sets whose consensus leaves true features out, a full refinement on the partial set
+// is wasted, since it is re-triangulated and refined again on the settled set; the cap shortens the
+// slowest estimates (doc/studies/speed.md).
 constexpr int kSettleRoundIterations = 12;
 // Problems up to this many features are also settled from all of them (run()).
 constexpr int kMaxSettleFromAll = 60;
@@ -92,9 +91,8 @@ public:
             std::fill(fromAll.pointInliers.begin(), fromAll.pointInliers.end(), 1);
             std::fill(fromAll.lineInliers.begin(), fromAll.lineInliers.end(), 1);
             // A refiner that searches other starts may find another basin of the same inliers'
-            // cost from the new pose (+2 % mean rotation error over 200 narrow three-view scenes
-            // when it was not let finish): only a refiner that descends from the pose it is given
-            // gives up on coming back to them.
+            // cost from the new pose, so it is let finish (doc/studies/accuracy.md): only a refiner
+            // that descends from the pose it is given gives up on coming back to them.
             const double allCost = settleInliers(fromAll, false, descends ? &estimate : nullptr);
             if (allCost < cost)
             {
@@ -104,9 +102,7 @@ public:
         }
         // A pose is found only when one feature more than a minimal sample of the solver agrees with
         // it (all of them where the input holds no more): a minimal sample fits any observations,
-        // wrong matches too (with every view-3 observation wrong, a floor of three inliers still let
-        // 11 of 100 scenes through), and one or two inliers leave the pose free (an unrelated third
-        // image gave such a "pose" with one inlier of seven).
+        // wrong matches too, and one or two inliers more leave the pose free (doc/studies/hardening.md).
         return estimate.numInliers >= std::min(solver_.sampleSize() + 1, numFeatures_);
     }
 
@@ -186,8 +182,8 @@ private:
             // it is capped there (kSettleRoundIterations) and refined to the end once the inliers
             // settle, or in the last round. (The three-view estimators keep full rounds.) A round on
             // settled inliers that stopped at its iteration limit, capped or not, is continued once
-            // from where it stopped: in a long flat valley (the rig's depth on a short baseline) 30
-            // iterations left a 100P+40L rig scene 0.8 deg off its minimum, without wrong matches.
+            // from where it stopped: in a long flat valley (the rig's depth on a short baseline) the
+            // default iterations can stop well short of the minimum (doc/studies/evaluation.md).
             const bool capRound = capSettleRounds_ && round + 1 < kSettleRounds;
             bool stoppedAtCap = false;
             refineOnInliers(estimate.pose, estimate.pointInliers, estimate.lineInliers,
@@ -196,9 +192,8 @@ private:
             estimate.numInliers = inlierMasks(estimate.pose, points, lines);
             // Back on the inliers that @p settledBefore ended on, the next round would refine those
             // features again: where that settle did, unless this start lies in another basin of the
-            // same features' cost. Over 500 seeded 10P+10L rig scenes (tripose_evaluate stereo,
-            // seed 7000) the errors moved by the last iterations' amount only (mean rotation error
-            // 0.1801 deg before and after); each such round cost 10-30 iterations.
+            // same features' cost; dropping that round moves the errors by the last iterations'
+            // amount only and saves its iterations (doc/studies/evaluation.md).
             if (settledBefore && points == settledBefore->pointInliers && lines == settledBefore->lineInliers)
                 return std::numeric_limits<double>::infinity();
             const bool settled = points == estimate.pointInliers && lines == estimate.lineInliers;
@@ -412,8 +407,8 @@ private:
     /** Whether the stopping rule counts the best pose's inliers re-triangulated from all views
     (stoppingInliers()): where the refiner searches the basin of sets of any size (a narrow known
     pair) and the set is larger than those settled from all features. There the known pair
-    triangulates the structure poorly: the score against it leaves true inliers out and asked for
-    thousands of samples (0.1-0.4 s at 100P+40L), which served as a search for the basin. With the
+    triangulates the structure poorly: the score against it leaves true inliers out and asks for
+    thousands of samples, which served as a search for the basin (doc/studies/accuracy.md). With the
     refiner searching it, the samples need only find the inliers. */
     bool stopsByRefitInliers_ = false;
     bool sampledPose_ = false; //!< Some minimal sample gave a pose.

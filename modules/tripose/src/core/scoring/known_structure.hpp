@@ -41,11 +41,10 @@ in a minimal sample: an end point's depth error is about the image error over th
 constexpr double kWeakLinePlaneAngleDeg = 3.0;
 //! Below this thickness the structure counts as planar (a facade seen with noise).
 constexpr double kPlanarThickness = 0.05;
-/** With a moderate triangulation angle (the paper's small motion: about 8 degrees) noisy depths
-thicken planar structure: a median of 0.08 and a tenth of the scenes above 0.3 at 1 px, against 0.4
-to 0.6 for structure in a cube (a tenth below 0.18-0.35). Below this angle, structure up to this
-thickness counts as planar: the cube scenes it takes in pay the multi-start search, which leaves
-their errors as they are (doc/studies/accuracy.md has the figures). */
+/** With a moderate triangulation angle (the paper's small motion) noisy depths thicken planar
+structure into the range of thin general structure. Below this angle, structure up to this
+thickness counts as planar: the general scenes it takes in pay the multi-start search, which leaves
+their errors as they are (doc/studies/accuracy.md). */
 constexpr double kModerateTriangulationAngleDeg = 15.0;
 constexpr double kNoisyPlanarThickness = 0.35;
 

@@ -11,9 +11,8 @@ namespace tripose {
 namespace {
 
 // Degrees of freedom of the inlier points below which their noise estimate is too uncertain to
-// judge features by: the relative standard deviation of the variance, sqrt(2 / k), is 10 % here. At 50
-// (10 points in four views, 20 %) the lines that an underestimate rejected cost 1 % of the mean
-// rotation error over 500 rig scenes of 10 points + 10 lines.
+// judge features by: the relative standard deviation of the variance, sqrt(2 / k), is 10 % here;
+// below, the true lines that an underestimate rejects cost accuracy (doc/studies/evaluation.md).
 constexpr int kMinNoiseDegrees = 200;
 // The threshold's share of sigma, as the documentation sets it (max(2 px, 3 sigma)).
 constexpr double kThresholdSigmas = 3.0;

@@ -19,15 +19,14 @@ The threshold bounds each residual, about 3 sigma. A point seen in four views is
 epipolar geometry, and a wrong match is tens of pixels off; a line has no such constraint, and on a
 stereo rig a wrong line match that is consistent between the two images at the new time is a few
 pixels off at most: each pair's planes nearly coincide (a short baseline), and two planes always
-meet in a line. Such lines, 0.3-2.9 px RMS (most above 1.2) where true ones are 0.7 px at 1 px
-noise, pass the threshold, and a handful of them pulls the least-squares settle 0.5-2.7 degrees
-off (doc/studies/evaluation.md, Stereo rig). Here a line stays an inlier only if its sum of squared residuals
-(RMS^2 times their number n) is below the 99.9 % quantile of chi-square with n - 4 degrees of
-freedom (its four parameters fitted) times the noise variance: 1.5 px RMS in four views at 1 px,
-so one true line in a thousand is lost. The variance is estimated from the inlier points (sum of
-their squared residuals over their n - 3 degrees of freedom) when they have at least
-kMinNoiseDegrees, else it is (threshold / 3)^2. Lines seen in two views (no degree of freedom
-left) keep the threshold's verdict.
+meet in a line. Such lines, a little above the noise of true ones, pass the threshold, and a handful
+of them pulls the least-squares settle off (doc/studies/evaluation.md, Stereo rig). Here a line
+stays an inlier only if its sum of squared residuals (RMS^2 times their number n) is below the
+99.9 % quantile of chi-square with n - 4 degrees of freedom (its four parameters fitted) times the noise
+variance, so one true line in a thousand is lost. The variance is estimated from the inlier points
+(sum of their squared residuals over their n - 3 degrees of freedom) when they have at least
+kMinNoiseDegrees, else it is (threshold / 3)^2. Lines seen in two views (no degree of freedom left)
+keep the threshold's verdict.
 
 @p lineMask (the threshold's verdict) loses the lines that fail; returns how many. */
 int rejectLinesAbovePointNoise(const ViewSet& set, double threshold, const std::vector<double>& pointResiduals,
@@ -36,16 +35,14 @@ int rejectLinesAbovePointNoise(const ViewSet& set, double threshold, const std::
 
 /** The same test of the inlier points themselves, for the settled pose only: each point of
 @p pointMask stays an inlier if its sum of squared residuals is below the 99.9 % quantile of
-chi-square with n - 3 degrees of freedom times the variance that the inlier points show (as above):
-1.6 px RMS in four views at 1 px. A point is held by its epipolar geometry, but among many wrong
-matches of a rig (consistent between the two images at the new time) a few still land within the
-threshold: two such points, 2.4 and 2.3 px RMS where true ones are 0.8 px, put a 100P+40L rig scene
-at 60 % wrong matches 0.90 deg off, and 0.43 without them. Judged only once the inliers have
+chi-square with n - 3 degrees of freedom times the variance that the inlier points show (as above).
+A point is held by its epipolar geometry, but among many wrong matches of a rig (consistent between
+the two images at the new time) a few still land within the threshold, and even two of them pull
+the pose off (doc/studies/evaluation.md, Stereo rig). Judged only once the inliers have
 settled: at the poses of unconverged settle rounds true points fail it too, and the rounds then
 end elsewhere. Only where the variance is estimated from the points (kMinNoiseDegrees): with a
 handful of points the threshold's variance would judge true points by a noise that is not theirs,
-and a rig scene with five true points loses one it cannot spare (10P+10L at 50 % wrong matches:
-three of 500 scenes went from 0.4-1.5 deg to 18-50 deg). @p pointMask loses the points that fail;
+and a rig scene with few true points would lose one it cannot spare. @p pointMask loses the points that fail;
 returns how many. */
 int rejectPointsAboveNoise(const ViewSet& set, double threshold, const std::vector<double>& pointResiduals,
                            std::vector<unsigned char>& pointMask);

@@ -99,10 +99,8 @@ public:
     /** The sequential test checks at most this many observations: a wrong pose is rejected after a
     few, and a pose that passes them all is scored in full, the checked ones again. */
     static constexpr int kMaxTested = 100;
-    /** Sets with fewer observations are not tested: the cost bound stops a wrong pose about as early
-    as the test would (a third of 17 observations at 30 % outliers against some six for the test),
-    and a pose that passes would be scored twice (5P+12L at 30 %, callgrind: scoring 6.2M
-    instructions without the test, 13.6M with it). */
+    /** Sets with fewer observations are not tested: there the cost bound stops a wrong pose about as
+    early as the test would, and a pose that passes would be scored twice (doc/studies/speed.md). */
     static constexpr int kMinTestedObservations = 100;
 
     /** Per feature: the RMS reprojection error (px) over every view that sees it and every coordinate
