@@ -171,12 +171,15 @@ def test_first_pose_given_places_the_world():
         assert rotation_error < ROTATION_BOUND_DEG and position_error < POSITION_BOUND * seq.path_length
 
 
-def test_a_frame_of_noise_is_lost_and_tracking_goes_on():
-    seq = StereoSequence(14, seed=3)
+def test_frames_of_noise_are_lost_and_tracking_goes_on():
+    """One frame of noise, then a run of more than max_frame_gap: both lost, every other frame
+    registered."""
+    seq = StereoSequence(18, seed=3)
     tracker = make_tracker(seq)
     rng = np.random.default_rng(4)
-    for k in range(14):
-        if k == 7:
+    noise = {4} | set(range(8, 8 + tracker.options.max_frame_gap + 2))
+    for k in range(18):
+        if k in noise:
             result = tracker.track(noise_features(rng), noise_features(rng))
             assert result.status == LOST and result.R is None and result.reason
             assert tracker.pose(k) is None

@@ -278,7 +278,8 @@ class StereoTracker:
     FrameResult; a frame's pose is its left camera's. The first frame's left camera is the world's
     origin (status GIVEN) unless R, t are given. Every frame's left and right features are matched
     under the rig's epipolar geometry (segments within matching.min_epipolar_angle_deg of the
-    epipolar lines are not), its left features linked to the frame before (as Tracker links them),
+    epipolar lines are not), its left features linked to the frame before (as Tracker links them;
+    past more lost frames than options.max_frame_gap, to the newest recent keyframe they match),
     and it is registered with the stereo-rig estimator against the stereo pair of the newest of
     the last options.window keyframes that gives it options.min_inliers inliers; otherwise it is
     LOST (FrameResult.reason says why) and the next frame looks back over the same keyframes. A

@@ -4,7 +4,7 @@
 
 // cv::tripose::StereoTracker on a synthetic stereo sequence: points and segments of a 3D scene seen
 // by a rig moving along a smooth path, 0.5 px noise, a descriptor per 3D feature with noise per
-// observation. Every frame registered at metric scale with no pose given; a frame of noise lost and
+// observation. Every frame registered at metric scale with no pose given; frames of noise lost and
 // the next ones registered; bad input named.
 
 #include "test_precomp.hpp"
@@ -212,15 +212,15 @@ TEST(Tripose_StereoTracker, registers_every_frame_at_metric_scale_without_poses)
     EXPECT_THROW(tracker->getPose(20, R, t), cv::Exception);
 }
 
-TEST(Tripose_StereoTracker, a_frame_of_noise_is_lost_and_the_next_ones_register)
+TEST(Tripose_StereoTracker, frames_of_noise_are_lost_and_the_next_ones_register)
 {
-    const StereoSequence seq(14, 2);
+    const StereoSequence seq(16, 2);
     RNG rng(11);
     Ptr<StereoTracker> tracker = makeTracker(seq);
-    const int noisy = 7;
+    // One frame of noise, then a run longer than TrackerParams::maxFrameGap.
     for (int k = 0; k < (int)seq.poses.size(); ++k)
     {
-        const bool noise = k == noisy;
+        const bool noise = k == 4 || (k >= 7 && k <= 11);
         const TrackedFrame r =
             tracker->addFrame(noise ? noiseFeatures(rng, 200, 40) : seq.observe(seq.poses[k], rng, 0.5),
                               noise ? noiseFeatures(rng, 200, 40) : seq.observe(seq.rightPose(k), rng, 0.5));

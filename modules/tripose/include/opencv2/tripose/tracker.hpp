@@ -149,7 +149,9 @@ pose, and the rig's baseline gives every pose its metric scale.
 Each frame's left and right features are matched under the rig's epipolar geometry (a segment
 within MatchParams::minEpipolarAngleDeg of the epipolar lines, horizontal ones for a side-by-side
 rig, is not matched); its left features are linked to the left features of the frame before (as
-Tracker links frames, looking back up to TrackerParams::maxFrameGap frames); then it is registered
+Tracker links frames, looking back up to TrackerParams::maxFrameGap frames, then over the last
+TrackerParams::window keyframes, so that a longer run of lost frames does not end tracking); then
+it is registered
 with the stereo-rig estimator (estimatePoseLinePointStereoRansac()'s; its linear solver with
 TrackerParams::robust off) against the stereo pair of a keyframe, on the features that both
 cameras of the keyframe and the frame's left camera see (and its right camera, where matched), and

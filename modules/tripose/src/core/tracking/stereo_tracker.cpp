@@ -211,6 +211,20 @@ void StereoTracker::linkToRecent(int frame, const FrameFeatures& left)
             underGeometry = true;
         }
     }
+    // Past more lost frames than that, the keyframes older than the recent frames.
+    const int oldestRecent = recent_.front().first;
+    for (auto it = keyframeFeatures_.rbegin(); !underGeometry && it != keyframeFeatures_.rend(); ++it)
+    {
+        Matches earlierPoints, earlierSegments;
+        if (it->first < oldestRecent &&
+            matchUnknownPose(it->second, left, options_.matching, earlierPoints, earlierSegments))
+        {
+            points.swap(earlierPoints);
+            segments.swap(earlierSegments);
+            from = it->first;
+            underGeometry = true;
+        }
+    }
     link(FeatureKind::Point, from, frame, points);
     link(FeatureKind::Line, from, frame, segments);
 }
@@ -272,7 +286,14 @@ FrameResult StereoTracker::addFrame(const FrameFeatures& left, const FrameFeatur
     recent_.emplace_back(index, std::move(undistorted[0]));
     while ((int)recent_.size() > options_.maxFrameGap)
         recent_.pop_front();
-    return finishFrame(index, start);
+    FrameResult result = finishFrame(index, start);
+    if (result.keyframe)
+    {
+        keyframeFeatures_.emplace_back(index, recent_.back().second);
+        while ((int)keyframeFeatures_.size() > options_.window)
+            keyframeFeatures_.pop_front();
+    }
+    return result;
 }
 
 StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) const

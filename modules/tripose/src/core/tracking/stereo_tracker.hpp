@@ -27,8 +27,10 @@ Each frame:
 - its left and right features are matched under the rig's epipolar geometry (the stereo matches);
 - its left features are linked to the left features of the frame before, as Tracker links frames
   (matchUnknownPose(); past a frame that shares too few matches for their geometry, to the nearest
-  of the TrackerOptions::maxFrameGap frames before it that does): a track is one feature of the
-  scene seen by the left camera, and the right camera sees it through the stereo match;
+  of the TrackerOptions::maxFrameGap frames before it that does, else to the newest of the last
+  TrackerOptions::window keyframes that does, so that a longer run of lost frames does not end
+  tracking): a track is one feature of the scene seen by the left camera, and the right camera
+  sees it through the stereo match;
 - it is registered with the stereo-rig estimator (estimateRobustRig(); the linear rig solver with
   TrackerOptions::robust off) against a keyframe A, on the features that both cameras of A see
   (A's stereo matches) and the new frame's left camera sees (and its right camera, where the new
@@ -96,6 +98,8 @@ private:
     std::vector<StereoFrame> stereo_;
     //! The left features of the last frames, for linking the next ones (at most maxFrameGap).
     std::deque<std::pair<int, FrameFeatures>> recent_;
+    //! The left features of the last keyframes (at most window), linked to past a longer gap.
+    std::deque<std::pair<int, FrameFeatures>> keyframeFeatures_;
 };
 
 } // namespace tripose
