@@ -5,6 +5,7 @@
 #include "pose_result.hpp"
 
 #include <cmath>
+#include <deque>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -21,34 +22,53 @@ struct Field
     const char* name;
     nb::object PoseResult::*member;
     const char* doc;
+    const char* type; //!< The type the stubs give it.
 };
+
+#define TRIPOSE_ARRAY "numpy.typing.NDArray[numpy.float64]"
+#define TRIPOSE_MASK "numpy.typing.NDArray[numpy.bool_]"
 
 // Every field once: its attribute, its dictionary key (the names of the dicts the functions
 // returned before) and its docstring.
 const Field kFields[] = {
-    { "R", &PoseResult::R, "Rotation (3, 3) of the pose, x_cam = R @ X + t; None when no pose was found." },
-    { "t", &PoseResult::t, "Translation (3,) of the pose; None when no pose was found." },
+    { "R", &PoseResult::R, "Rotation (3, 3) of the pose, x_cam = R @ X + t; None when no pose was found.",
+      TRIPOSE_ARRAY " | None" },
+    { "t", &PoseResult::t, "Translation (3,) of the pose; None when no pose was found.",
+      TRIPOSE_ARRAY " | None" },
     { "num_inliers", &PoseResult::num_inliers,
-      "Robust functions: points + lines that agree with the pose (0 when no pose was found)." },
-    { "point_inliers", &PoseResult::point_inliers, "Robust functions: bool (N,), the points that agree with the pose." },
-    { "line_inliers", &PoseResult::line_inliers, "Robust functions: bool (M,), the lines that agree with the pose." },
+      "Robust functions: points + lines that agree with the pose (0 when no pose was found).",
+      "int | None" },
+    { "point_inliers", &PoseResult::point_inliers, "Robust functions: bool (N,), the points that agree with the pose.",
+      TRIPOSE_MASK " | None" },
+    { "line_inliers", &PoseResult::line_inliers, "Robust functions: bool (M,), the lines that agree with the pose.",
+      TRIPOSE_MASK " | None" },
     { "rms", &PoseResult::rms,
       "RMS reprojection error (px): over the inliers (robust functions; NaN without a pose), over every "
-      "observation (refiners)." },
+      "observation (refiners).",
+      "float | None" },
     { "covariance", &PoseResult::covariance,
       "(6, 6) covariance of the pose for 1 px image noise, [rotation; translation] (help(tripose)); None "
-      "when not asked for (robust functions: covariance=False), without refinement or not determined." },
+      "when not asked for (robust functions: covariance=False), without refinement or not determined.",
+      TRIPOSE_ARRAY " | None" },
     { "noise_variance", &PoseResult::noise_variance,
-      "Estimate of the image noise variance (px^2) from the residuals; None with the covariance." },
+      "Estimate of the image noise variance (px^2) from the residuals; None with the covariance.",
+      "float | None" },
     { "candidates", &PoseResult::candidates,
       "Robust functions: the minima of the final refinement that the data cannot tell apart, as (R, t), the "
-      "returned pose first; empty without refinement or without a pose." },
-    { "candidate_rms", &PoseResult::candidate_rms, "Robust functions: the RMS (px) over the inliers of each candidate." },
-    { "ambiguous", &PoseResult::ambiguous, "Robust functions: more than one candidate (the pose is a coin toss)." },
-    { "points3d", &PoseResult::points3d, "Refiners: the refined points (N, 3) in the world (view 1's) frame." },
-    { "lines3d", &PoseResult::lines3d, "Refiners: two refined points (M, 6) of each line." },
-    { "Rs", &PoseResult::Rs, "adjust_poses_multiview: every view's rotation (the fixed ones as given)." },
-    { "ts", &PoseResult::ts, "adjust_poses_multiview: every view's translation." },
+      "returned pose first; empty without refinement or without a pose.",
+      "list[tuple[" TRIPOSE_ARRAY ", " TRIPOSE_ARRAY "]] | None" },
+    { "candidate_rms", &PoseResult::candidate_rms, "Robust functions: the RMS (px) over the inliers of each candidate.",
+      "list[float] | None" },
+    { "ambiguous", &PoseResult::ambiguous, "Robust functions: more than one candidate (the pose is a coin toss).",
+      "bool | None" },
+    { "points3d", &PoseResult::points3d, "Refiners: the refined points (N, 3) in the world (view 1's) frame.",
+      TRIPOSE_ARRAY " | None" },
+    { "lines3d", &PoseResult::lines3d, "Refiners: two refined points (M, 6) of each line.",
+      TRIPOSE_ARRAY " | None" },
+    { "Rs", &PoseResult::Rs, "adjust_poses_multiview: every view's rotation (the fixed ones as given).",
+      "list[" TRIPOSE_ARRAY "] | None" },
+    { "ts", &PoseResult::ts, "adjust_poses_multiview: every view's translation.",
+      "list[" TRIPOSE_ARRAY "] | None" },
 };
 
 std::string vectorText(const Eigen::Vector3d& v)
@@ -118,7 +138,11 @@ void bindPoseResult(nb::module_& m)
     for (const Field& field : kFields)
     {
         nb::object PoseResult::*member = field.member;
-        cls.def_prop_ro(field.name, [member](const PoseResult& r) { return r.*member; }, field.doc);
+        // The signature's text lives as long as the module.
+        static std::deque<std::string> signatures;
+        signatures.push_back(std::string("def ") + field.name + "(self, /) -> " + field.type);
+        cls.def_prop_ro(field.name, [member](const PoseResult& r) { return r.*member; },
+                        nb::for_getter(nb::sig(signatures.back().c_str())), nb::for_getter(field.doc));
     }
     cls.def("__getitem__",
             [](const PoseResult& r, const std::string& key) {
