@@ -11,12 +11,11 @@
 namespace tripose_samples {
 
 /** Scale (px) of the Cauchy loss of the final refinement on image features. Detected features are
-not Gaussian: on the VGG sequences the point tracks that fit the sequence's cameras to 0.15-0.2 px
-(median) sit beside a tail of 1-2 px (large SIFT key points, whose position moves with the
-viewpoint, and features far from the centre), which least squares over the RANSAC inliers (2 px)
-follows: the estimate then lies 10-14 standard deviations of its own covariance from the camera
-(doc/studies/real_images.md, "Where the error came from"). A Cauchy loss a few times the core's spread keeps
-the tail from pulling; 0.3-1 px give the same picture there. */
+not Gaussian: a tight core sits beside a tail a few times wider (large SIFT key points, whose
+position moves with the viewpoint, and features far from the centre), which least squares over the
+RANSAC inliers follows, so the estimate lies many of its own standard deviations from the camera; a
+Cauchy loss a few times the core's spread keeps the tail from pulling (doc/studies/real_images.md,
+"Where the error came from"). */
 const double kImageLossScale = 0.5;
 
 //! RANSAC with refinement, the refinement under the Cauchy loss of kImageLossScale.

@@ -22,8 +22,8 @@ namespace {
 /** OpenCV's SIFT finds its finest key points in the image doubled by bilinear resize, whose pixel
 centres sit at (x + 0.5) / 2 - 0.5 of the original, and halves their coordinates: every position
 comes out 0.25 px right of and below the feature (enable_precise_upscale, OpenCV 4.8 on, avoids it
-but is off by default and absent from Debian's 4.6). Key points found in an image and in its mirror
-image show it: +0.25 px on both axes on Model House and Merton College I (doc/studies/real_images.md). */
+but is off by default and absent from Debian's 4.6); key points found in an image and in its mirror
+image show the offset (doc/studies/real_images.md). */
 const double kSiftUpsamplingOffset = 0.25;
 
 //! Segments (x0, y0, x1, y1) as contrib's key lines of one octave, the image's own, for LBD.

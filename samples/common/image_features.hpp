@@ -36,8 +36,8 @@ using ImageFeatures = cv::tripose::ImageFeatures;
 //! Milliseconds spent per stage (summed over the images of a run).
 struct StageTimes
 {
-    //! SIFT detects and describes in one pass over one scale space: apart, the two passes cost about
-    //! 30 % more, so points have one figure.
+    //! SIFT detects and describes in one pass over one scale space, cheaper than two passes, so
+    //! points have one figure.
     double points = 0;
     double segmentDetection = 0, segmentDescription = 0; //!< EDLines and the fit to the edges, LBD.
     double matching = 0, estimation = 0;
@@ -57,8 +57,9 @@ struct FeatureOptions
     double minSegmentLength = 20;    //!< Shorter segments are dropped (px of the detection image): they are too short to give a direction.
     /** Images whose longer side exceeds this (px) are detected in a copy reduced to it (area
     averaging), and the features' positions mapped back to the image's pixels; 0: always the full
-    image. SIFT's scale space of a 12-megapixel image takes gigabytes and tens of seconds. Pixel
-    tolerances downstream scale with detectionScale(). */
+    image. SIFT's scale space grows with the image, and that of a camera's full-size photograph takes
+    gigabytes and tens of seconds (doc/studies/real_images.md). Pixel tolerances downstream scale
+    with detectionScale(). */
     int maxImageSize = 1600;
 };
 

@@ -22,9 +22,9 @@ on its right as drawn (x right, y down), so that a segment and its match in anot
 described (LBD) in the same direction. A segment with fewer than five peaks keeps its position and
 only gets the orientation; one of zero length is dropped.
 
-Why: edge chaining detectors (EDLines) fit their lines to whole pixels, so a segment within a
-fraction of a degree of an image axis comes out up to 0.5 px off its edge; after the fit, edges
-rendered at known sub-pixel positions are found within 0.01 px at every slope (doc/studies/real_images.md).
+Why: edge chaining detectors (EDLines) fit their lines to whole pixels, so a segment nearly along
+an image axis comes out up to half a pixel off its edge; the fit places it on the edge's sub-pixel
+position at every slope (doc/studies/real_images.md).
 */
 std::vector<cv::Vec4f> fitSegmentsToEdges(const cv::Mat& image, const std::vector<cv::Vec4f>& segments);
 
