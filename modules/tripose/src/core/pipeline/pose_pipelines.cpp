@@ -96,7 +96,7 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
 {
     // Mixed minimal samples include three-line samples of the whole set, scored on all of it: they
     // find the basin of a line-dominated set as three-point samples do for points (doc/studies/speed.md,
-    // "Mixed samples of points and lines"), and the starts would cost a hundred times the rest.
+    // "Mixed samples of points and lines"), and the starts would cost far more than the rest.
     // The structure's own regimes (narrow pair, planar) still call for them, except where the
     // scorer lets the known structure slide in depth (the stereo rig): its minimal samples then
     // find the basin too, and the starts would take nearly all of the time without changing the

@@ -21,10 +21,10 @@ sigma^2 times this form the 95 % likelihood-ratio confidence region of the 6-par
 minimum inside it is a pose the data do not reject. */
 constexpr double kChiSquare6Quantile95 = 12.5916;
 
-/** The tolerance of sameMinimum() for minima refined with the default iterations (30): one minimum
-reached from several starts ends at most 4e-5 apart in the narrow scenes of test_narrow_minima.cpp
-once refined to convergence (300 iterations), but in their flat valleys 30 iterations leave two
-refinements of it further apart than a tighter tolerance would merge. */
+/** The tolerance of sameMinimum() for minima refined with the default iterations: refined to
+convergence, one minimum reached from several starts ends far closer than this (the narrow scenes
+of test_narrow_minima.cpp), but in flat valleys the default iterations leave two refinements of it
+further apart than a tighter tolerance would merge. */
 constexpr double kSameMinimum = 1e-3;
 
 //! True when @p a and @p b are one local minimum reached twice: rotation (Frobenius norm of the
