@@ -10,20 +10,22 @@ disagreement is the detector's offset along that axis.
 
 Prints, per image and axis, the offset of OpenCV's SIFT key points and of EDLines segments (contrib
 ximgproc, across their direction) as detected and as the image front end places them (the SIFT
-offset corrected, the segments fitted to their edges: samples/python/pose_from_images.py, as
-samples/common/image_features.cpp). First, the same for the segments on straight edges rendered at
+offset corrected, the segments fitted to their edges: tripose.images.extract_features, as
+samples/common/image_features.cpp; it needs the tripose package). First, the same for the segments on straight edges rendered at
 known sub-pixel positions, which needs no mirror.
 """
 
 import functools
 import sys
-from pathlib import Path
 
 import cv2
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "samples" / "python"))
-import pose_from_images  # noqa: E402
+
+def front_end(image, kinds):
+    """The features of the image front end (tripose.images), positions in the image's pixels."""
+    import tripose.images
+    return tripose.images.extract_features(image, np.eye(3), None, tripose.images.FeatureOptions(kinds=kinds))
 
 
 def pairs_by_position(a, b, radius=1.5):
@@ -42,8 +44,8 @@ def pairs_by_position(a, b, radius=1.5):
 
 def sift_offset(image, mirrored, axis, corrected):
     if corrected:
-        a = pose_from_images.extract(image, None, None, "points")["points"]
-        b = pose_from_images.extract(mirrored, None, None, "points")["points"]
+        a = front_end(image, "points")["points"]
+        b = front_end(mirrored, "points")["points"]
     else:
         sift = cv2.SIFT_create()
         a = np.array([k.pt for k in sift.detect(image, None)])
@@ -58,7 +60,7 @@ def detected_segments(image, corrected, min_length=30):
     """Segments (N x 4) longer than min_length, from contrib's EDLines as detected or as the front end
     places them."""
     if corrected:
-        ends = pose_from_images.extract(image, None, None, "lines")["segments"]
+        ends = front_end(image, "lines")["segments"]
     else:
         edge_drawing = cv2.ximgproc.createEdgeDrawing()
         edge_drawing.detectEdges(image)

@@ -1,17 +1,21 @@
 """Tests of the Python sample samples/python/pose_from_images.py on the bundled Merton College I
 images: its matching (the problem it writes, solved by the C++ tripose_estimate) and its rejection of
-bad input. Its estimate through the installed package is tested with the package
-(python/tests/test_sample_images.py)."""
+bad input; and of the front end it runs, tripose.images, beside the C++ one. Its estimate is tested
+in test_sample_images.py. The sample is a program over the package, so these run with it installed."""
 import subprocess
 import sys
+from pathlib import Path
 
 import cv2
 import numpy as np
 import pytest
 
-from tripose_tools import (MERTON, MERTON_CALIB, REPO, build_tool, merton_greys_in_bits, offsets_to_nearest,
-                           read_matrices, rotation_error, write_inverted_pose_calibration, write_nan_tiff, write_problem,
-                           write_turned_jpeg)
+import tripose.images
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "test" / "python"))
+from tripose_tools import (MERTON, MERTON_CALIB, REPO, build_tool, merton_greys_in_bits,  # noqa: E402
+                           offsets_to_nearest, read_matrices, rotation_error, write_inverted_pose_calibration,
+                           write_nan_tiff, write_problem, write_turned_jpeg)
 
 SCRIPT = REPO / "samples" / "python" / "pose_from_images.py"
 CALIB = MERTON_CALIB
@@ -203,68 +207,10 @@ def test_segments_placed_as_the_cpp_front_end_places_them(matched_problem, tmp_p
     assert np.percentile(offsets, 90) < 0.01, np.percentile(offsets, 90)
 
 
-def sample_module():
-    sys.path.insert(0, str(SCRIPT.parent))
-    import pose_from_images
-    return pose_from_images
-
-
-def point_shift(moved, reference):
-    """Median offset (x, y) of each point of @p moved from the nearest of @p reference, over the pairs
-    within 1 px, and the share of @p moved in such pairs."""
-    offsets = offsets_to_nearest(moved, reference)
-    near = np.hypot(*offsets.T) < 1
-    return np.median(offsets[near], axis=0), near.mean()
-
-
-def segment_shift(moved, reference):
-    """The common shift (x, y) that best explains how far each segment of @p moved lies across the
-    segment of @p reference with the nearest mid-point (the same direction within 2.5 deg, within
-    1 px): least squares over the normals."""
-    def mid_and_direction(s):
-        d = s[:, 2:] - s[:, :2]
-        return (s[:, :2] + s[:, 2:]) / 2, d / np.hypot(*d.T)[:, None]
-    mid_m, dir_m = mid_and_direction(moved)
-    mid_r, dir_r = mid_and_direction(reference)
-    normals, across = [], []
-    for m in cv2.BFMatcher(cv2.NORM_L2).match(mid_m.astype(np.float32), mid_r.astype(np.float32)):
-        i, j = m.queryIdx, m.trainIdx
-        normal = np.array([-dir_r[j, 1], dir_r[j, 0]])
-        offset = normal @ (mid_m[i] - mid_r[j])
-        if abs(dir_m[i] @ dir_r[j]) > np.cos(np.radians(2.5)) and abs(offset) < 1:
-            normals.append(normal)
-            across.append(offset)
-    return np.linalg.lstsq(np.array(normals), np.array(across), rcond=None)[0], len(across)
-
-
-def test_large_image_is_detected_reduced_and_placed_in_its_pixels():
-    # An image larger than --max-image-size is detected in a reduced copy; the positions must come back
-    # in the image's own pixels. The image enlarged four times (the original's pixel centre x at
-    # 4 x + 1.5) and reduced back to the original's size must give the original's features.
-    sample = sample_module()
-    image = cv2.imread(str(IMAGES[1]), cv2.IMREAD_GRAYSCALE)
-    enlarged = cv2.resize(image, None, fx=4, fy=4, interpolation=cv2.INTER_CUBIC)
-    assert sample.detection_scale(enlarged.shape, 1024) == 4.0
-    assert sample.detection_scale(image.shape, 1024) == 1.0 and sample.detection_scale(enlarged.shape, 0) == 1.0
-    K = np.eye(3)
-    original = sample.extract(image, K, None, "all", max_size=1024)
-    reduced = sample.extract(enlarged, K, None, "all", max_size=1024)
-    back = {kind: (reduced[kind] - 1.5) / 4 for kind in ("points", "segments")}
-    shift, paired = point_shift(back["points"], original["points"])
-    # Measured: 0.001 px (points, 83 % paired) and 0.008 px (segments); pixel centres mapped as
-    # corners (x = 4 x') would put both 0.37 px off.
-    assert paired > 0.7 and np.all(np.abs(shift) < 0.05), (shift, paired)
-    shift, pairs = segment_shift(back["segments"], original["segments"])
-    assert pairs > 0.5 * len(original["segments"]) and np.all(np.abs(shift) < 0.05), (shift, pairs)
-    # The SIFT key point sizes are in the image's pixels too.
-    assert abs(np.median(reduced["point_size"]) / np.median(original["point_size"]) - 4) < 0.4
-
-
 def test_reduction_maps_each_axis_by_its_own_factor():
     # 3001 x 2001 reduced to 1600 px is 1600 x 1067: the axes' factors differ by rounding (1.87563 and
     # 1.87535), which at the bottom of the image is 0.3 px. Dark Gaussian blobs rendered at known
     # sub-pixel centres must come back there.
-    sample = sample_module()
     width, height, sigma = 3001, 2001, 6.0
     rng = np.random.default_rng(1)
     xs, ys = np.meshgrid(np.arange(40, width - 40, 60.0), np.arange(40, height - 40, 60.0))
@@ -277,9 +223,11 @@ def test_reduction_maps_each_axis_by_its_own_factor():
         image[y0 - r:y0 + r + 1, x0 - r:x0 + r + 1] -= 150 * np.exp(
             -((gx[None, :] - x) ** 2 + (gy[:, None] - y) ** 2) / (2 * sigma ** 2))
     image = np.clip(np.round(image), 0, 255).astype(np.uint8)
-    _, factor = sample.detection_image(image, 1600)
+    scale = tripose.images.detection_scale(image.shape, 1600)
+    factor = np.array([width / round(width / scale), height / round(height / scale)])
     assert abs(factor[0] - factor[1]) > 2e-4
-    found = sample.extract(image, np.eye(3), None, "points", max_size=1600)["points"]
+    options = tripose.images.FeatureOptions(kinds="points", max_image_size=1600)
+    found = tripose.images.extract_features(image, np.eye(3), None, options)["points"]
     offsets = -offsets_to_nearest(centres, found)  # the point found nearest each centre, from it
     near = np.hypot(*offsets.T) < 2
     bottom = near & (centres[:, 1] > 1800)
