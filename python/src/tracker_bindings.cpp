@@ -179,6 +179,9 @@ void bindTracker(nb::module_& m)
                 "Register with the robust estimator (else the linear one on every feature).")
         .def_rw("ransac", &tripose::TrackerOptions::ransac, "RansacOptions of the registration.")
         .def_rw("matching", &tripose::TrackerOptions::matching, "MatchOptions of consecutive frames.")
+        .def_rw("covariance", &tripose::TrackerOptions::covariance,
+                "Also the covariance of each registered frame's pose (FrameResult.covariance); it costs one "
+                "more refinement per frame.")
         .def_rw("max_frame_gap", &tripose::TrackerOptions::maxFrameGap,
                 "How many frames back a frame is matched when the nearer ones share too few matches with it.")
         .def("__repr__", [](const tripose::TrackerOptions& o) {
@@ -216,6 +219,17 @@ void bindTracker(nb::module_& m)
         .def_ro("keyframe", &tripose::FrameResult::keyframe, "Later frames are registered against it.")
         .def_ro("milliseconds", &tripose::FrameResult::milliseconds, "Time of matching and registration.")
         .def_ro("reason", &tripose::FrameResult::reason, "Why the frame is lost; empty otherwise.")
+        .def_prop_ro("covariance", [](const tripose::FrameResult& r) -> nb::object {
+            if (!r.hasCovariance)
+                return nb::none();
+            const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rowMajor = r.covariance;
+            return array(rowMajor.data(), { 6, 6 });
+        }, "With TrackerOptions.covariance, for a registered frame whose pose is determined: the (6, 6) "
+           "covariance of its pose for 1 px noise, [rotation; translation], the window's poses held; "
+           "multiply by noise_variance. None otherwise.")
+        .def_prop_ro("noise_variance", [](const tripose::FrameResult& r) -> nb::object {
+            return r.hasCovariance ? nb::cast(r.noiseVariance) : nb::none();
+        }, "The noise variance (px^2) estimated from the inliers' residuals, with covariance; None otherwise.")
         .def_prop_ro("point_tracks", [](const tripose::FrameResult& r) { return intArray(r.pointTracks); },
                      "Per point of the frame, its track (-1: none).")
         .def_prop_ro("line_tracks", [](const tripose::FrameResult& r) { return intArray(r.lineTracks); },

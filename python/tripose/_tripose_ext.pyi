@@ -257,6 +257,15 @@ class TrackerOptions:
     def matching(self, arg: MatchOptions, /) -> None: ...
 
     @property
+    def covariance(self) -> bool:
+        """
+        Also the covariance of each registered frame's pose (FrameResult.covariance); it costs one more refinement per frame.
+        """
+
+    @covariance.setter
+    def covariance(self, arg: bool, /) -> None: ...
+
+    @property
     def max_frame_gap(self) -> int:
         """
         How many frames back a frame is matched when the nearer ones share too few matches with it.
@@ -325,6 +334,18 @@ class FrameResult:
     @property
     def reason(self) -> str:
         """Why the frame is lost; empty otherwise."""
+
+    @property
+    def covariance(self) -> object:
+        """
+        With TrackerOptions.covariance, for a registered frame whose pose is determined: the (6, 6) covariance of its pose for 1 px noise, [rotation; translation], the window's poses held; multiply by noise_variance. None otherwise.
+        """
+
+    @property
+    def noise_variance(self) -> object:
+        """
+        The noise variance (px^2) estimated from the inliers' residuals, with covariance; None otherwise.
+        """
 
     @property
     def point_tracks(self) -> object:

@@ -26,6 +26,7 @@ TrackerParams::TrackerParams()
     localAdjustment = defaults.localAdjustment;
     robust = defaults.robust;
     maxFrameGap = defaults.maxFrameGap;
+    covariance = defaults.covariance;
 }
 
 Tracker::~Tracker() {}

@@ -24,6 +24,7 @@ namespace detail {
     o.ransac = toCoreOptions(params.ransac);
     o.matching = toCoreOptions(params.matching);
     o.maxFrameGap = params.maxFrameGap;
+    o.covariance = params.covariance;
     ::tripose::checkTrackerOptions(o, "params");
     return o;
 }
@@ -79,6 +80,13 @@ TrackedFrame toTrackedFrame(const ::tripose::FrameResult& r)
     out.reason = r.reason;
     out.pointTracks = r.pointTracks;
     out.lineTracks = r.lineTracks;
+    if (r.hasCovariance)
+    {
+        out.covariance.create(6, 6, CV_64F);
+        for (int i = 0; i < 36; ++i)
+            out.covariance.at<double>(i / 6, i % 6) = r.covariance(i / 6, i % 6);
+        out.noiseVariance = r.noiseVariance;
+    }
     return out;
 }
 

@@ -42,6 +42,9 @@ struct CV_EXPORTS TrackerParams
     //! A frame that shares too few matches with the one before for their epipolar geometry is matched
     //! to the nearest of the frames up to this many back that does (default 3).
     int maxFrameGap;
+    //! Also the covariance of each registered frame's pose, TrackedFrame::covariance (default false;
+    //! it costs one more refinement per frame).
+    bool covariance;
 };
 
 //! What Tracker made of a frame.
@@ -65,6 +68,12 @@ struct CV_EXPORTS TrackedFrame
     double milliseconds = 0;     //!< Time of matching and registration.
     std::string reason;          //!< Why the frame is lost; empty otherwise.
     std::vector<int> pointTracks, lineTracks; //!< Per point and segment of the frame: its track, -1 for none.
+    /** With TrackerParams::covariance, for a registered frame whose pose is determined: 6x6 CV_64F, the
+    covariance of the pose for 1 px image noise, order [rotation; translation], the structure
+    marginalised and the window's poses held (as estimatePoseLinePointRansac()'s); multiply it by
+    noiseVariance (px^2, estimated from the inliers' residuals). Empty otherwise. */
+    Mat covariance;
+    double noiseVariance = 0;
 };
 
 /** @brief A monocular camera tracked frame by frame from points and line segments.

@@ -296,6 +296,9 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds)
         result.reason = r.reason;
         if (r.registered)
         {
+            result.hasCovariance = r.covariance.valid;
+            result.covariance = r.covariance.covariance;
+            result.noiseVariance = r.covariance.noiseVariance;
             f.status = FrameStatus::Registered;
             f.pose = r.pose;
             f.keyframe = r.keyframe;

@@ -6,6 +6,8 @@
 #define TRIPOSE_CORE_TRACKING_TRACKER_OPTIONS_HPP
 
 #include <string>
+
+#include <Eigen/Core>
 #include <vector>
 
 #include "../geometry/camera.hpp"
@@ -39,6 +41,9 @@ struct TrackerOptions
     //! A frame that shares too few matches with the one before for their epipolar geometry is matched
     //! to the nearest of the frames up to this many back that does.
     int maxFrameGap = 3;
+    //! Also the covariance of each registered frame's pose (one more refinement over its inliers,
+    //! with the window's poses held): FrameResult::covariance.
+    bool covariance = false;
 };
 
 //! Checks @p options: Error(BadArgument) naming "<name>.<field>" for the first field out of range.
@@ -67,6 +72,13 @@ struct FrameResult
     std::string reason;     //!< Why the frame is lost; empty otherwise.
     //! Per point and per segment of the frame, in the order given: its track (-1: matched to none).
     std::vector<int> pointTracks, lineTracks;
+    /** With TrackerOptions::covariance, for a registered frame whose pose is determined: the 6x6
+    covariance of its pose for 1 px image noise, order [rotation; translation], the structure
+    marginalised and the window's poses held (doc/conventions.md); multiply it by noiseVariance, the
+    noise variance (px^2) estimated from the inliers' residuals. */
+    bool hasCovariance = false;
+    Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();
+    double noiseVariance = 0;
 };
 
 } // namespace tripose

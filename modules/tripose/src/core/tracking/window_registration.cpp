@@ -296,6 +296,10 @@ Registration registerAgainstWindow(const TrackStore& store, int frame, const std
         return out;
     }
     out.registered = true;
+    if (options.covariance && options.robust)
+        out.covariance = covarianceOfEstimate(set, out.pose, options.ransac.refineOptions, &pointInliers, &lineInliers);
+    else if (options.covariance)
+        out.covariance = covarianceOfEstimate(set, out.pose, options.ransac.refineOptions);
     // Judged on the registration's own poses, which a local adjustment moves by a small fraction of
     // any parallax that matters here.
     out.keyframe = !(medianParallaxDeg(problem, window.size(), out.pose, pointInliers, lineInliers) <

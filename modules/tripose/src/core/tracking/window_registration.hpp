@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../refine/ml_refinement.hpp"
 #include "track_store.hpp"
 #include "tracker_options.hpp"
 
@@ -21,6 +22,8 @@ struct Registration
     int features = 0, inliers = 0;
     bool keyframe = false;
     std::string reason; //!< Why it was not registered.
+    //! With TrackerOptions::covariance: the pose's uncertainty (valid false when not determined).
+    PoseCovariance covariance;
     //! Tracks whose observation in the frame the estimate rejected (robust estimation only).
     std::vector<int> rejectedPoints, rejectedLines;
 };
