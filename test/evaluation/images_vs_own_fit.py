@@ -13,8 +13,9 @@ frames: the maximum-likelihood fit of view 3 to the sequence's own correspondenc
 (RANSAC, then refinement from its pose; the same refinement from the sequence's camera must agree),
 its rotation standard deviation (first-order covariance, noise from the residuals), the sequence's
 camera in standard deviations of that fit (Mahalanobis, rotation), and the rotation errors of
-tripose on the front end's matches (points and lines, points only; the refinement under the
-samples' Cauchy loss) against the camera and against the fit.
+tripose on the front end's matches (points and lines, points only; estimate_pose_line_point_ransac
+refining under the samples' Cauchy loss, as samples/python/pose_from_images.py) against the camera
+and against the fit.
 """
 
 import argparse
@@ -27,13 +28,28 @@ import tripose
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "samples" / "python"))
-import pose_from_images  # noqa: E402
 import vgg  # noqa: E402
 from images_vs_poselib import front_end_triplets  # noqa: E402
+
+# The refinement's Cauchy loss scale (px) for detected features, as the samples
+# (samples/common/image_estimation.hpp, samples/python/pose_from_images.py).
+IMAGE_LOSS_SCALE = 0.5
 
 
 def rotation_deg(Ra, Rb):
     return float(np.degrees(np.linalg.norm(cv2.Rodrigues(np.asarray(Ra) @ np.asarray(Rb).T)[0])))
+
+
+def front_end_rotation(points, lines, K, R12, t12, threshold, seed):
+    """View 3's rotation by tripose on the front end's matches as the image samples estimate it:
+    RANSAC, then the refinement over its inliers under the Cauchy loss; no floor on the inliers."""
+    options = tripose.RansacOptions()
+    options.threshold = threshold
+    options.seed = seed
+    options.min_inliers = 0
+    options.refine_options.loss = "cauchy"
+    options.refine_options.loss_scale = IMAGE_LOSS_SCALE
+    return tripose.estimate_pose_line_point_ransac(*points, *lines, K, R12, t12, options=options).R
 
 
 def main():
@@ -50,24 +66,29 @@ def main():
     rows = []
     for tr in triplets:
         own = vgg.load_triplet(a.data, tuple(tr["views"]))
+        ransac = tripose.RansacOptions()
+        ransac.threshold = a.threshold
+        ransac.seed = 0
         robust = tripose.estimate_pose_line_point_ransac(*own.points, *own.lines, own.K, own.R12, own.t12,
-                                                         threshold=a.threshold, seed=0)
-        fit = tripose.refine_pose_line_point(*own.points, *own.lines, own.K, own.R12, own.t12, robust["R"],
-                                             robust["t"], max_iterations=300)
+                                                         options=ransac)
+        refine = tripose.RefineOptions()
+        refine.max_iterations = 300
+        fit = tripose.refine_pose_line_point(*own.points, *own.lines, own.K, own.R12, own.t12, robust.R, robust.t,
+                                             options=refine)
         seeded = tripose.refine_pose_line_point(*own.points, *own.lines, own.K, own.R12, own.t12, own.R, own.t,
-                                                max_iterations=300)
-        if rotation_deg(fit["R"], seeded["R"]) > 1e-3:
+                                                options=refine)
+        if rotation_deg(fit.R, seeded.R) > 1e-3:
             print(f"{tr['views']}: the fit from the RANSAC and from the camera differ", file=sys.stderr)
-        C = np.asarray(fit["covariance"])[:3, :3] * fit["noise_variance"]
-        d = cv2.Rodrigues(own.R @ np.asarray(fit["R"]).T)[0].ravel()
+        C = np.asarray(fit.covariance)[:3, :3] * fit.noise_variance
+        d = cv2.Rodrigues(own.R @ np.asarray(fit.R).T)[0].ravel()
         K = [np.array(k) for k in tr["K"]]
         R12, t12 = np.array(tr["R12"]), np.array(tr["t12"]).ravel()
         points = [np.array(tr[f"points{v}"]).reshape(-1, 2) for v in (1, 2, 3)]
         lines = [np.array(tr[f"lines{v}"]).reshape(-1, 4) for v in (1, 2, 3)]
-        both = pose_from_images.estimate_pose(points, lines, K, R12, t12, a.threshold, 0)["R"]
-        alone = pose_from_images.estimate_pose(points, [l[:0] for l in lines], K, R12, t12, a.threshold, 0)["R"]
-        row = [rotation_deg(fit["R"], own.R), float(np.degrees(np.sqrt(np.trace(C)))), float(np.sqrt(d @ np.linalg.solve(C, d))),
-               rotation_deg(both, own.R), rotation_deg(alone, own.R), rotation_deg(both, fit["R"]), rotation_deg(alone, fit["R"])]
+        both = front_end_rotation(points, lines, K, R12, t12, a.threshold, 0)
+        alone = front_end_rotation(points, [l[:0] for l in lines], K, R12, t12, a.threshold, 0)
+        row = [rotation_deg(fit.R, own.R), float(np.degrees(np.sqrt(np.trace(C)))), float(np.sqrt(d @ np.linalg.solve(C, d))),
+               rotation_deg(both, own.R), rotation_deg(alone, own.R), rotation_deg(both, fit.R), rotation_deg(alone, fit.R)]
         rows.append(row)
         views = "-".join(map(str, tr["views"]))
         print(f"| {views} | {len(own.points[0])} + {len(own.lines[0])} | " + " | ".join(f"{v:.3f}" for v in row) + " |")
