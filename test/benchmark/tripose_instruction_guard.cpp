@@ -11,10 +11,12 @@
 // frames are made outside it, and the counter is told to count that function only
 // (valgrind --tool=callgrind --collect-atstart=no --toggle-collect=tripose_guard_measured).
 //
-//   tripose_instruction_guard <path> [--repeats N]
+//   tripose_instruction_guard <path> [--repeats N] [--seed-offset S]
 //   paths: linear, ransac_point_rich, ransac_line_heavy, rig, multiview, tracked_frame
 //
 // Prints the path, the calls made and a checksum of the poses found (the same on every run).
+// --seed-offset shifts the estimators' sampling seeds: how far the count moves then is how far a change
+// that only alters rounding (and so the samples' fate) can move it.
 
 #include <cmath>
 #include <cstdio>
@@ -51,6 +53,9 @@ using namespace cv::tripose::support;
 
 //! Sum of the entries of the poses found: printed so that a path that stops finding poses shows.
 double checksum = 0;
+
+//! Added to every sampling seed (--seed-offset).
+int seedOffset = 0;
 
 void accumulate(const cv::Mat& R, const cv::Mat& t)
 {
@@ -94,12 +99,12 @@ int runLinear(int repeats)
 //! estimatePoseLinePointRansac() as tripose_ransac_benchmark runs it (1 px noise, threshold 2 px).
 int runRansac(int repeats, int points, int lines, double outliers)
 {
-    const std::vector<SyntheticScene> scenes = threeViewScenes(4, points, lines, outliers, 2000);
+    const std::vector<SyntheticScene> scenes = threeViewScenes(8, points, lines, outliers, 2000);
     for (int r = 0; r < repeats; ++r)
     {
         const SyntheticScene& s = scenes[r % scenes.size()];
         cv::tripose::RansacParams params;
-        params.seed = r;
+        params.seed = seedOffset + r;
         cv::Mat R, t;
         tripose_guard_measured([&] {
             cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
@@ -130,7 +135,7 @@ int runRig(int repeats)
     {
         const SyntheticStereoScene& s = scenes[r % scenes.size()];
         cv::tripose::RansacParams params;
-        params.seed = r;
+        params.seed = seedOffset + r;
         cv::Mat R, t;
         tripose_guard_measured([&] {
             cv::tripose::estimatePoseLinePointStereoRansac(s.points1, s.points2, s.points3, s.points4, s.lines1,
@@ -160,7 +165,7 @@ int runMultiView(int repeats)
     {
         const SyntheticMultiViewScene& s = scenes[r % scenes.size()];
         cv::tripose::RansacParams params;
-        params.seed = r;
+        params.seed = seedOffset + r;
         cv::Mat R, t;
         tripose_guard_measured([&] {
             cv::tripose::estimatePoseMultiViewRansac(s.points, s.lines, s.K, cv::noArray(), s.Rs, s.ts, R, t, params);
@@ -268,7 +273,7 @@ int runTrackedFrame(int repeats)
     {
         const Sequence& s = sequences[r % sequences.size()];
         cv::tripose::TrackerParams params;
-        params.ransac.seed = r;
+        params.ransac.seed = seedOffset + r;
         cv::Ptr<cv::tripose::Tracker> tracker = cv::tripose::Tracker::create(s.K, cv::noArray(), params);
         tracker->addFeatures(s.frames[0], cv::Mat(s.Rs[0]), cv::Mat(s.ts[0]));
         tracker->addFeatures(s.frames[1], cv::Mat(s.Rs[1]), cv::Mat(s.ts[1]));
@@ -299,8 +304,8 @@ int main(int argc, char** argv)
 {
     const std::vector<HotPath> paths = {
         { "linear", 400, runLinear },
-        { "ransac_point_rich", 40, [](int n) { return runRansac(n, 100, 40, 0.5); } },
-        { "ransac_line_heavy", 40, [](int n) { return runRansac(n, 10, 60, 0.3); } },
+        { "ransac_point_rich", 160, [](int n) { return runRansac(n, 100, 40, 0.5); } },
+        { "ransac_line_heavy", 160, [](int n) { return runRansac(n, 10, 60, 0.3); } },
         { "rig", 40, runRig },
         { "multiview", 20, runMultiView },
 #if TRIPOSE_GUARD_HAS_TRACKER
@@ -313,17 +318,23 @@ int main(int argc, char** argv)
             if (argv[1] == std::string(p.name))
                 path = &p;
     int repeats = path ? path->defaultRepeats : 0;
-    if (argc == 4 && std::string(argv[2]) == "--repeats")
-        repeats = std::atoi(argv[3]);
-    if (!path || (argc != 2 && argc != 4) || repeats < 1)
+    bool argumentsOk = path && argc % 2 == 0;
+    for (int i = 2; argumentsOk && i + 1 < argc; i += 2)
     {
-        std::fprintf(stderr, "usage: tripose_instruction_guard <path> [--repeats N >= 1]; paths:");
+        const std::string arg = argv[i];
+        if (arg == "--repeats") repeats = std::atoi(argv[i + 1]);
+        else if (arg == "--seed-offset") seedOffset = std::atoi(argv[i + 1]);
+        else argumentsOk = false;
+    }
+    if (!argumentsOk || repeats < 1)
+    {
+        std::fprintf(stderr, "usage: tripose_instruction_guard <path> [--repeats N >= 1] [--seed-offset S]; paths:");
         for (const HotPath& p : paths)
             std::fprintf(stderr, " %s", p.name);
         std::fprintf(stderr, "\n");
         return 2;
     }
-    // One thread, so that the instructions counted are the same on every run.
+    // One thread (Eigen starts none: the build has no OpenMP), so that every run counts the same instructions.
     cv::setNumThreads(0);
     const int calls = path->run(repeats);
     std::printf("%s: %d calls, checksum %.6f\n", path->name, calls, checksum);
