@@ -149,6 +149,7 @@ struct StereoTracker::Attempt
 {
     bool registered = false;
     CameraPose relative; //!< Of the frame's left camera in the frame of the keyframe's.
+    PoseCovariance covariance; //!< Of relative, with TrackerOptions::covariance.
     int features = 0, inliers = 0;
     double parallaxDeg = 0;
     //! Of the frame's stereo matches, the fraction that the keyframe's stereo pair also sees.
@@ -390,8 +391,11 @@ StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) c
     std::vector<unsigned char> inliers[2];
     if (options_.robust)
     {
+        // The tracker's floor is the one that decides: the estimate's own is set to it.
+        RansacOptions ransac = options_.ransac;
+        ransac.minInliers = options_.minInliers;
         RobustEstimate estimate;
-        if (estimateRobustRig(set, options_.ransac, estimate))
+        if (estimateRobustRig(set, ransac, estimate))
         {
             out.relative = estimate.pose;
             out.inliers = estimate.numInliers;
@@ -417,6 +421,10 @@ StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) c
         return out;
     }
     out.registered = true;
+    if (options_.covariance)
+        out.covariance = covarianceOfEstimate(set, out.relative, options_.ransac.refineOptions,
+                                              options_.robust ? &inliers[0] : nullptr,
+                                              options_.robust ? &inliers[1] : nullptr);
     if (options_.checkTracks && options_.robust)
         for (int kind = 0; kind < 2; ++kind)
             for (size_t i = 0; i < inliers[kind].size(); ++i)
@@ -508,6 +516,20 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
             }
             else
             {
+                if (chosen.covariance.valid)
+                {
+                    // The world pose is the relative one composed with the keyframe's (held): a
+                    // rotation error d of the relative pose moves the world translation by
+                    // d x (R_rel t_keyframe).
+                    Eigen::Matrix<double, 6, 6> J = Eigen::Matrix<double, 6, 6>::Identity();
+                    const Eigen::Vector3d lever = chosen.relative.R * a.t;
+                    Eigen::Matrix3d cross;
+                    cross << 0, -lever[2], lever[1], lever[2], 0, -lever[0], -lever[1], lever[0], 0;
+                    J.block<3, 3>(3, 0) = -cross;
+                    result.hasCovariance = true;
+                    result.covariance = J * chosen.covariance.covariance * J.transpose();
+                    result.noiseVariance = chosen.covariance.noiseVariance;
+                }
                 f.status = FrameStatus::Registered;
                 f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap;
                 for (int kind = 0; kind < 2; ++kind)
