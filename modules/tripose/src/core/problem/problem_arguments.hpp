@@ -24,6 +24,17 @@ struct ArgumentMatrix
     int size() const { return rows * cols; }
 };
 
+//! A @p rows x @p cols argument named @p name holding @p values (row-major).
+inline ArgumentMatrix matrixArgument(const std::string& name, int rows, int cols, const double* values)
+{
+    ArgumentMatrix m;
+    m.name = name;
+    m.rows = rows;
+    m.cols = cols;
+    m.values.assign(values, values + rows * cols);
+    return m;
+}
+
 /** The observations of one view: points (Nx2 pixels) and lines (Mx4 segments x0 y0 x1 y1 or Mx3
 homogeneous lines a b c); an empty matrix is none of that kind. The adapter has checked the widths.
 */

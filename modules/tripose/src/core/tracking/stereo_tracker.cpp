@@ -60,16 +60,6 @@ bool readDistortion(const std::vector<double>& coefficients, const char* name, D
     return distorted;
 }
 
-ArgumentMatrix matrixArgument(const std::string& name, int rows, int cols, const double* values)
-{
-    ArgumentMatrix m;
-    m.name = name;
-    m.rows = rows;
-    m.cols = cols;
-    m.values.assign(values, values + rows * cols);
-    return m;
-}
-
 ArgumentMatrix rotationArgument(const std::string& name, const Eigen::Matrix3d& R)
 {
     const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMajor = R;

@@ -28,16 +28,6 @@ int width(FeatureKind kind)
     return kind == FeatureKind::Point ? 2 : 4;
 }
 
-ArgumentMatrix matrixArgument(const std::string& name, int rows, int cols, const double* values)
-{
-    ArgumentMatrix m;
-    m.name = name;
-    m.rows = rows;
-    m.cols = cols;
-    m.values.assign(values, values + rows * cols);
-    return m;
-}
-
 //! The observations of @p tracks in @p frame, a row each (NaN where unseen).
 ArgumentMatrix observations(const TrackStore& store, FeatureKind kind, const std::vector<int>& tracks, int frame,
                             const std::string& name)
