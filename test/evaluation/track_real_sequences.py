@@ -5,7 +5,10 @@ frame's rotation and position error (degrees, % of the path), the largest over t
 time per frame by stage.
 
     python test/evaluation/track_real_sequences.py [--python] [--sequences fountain_p11 temple_ring ...]
-                                                   [-- extra tripose_track options]
+                                                   [--trajectories DIR] [-- extra tripose_track options]
+
+--trajectories keeps each program's TUM output as DIR/<sequence>-<cpp or python>.txt (frames stamped by
+index, in frame 0's camera frame; plot_trajectories.py draws them).
 """
 import argparse
 import re
@@ -21,7 +24,7 @@ import real_sequences as rs  # noqa: E402
 SEQUENCES = ["fountain_p11", "herz_jesus_p8", "temple_ring", "kitti_06_forward"]
 
 
-def run(program, sequence, folder, extra):
+def run(program, sequence, folder, extra, keep=None):
     seq = rs.relative_to_first(getattr(rs, sequence)())
     calib, listing, out = folder / "calib.yml", folder / "frames.txt", folder / "trajectory.txt"
     rs.write_calibration_yaml(calib, seq.K[0], R12=seq.R[1], t12=seq.t[1])
@@ -30,6 +33,9 @@ def run(program, sequence, folder, extra):
                           capture_output=True, text=True)
     if proc.returncode != 0:
         raise SystemExit(f"{' '.join(program)} failed on {sequence}: {proc.stderr}")
+    if keep is not None:
+        keep.parent.mkdir(parents=True, exist_ok=True)
+        keep.write_text(out.read_text())
     stamps, Rs, ts = rs.read_tum(out)
     path = rs.path_length(seq.R, seq.t)
     frames = [int(round(s)) for s in stamps]
@@ -46,6 +52,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--python", action="store_true", help="also the package's tripose-track")
     parser.add_argument("--sequences", nargs="+", default=SEQUENCES, choices=SEQUENCES)
+    parser.add_argument("--trajectories", type=Path, help="folder to keep the TUM trajectories in")
     parser.add_argument("extra", nargs="*", help="options passed to both programs")
     args = parser.parse_args()
     programs = [("C++", [str(REPO / "build" / "samples" / "tripose_track")])]
@@ -57,7 +64,8 @@ def main():
         print("|---|---|---|---|---|---|")
         for sequence in args.sequences:
             with tempfile.TemporaryDirectory() as folder:
-                print(run(program, sequence, Path(folder), args.extra), flush=True)
+                keep = args.trajectories / f"{sequence}-{label.lower().replace('+', 'p')}.txt" if args.trajectories else None
+                print(run(program, sequence, Path(folder), args.extra, keep), flush=True)
 
 
 if __name__ == "__main__":

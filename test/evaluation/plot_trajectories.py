@@ -1,0 +1,168 @@
+"""Per-frame errors and trajectories of the tracker and of COLMAP, one PNG per sequence
+(doc/studies/front_end_and_tracker.md, "Against COLMAP"): rotation error and position error per frame for each
+method, and a top view of the trajectories with the ground truth.
+
+    python test/evaluation/plot_trajectories.py --colmap DIR_OR_JSON ... [--tripose SEQUENCE=TUM ...]
+                                                --output DIR [--prefix against-colmap-]
+
+--colmap takes colmap_sequences.py's JSON files (or folders of them); each file's median run is drawn, its other
+runs faintly. --tripose takes a TUM trajectory of the tracker (track_real_sequences.py --trajectories), frames
+stamped by index, for the sequence named before the '=' (a name of the JSON files' "sequence"); it is aligned
+as COLMAP's is (frame 0 at the identity, the ground truth's 0-1 baseline), which leaves the tracker's own
+trajectory unchanged when frames 0-1 were given from the ground truth.
+"""
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "test" / "python"))
+sys.path.insert(0, str(REPO / "test" / "evaluation"))
+import real_sequences as rs  # noqa: E402
+from colmap_sequences import align_to_first, frame_errors  # noqa: E402
+
+STYLE = {"colmap-sequential": ("tab:orange", "s"), "colmap-exhaustive": ("tab:green", "^")}
+TRIPOSE_COLOURS = ["tab:blue", "tab:purple", "tab:cyan"]
+
+
+def _pose(entry):
+    return np.array(entry["R"]).reshape(3, 3), np.array(entry["t"])
+
+
+def groundtruth(document):
+    """The ground truth of a JSON file as a Sequence (relative to its first frame)."""
+    Rs, ts = zip(*(_pose(p) for p in document["groundtruth"]))
+    n = len(Rs)
+    return rs.Sequence(document["name"], [None] * n, [None] * n, list(Rs), list(ts), *document["image_size"])
+
+
+def run_curves(run):
+    """(rotation deg, position %, centres) per frame of a JSON run, NaN where the frame has no pose."""
+    rot = np.array([np.nan if f["rotation_deg"] is None else f["rotation_deg"] for f in run["frames"]])
+    pos = np.array([np.nan if f["position_pct"] is None else f["position_pct"] for f in run["frames"]])
+    centres = np.array([[np.nan] * 3 if f["pose"] is None else rs.camera_centre(*_pose(f["pose"]))
+                        for f in run["frames"]])
+    return rot, pos, centres
+
+
+def tripose_curves(path, seq):
+    """The curves of a tracker's TUM trajectory against the ground truth `seq`."""
+    stamps, Rs, ts = rs.read_tum(path)
+    poses = {int(round(s)): (R, t) for s, R, t in zip(stamps, Rs, ts)}
+    if any(k < 0 or k >= len(seq) for k in poses):
+        raise ValueError(f"tripose: {path}: frame stamps outside 0..{len(seq) - 1}")
+    aligned = align_to_first(poses, seq)
+    errors = frame_errors(aligned, seq)
+    rot = np.array([np.nan if e is None else e[0] for e in errors])
+    pos = np.array([np.nan if e is None else e[1] for e in errors])
+    centres = np.array([[np.nan] * 3 if aligned is None or k not in aligned else rs.camera_centre(*aligned[k])
+                        for k in range(len(seq))])
+    return rot, pos, centres
+
+
+def top_view_axes(seq):
+    """Two horizontal axes for a top view: 'up' is the mean of the cameras' -y axes (level cameras, or a ring
+    of cameras about a vertical axis); the first axis is frame 0's x made horizontal."""
+    up = np.mean([-np.asarray(R)[1] for R in seq.R], axis=0)
+    up /= np.linalg.norm(up)
+    e1 = np.array([1.0, 0.0, 0.0]) - up[0] * up
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(up, e1)
+    # Frame 0 looks along +z: the plot's vertical axis points the way it looks.
+    return (e1, e2) if np.dot(e2, [0.0, 0.0, 1.0]) >= 0 else (e1, -e2)
+
+
+def plot_sequence(label, documents, tripose, output, prefix):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    seq = groundtruth(documents[0])
+    n = len(seq)
+    frames = np.arange(n)
+    e1, e2 = top_view_axes(seq)
+    fig, (ax_r, ax_p, ax_t) = plt.subplots(1, 3, figsize=(13, 3.8), gridspec_kw={"width_ratios": [1, 1, 1.1]})
+    gt = seq.centres()
+    ax_t.plot(gt @ e1, gt @ e2, "-", color="black", lw=2.5, alpha=0.35, label="ground truth")
+    ax_t.plot([gt[0] @ e1], [gt[0] @ e2], "o", color="black")
+    curves = []
+    for document in documents:
+        colour, marker = STYLE.get(document["method"], ("tab:red", "v"))
+        median = document["median_run"]
+        for i, run in enumerate(document["runs"]):
+            rot, pos, centres = run_curves(run)
+            if i == median:
+                registered = int(np.sum(np.isfinite(rot)))
+                name = document["method"].replace("colmap-", "COLMAP ")
+                curves.append((f"{name} ({registered}/{n}, run {i + 1} of {len(document['runs'])})",
+                               colour, marker, rot, pos, centres, 1.0))
+            else:
+                curves.append((None, colour, None, rot, pos, centres, 0.25))
+    for (name, path), colour in zip(tripose, TRIPOSE_COLOURS):
+        rot, pos, centres = tripose_curves(path, seq)
+        curves.append((f"{name} ({int(np.sum(np.isfinite(rot)))}/{n})", colour, "o", rot, pos, centres, 1.0))
+    for name, colour, marker, rot, pos, centres, alpha in curves:
+        size = 4 if n > 20 else 5
+        ax_r.plot(frames, rot, "-", color=colour, marker=marker, ms=size, alpha=alpha, label=name)
+        ax_p.plot(frames, pos, "-", color=colour, marker=marker, ms=size, alpha=alpha, label=name)
+        ax_t.plot(centres @ e1, centres @ e2, "-", color=colour, marker=marker, ms=size - 1, alpha=alpha)
+    ax_r.set(xlabel="frame", ylabel="rotation error (deg)", title="rotation")
+    ax_p.set(xlabel="frame", ylabel="position error (% of path)", title="position")
+    ax_t.set(xlabel="m", ylabel="m", title="top view (frame 0's frame)")
+    ax_t.set_aspect("equal", adjustable="datalim")
+    for ax in (ax_r, ax_p):
+        ax.set_ylim(bottom=0)
+        ax.grid(alpha=0.3)
+        if n <= 12:
+            ax.set_xticks(frames)
+    ax_t.grid(alpha=0.3)
+    ax_r.legend(fontsize=7, loc="upper left")
+    ax_t.legend(fontsize=7, loc="best")
+    fig.suptitle(f"{seq.name}: frames 0-1 aligned to the ground truth", fontsize=10)
+    fig.tight_layout()
+    output.mkdir(parents=True, exist_ok=True)
+    path = output / f"{prefix}{label}.png"
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--colmap", nargs="+", type=Path, required=True, help="JSON files or folders of them")
+    parser.add_argument("--tripose", nargs="*", default=[], metavar="SEQUENCE=TUM",
+                        help="the tracker's trajectory of a sequence; repeat a sequence for several programs")
+    parser.add_argument("--label", nargs="*", default=None, help="a legend label per --tripose file")
+    parser.add_argument("--output", type=Path, required=True)
+    parser.add_argument("--prefix", default="", help="prefix of the PNG file names")
+    args = parser.parse_args()
+    files = []
+    for path in args.colmap:
+        files += sorted(path.glob("*.json")) if path.is_dir() else [path]
+    if not files:
+        parser.error("--colmap: no JSON files")
+    by_sequence = {}
+    for path in files:
+        document = json.loads(path.read_text())
+        by_sequence.setdefault(document["sequence"], []).append(document)
+    if args.label is not None and len(args.label) != len(args.tripose):
+        parser.error(f"--label: {len(args.label)} labels for {len(args.tripose)} --tripose files")
+    tripose = {}
+    for i, item in enumerate(args.tripose):
+        sequence, sep, path = item.partition("=")
+        if not sep or sequence not in by_sequence:
+            parser.error(f"--tripose: {item!r} is not SEQUENCE=TUM with a sequence of the JSON files "
+                         f"({', '.join(sorted(by_sequence))})")
+        label = args.label[i] if args.label else f"tripose ({Path(path).stem})"
+        tripose.setdefault(sequence, []).append((label, Path(path)))
+    for label, documents in by_sequence.items():
+        documents.sort(key=lambda d: d["method"], reverse=True)
+        print(plot_sequence(label, documents, tripose.get(label, []), args.output, args.prefix))
+
+
+if __name__ == "__main__":
+    main()
