@@ -5,6 +5,7 @@
 #ifndef OPENCV_TRIPOSE_HPP
 #define OPENCV_TRIPOSE_HPP
 
+#include "opencv2/tripose/params.hpp"
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"

@@ -7,33 +7,13 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/tripose/detail/cv_nd.hpp"
+#include "opencv2/tripose/params.hpp"
 
 namespace cv {
 namespace tripose {
 
 //! @addtogroup tripose_pose
 //! @{
-
-//! Loss applied to the reprojection error of each observation (a point, or the two end points of a segment, in one view).
-enum RobustLoss
-{
-    LOSS_SQUARED = 0, //!< Plain least squares: the maximum-likelihood estimate under Gaussian noise.
-    LOSS_HUBER = 1,   //!< Quadratic up to RefineParams::lossScale pixels, linear beyond.
-    LOSS_CAUCHY = 2,  //!< \f$c^2 \log(1 + e^2 / c^2)\f$ with \f$c\f$ = RefineParams::lossScale: gross errors barely count.
-};
-
-/** @brief Parameters of the maximum-likelihood refinement: refinePoseLinePoint(),
-refinePoseLinePointStereo(), refinePoseMultiView(), adjustPosesMultiView(), and the final stage of
-the RANSAC estimators (RansacParams::refineParams).
-*/
-struct CV_EXPORTS_W_SIMPLE RefineParams
-{
-    CV_WRAP RefineParams();
-    CV_PROP_RW int maxIterations; //!< Maximum number of Levenberg-Marquardt steps, accepted or rejected (> 0, default 30).
-    CV_PROP_RW int loss;          //!< One of #RobustLoss (default LOSS_SQUARED).
-    CV_PROP_RW double lossScale;  //!< Scale \f$c\f$ of the robust loss in pixels (> 0, default 1); unused by LOSS_SQUARED.
-    CV_PROP_RW double tolerance;  //!< Stop when an accepted step lowers the cost by less than this fraction of it (>= 0, default 1e-10).
-};
 
 /** @brief Refines the pose of the third view and the 3D structure by minimizing the reprojection
 error in all three views (maximum likelihood under Gaussian image noise).

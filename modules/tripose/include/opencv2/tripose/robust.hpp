@@ -7,6 +7,7 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/tripose/detail/cv_nd.hpp"
+#include "opencv2/tripose/params.hpp"
 #include "opencv2/tripose/refine.hpp"
 
 namespace cv {
@@ -14,34 +15,6 @@ namespace tripose {
 
 //! @addtogroup tripose_pose
 //! @{
-
-/** @brief Parameters of the RANSAC estimators: estimatePoseLinePointRansac(),
-estimatePoseLinePointStereoRansac() and estimatePoseMultiViewRansac().
-*/
-struct CV_EXPORTS_W_SIMPLE RansacParams
-{
-    CV_WRAP RansacParams();
-    /** Inlier threshold in pixels (default 2). A feature is an inlier of the returned pose when its
-    RMS reprojection error over every view that sees it, the feature re-triangulated from all of
-    them with that pose, is below it (a point: its two coordinates in each view; a line: the
-    distances of its two observed end points to the projected 3D line in each view). While
-    sampling, hypotheses are scored on the estimated view(s) alone (view 3; views 3 and 4 of a rig;
-    the new view) against structure triangulated from the known views, which carries the
-    triangulation error of those views: there the threshold is doubled.
-    */
-    CV_PROP_RW double threshold;
-    CV_PROP_RW double confidence;      //!< Probability, in (0, 1), of drawing at least one all-inlier sample (default 0.999).
-    CV_PROP_RW int maxIterations;      //!< Upper bound on the number of samples (default 10000).
-    CV_PROP_RW bool localOptimization; //!< Re-estimate from the inliers of every new best model (default true).
-    CV_PROP_RW bool refine;            //!< Finish with the maximum-likelihood refinement over the inliers (refinePoseLinePoint() and its siblings), with refineParams (default true).
-    CV_PROP_RW RefineParams refineParams; //!< Parameters of the final refinement (default RefineParams()).
-    CV_PROP_RW int seed;               //!< Seed of the sampler: the same seed gives the same result (default 0).
-    /** Fewest inliers of a returned pose (default 15; >= 0): an estimate with fewer is no pose (the
-    functions return 0, R and t empty). Chance matches agree with a pose in numbers up to about a
-    dozen (doc/conventions.md, "Results and errors"); set it lower only where every feature is known
-    to be right, as in small synthetic problems. */
-    CV_PROP_RW int minInliers;
-};
 
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 

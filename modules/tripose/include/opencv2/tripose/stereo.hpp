@@ -7,6 +7,7 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/tripose/detail/cv_nd.hpp"
+#include "opencv2/tripose/params.hpp"
 #include "opencv2/tripose/pose.hpp"
 #include "opencv2/tripose/refine.hpp"
 #include "opencv2/tripose/robust.hpp"

@@ -10,7 +10,7 @@
 
 #include "opencv2/core.hpp"
 #include "opencv2/tripose/features.hpp"
-#include "opencv2/tripose/robust.hpp"
+#include "opencv2/tripose/params.hpp"
 
 namespace cv {
 namespace tripose {
