@@ -7,8 +7,8 @@
 
 #include <nanobind/nanobind.h>
 
-//! tripose.Tracker's extension classes: _Tracker, TrackerOptions, RansacOptions, RefineOptions,
-//! MatchOptions, FrameStatus, FrameResult.
+//! tripose.Tracker's extension classes _Tracker, FrameStatus, FrameResult and the function
+//! _match_triplets (after bindOptions(), whose options they take).
 void bindTracker(nanobind::module_& m);
 
 #endif // TRIPOSE_PYTHON_TRACKER_BINDINGS_HPP
