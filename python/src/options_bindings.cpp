@@ -2,12 +2,16 @@
 // It is subject to the license terms in the LICENSE file found in the top-level directory
 // of this distribution and at http://opencv.org/license.html.
 
-// The option structs of the estimators and the trackers, bound as classes: their defaults are the
-// core's structs', declared once; the core checks their values when a function is called with them.
+// The option structs of the estimators and the trackers, bound as classes whose constructors take
+// any field as a keyword: their defaults are the core's structs', declared once; the core checks
+// their values when a function is called with them.
 
 #include "options_bindings.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include <nanobind/stl/string.h>
 
@@ -16,6 +20,130 @@
 #include "tracking/tracker_options.hpp"
 
 namespace nb = nanobind;
+
+namespace {
+
+/** The fields of a bound option class (its writable properties, in the order bound), their types
+and defaults, read once from the class and a default-constructed struct.
+*/
+class OptionFields
+{
+public:
+    OptionFields(nb::handle cls, nb::handle defaults) : className_(nb::cast<std::string>(cls.attr("__name__")))
+    {
+        const nb::object property = nb::module_::import_("builtins").attr("property");
+        const nb::object members = cls.attr("__dict__");
+        for (nb::handle key : members)
+        {
+            const nb::object member = members[key];
+            if (!nb::isinstance(member, property) || member.attr("fset").is_none())
+                continue;
+            const nb::object value = nb::getattr(defaults, key);
+            // Numbers, flags and names show their default; an option struct within shows "...".
+            const bool literal = nb::isinstance<nb::bool_>(value) || nb::isinstance<nb::int_>(value) ||
+                                 nb::isinstance<nb::str>(value) ||
+                                 (nb::isinstance<nb::float_>(value) && std::isfinite(nb::cast<double>(value)));
+            names_.push_back(nb::cast<std::string>(key));
+            types_.push_back(nb::cast<std::string>(value.type().attr("__qualname__")));
+            defaults_.push_back(literal ? nb::cast<std::string>(nb::repr(value)) : std::string("..."));
+        }
+    }
+
+    //! "def __init__(self, *, threshold: float = 2.0, ...) -> None".
+    std::string signature() const
+    {
+        std::string text = "def __init__(self, *";
+        for (size_t i = 0; i < names_.size(); ++i)
+            text += ", " + names_[i] + ": " + types_[i] + " = " + defaults_[i];
+        return text + ") -> None";
+    }
+
+    //! A TypeError naming the first of @p values that is no field.
+    void checkNames(const nb::kwargs& values) const
+    {
+        for (const auto& item : values)
+        {
+            const std::string key = nb::cast<std::string>(item.first);
+            if (find(key) == names_.size())
+            {
+                std::string list;
+                for (const std::string& name : names_)
+                    list += (list.empty() ? "" : ", ") + name;
+                throw nb::type_error((className_ + "() got an unexpected keyword argument '" + key +
+                                      "'; its fields are " + list).c_str());
+            }
+        }
+    }
+
+    /** Each of @p values set on @p self as setting the field does: the setter's exception, its
+    message naming the keyword, the setter's own as its cause. */
+    void set(nb::handle self, const nb::kwargs& values) const
+    {
+        for (const auto& item : values)
+        {
+            try
+            {
+                nb::setattr(self, item.first, item.second);
+            }
+            catch (nb::python_error& e)
+            {
+                const std::string key = nb::cast<std::string>(item.first);
+                if (e.matches(PyExc_TypeError))
+                {
+                    std::string value = nb::cast<std::string>(nb::repr(item.second));
+                    if (value.size() > 40)
+                        value = value.substr(0, 37) + "...";
+                    nb::raise_from(e, PyExc_TypeError, "%s(): %s=%s is not a valid %s", className_.c_str(), key.c_str(),
+                                   value.c_str(), types_[find(key)].c_str());
+                }
+                const nb::object type = nb::borrow(e.type());
+                const std::string message = nb::cast<std::string>(nb::str(e.value()));
+                nb::raise_from(e, type, "%s() argument %s: %s", className_.c_str(), key.c_str(), message.c_str());
+            }
+        }
+    }
+
+private:
+    size_t find(const std::string& name) const
+    {
+        return std::find(names_.begin(), names_.end(), name) - names_.begin();
+    }
+
+    std::string className_;
+    std::vector<std::string> names_, types_, defaults_;
+};
+
+/** The class of the option struct T, its constructor to come from defKeywordConstructor() once its
+fields are bound. The placeholder keeps __init__ first among the class's attributes, where the stubs
+list it.
+*/
+template <class T>
+nb::class_<T> optionsClass(nb::module_& m, const char* name, const char* doc)
+{
+    nb::class_<T> cls(m, name, doc);
+    nb::setattr(cls, "__init__", nb::none());
+    return cls;
+}
+
+/** The constructor T(field=value, ...) of the option class @p cls, whose fields are all bound: the
+struct's defaults, then each keyword set as setting its field does. A keyword that is no field is a
+TypeError naming it.
+*/
+template <class T>
+void defKeywordConstructor(nb::class_<T>& cls)
+{
+    const OptionFields fields(cls, nb::cast(T()));
+    cls.def("__init__",
+            [fields](nb::pointer_and_handle<T> self, const nb::kwargs& values) {
+                fields.checkNames(values);
+                new (self.p) T();
+                nb::inst_mark_ready(self.h); // the fields' setters take only a constructed instance
+                fields.set(self.h, values);
+            },
+            nb::sig(fields.signature().c_str()), "The defaults, with any field given as a keyword set to its value.");
+}
+
+} // namespace
 
 tripose::RansacOptions checkedRansacOptions(const tripose::RansacOptions* given, const std::string& name)
 {
@@ -44,11 +172,12 @@ tripose::RefineOptions checkedRefineOptions(const tripose::RefineOptions* given,
 
 void bindOptions(nb::module_& m)
 {
-    nb::class_<tripose::RefineOptions>(m, "RefineOptions",
-                                       "Options of the maximum-likelihood refinement: Levenberg-Marquardt over the pose and the structure, "
-                                       "minimising the reprojection error in pixels under a loss. Fields: max_iterations, "
-                                       "loss, loss_scale, tolerance.")
-        .def(nb::init<>())
+    auto refine = optionsClass<tripose::RefineOptions>(
+        m, "RefineOptions",
+        "Options of the maximum-likelihood refinement: Levenberg-Marquardt over the pose and the "
+        "structure, minimising the reprojection error in pixels under a loss. Fields: max_iterations, "
+        "loss, loss_scale, tolerance.");
+    refine
         .def_rw("max_iterations", &tripose::RefineOptions::maxIterations, "Levenberg-Marquardt steps, accepted or rejected (> 0).")
         .def_prop_rw("loss",
                      [](const tripose::RefineOptions& o) {
@@ -75,13 +204,14 @@ void bindOptions(nb::module_& m)
                                          o.loss == tripose::Loss::Huber ? "huber" : o.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
                                          o.lossScale, o.tolerance);
         });
+    defKeywordConstructor(refine);
 
-    nb::class_<tripose::RansacOptions>(m, "RansacOptions",
-                                       "Options of the robust estimators (LO-MSAC over minimal samples, then the "
-                                       "maximum-likelihood refinement over the inliers). Fields: threshold (px), "
-                                       "confidence, max_iterations (samples), local_optimization, refine, "
-                                       "refine_options (a RefineOptions), seed, min_inliers.")
-        .def(nb::init<>())
+    auto ransac = optionsClass<tripose::RansacOptions>(
+        m, "RansacOptions",
+        "Options of the robust estimators (LO-MSAC over minimal samples, then the maximum-likelihood "
+        "refinement over the inliers). Fields: threshold (px), confidence, max_iterations (samples), "
+        "local_optimization, refine, refine_options (a RefineOptions), seed, min_inliers.");
+    ransac
         .def_rw("threshold", &tripose::RansacOptions::threshold, "Inlier threshold in pixels (> 0).")
         .def_rw("confidence", &tripose::RansacOptions::confidence,
                 "Probability, in (0, 1), of drawing an all-inlier sample before stopping.")
@@ -107,13 +237,15 @@ void bindOptions(nb::module_& m)
                                          r.loss == tripose::Loss::Huber ? "huber" : r.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
                                          r.lossScale, r.tolerance);
         });
+    defKeywordConstructor(ransac);
 
-    nb::class_<tripose::MatchOptions>(m, "MatchOptions",
-                                      "How the features of two frames are matched: candidates near the epipolar "
-                                      "lines (or any, without a geometry), then mutual best descriptor with a ratio "
-                                      "test. Fields: epipolar_distance (px), min_band_overlap, min_epipolar_angle_deg, "
-                                      "point_ratio, line_ratio, max_line_distance, min_fundamental_inliers.")
-        .def(nb::init<>())
+    auto matching = optionsClass<tripose::MatchOptions>(
+        m, "MatchOptions",
+        "How the features of two frames are matched: candidates near the epipolar lines (or any, without "
+        "a geometry), then mutual best descriptor with a ratio test. Fields: epipolar_distance (px), "
+        "min_band_overlap, min_epipolar_angle_deg, point_ratio, line_ratio, max_line_distance, "
+        "min_fundamental_inliers.");
+    matching
         .def_rw("epipolar_distance", &tripose::MatchOptions::epipolarDistance,
                 "Largest distance (px) of a point from the other's epipolar line; also the fundamental "
                 "matrix's inlier distance.")
@@ -132,13 +264,14 @@ void bindOptions(nb::module_& m)
                                          "min_fundamental_inliers=%d)",
                                          o.epipolarDistance, o.pointRatio, o.lineRatio, o.minFundamentalInliers);
         });
+    defKeywordConstructor(matching);
 
-    nb::class_<tripose::TrackerOptions>(m, "TrackerOptions",
-                                        "Options of tripose.Tracker: the window of keyframes a frame is registered "
-                                        "against, the support a pose needs (min_inliers), keyframes by parallax, the "
-                                        "track checks, the local adjustment, and the RansacOptions (ransac) and "
-                                        "MatchOptions (matching) it uses. Defaults are the library's.")
-        .def(nb::init<>())
+    auto tracker = optionsClass<tripose::TrackerOptions>(
+        m, "TrackerOptions",
+        "Options of tripose.Tracker: the window of keyframes a frame is registered against, the support a "
+        "pose needs (min_inliers), keyframes by parallax, the track checks, the local adjustment, and the "
+        "RansacOptions (ransac) and MatchOptions (matching) it uses. Defaults are the library's.");
+    tracker
         .def_rw("window", &tripose::TrackerOptions::window, "Keyframes a new frame is registered against (>= 2).")
         .def_rw("min_inliers", &tripose::TrackerOptions::minInliers,
                 "A frame is registered only when at least this many features agree with its pose.")
@@ -166,4 +299,5 @@ void bindOptions(nb::module_& m)
                                          o.checkTracks ? "True" : "False", o.localAdjustment ? "True" : "False",
                                          o.robust ? "True" : "False", o.maxFrameGap);
         });
+    defKeywordConstructor(tracker);
 }

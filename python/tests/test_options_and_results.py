@@ -95,7 +95,7 @@ def test_options_and_keyword_arguments_together_are_an_error_naming_them():
 
 def test_keyword_arguments_warn_with_the_new_call():
     scene = noisy_scene(5)
-    with pytest.warns(DeprecationWarning, match=r"options\.threshold"):
+    with pytest.warns(DeprecationWarning, match=r"options=tripose\.RansacOptions\(threshold=\.\.\.\)"):
         tripose.estimate_pose_line_point_ransac(*scene.args(), threshold=3.0)
 
 

@@ -22,7 +22,8 @@ Conventions (the same as the C++ API, doc/conventions.md):
 * Options: the robust functions take options=RansacOptions() (threshold, confidence,
   max_iterations: samples drawn, local_optimization, refine, refine_options, seed, min_inliers), the
   refiners options=RefineOptions() (max_iterations: Levenberg-Marquardt steps, loss, loss_scale,
-  tolerance); the keyword arguments of earlier releases (threshold=..., loss=...) still work for
+  tolerance); every options class takes any of its fields as a keyword, the rest keeping their
+  defaults: RansacOptions(threshold=3, min_inliers=5). The keyword arguments of earlier releases (threshold=..., loss=...) still work for
   this release and warn (README.md, "Changes").
 * Results: the robust functions, the refiners and adjust_poses_multiview return a PoseResult (R, t,
   num_inliers, point_inliers, line_inliers, rms, covariance, noise_variance, candidates,
@@ -85,6 +86,10 @@ def _seed(seed: int) -> int:
 
 _RANSAC_KEYWORDS = ("threshold", "confidence", "max_iterations", "refine", "seed", "min_inliers")
 _REFINE_KEYWORDS = ("max_iterations", "loss", "loss_scale", "tolerance")
+# How each deprecated keyword argument's value was read into its field.
+_RANSAC_CONVERSIONS = {"threshold": float, "confidence": float, "max_iterations": int, "refine": bool,
+                       "seed": _seed, "min_inliers": int}
+_REFINE_CONVERSIONS = {"max_iterations": int, "loss": str, "loss_scale": float, "tolerance": float}
 
 
 def _ransac_options(options: Optional[RansacOptions], function: str, *values: Any) -> Tuple[Any, str]:
@@ -101,20 +106,9 @@ def _ransac_options(options: Optional[RansacOptions], function: str, *values: An
         raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
                          f"them in options ({', '.join('options.' + name for name in given)})")
     warnings.warn(f"{function}: the keyword arguments {', '.join(given)} are deprecated; pass "
-                  f"options=tripose.RansacOptions() with {', '.join('options.' + name for name in given)} set "
+                  f"options=tripose.RansacOptions({', '.join(name + '=...' for name in given)}) "
                   "(README.md, 'Changes')", DeprecationWarning, stacklevel=3)
-    built = RansacOptions()
-    for name in ("threshold", "confidence"):
-        if legacy[name] is not None:
-            setattr(built, name, float(legacy[name]))
-    for name in ("max_iterations", "min_inliers"):
-        if legacy[name] is not None:
-            setattr(built, name, int(legacy[name]))
-    if legacy["refine"] is not None:
-        built.refine = bool(legacy["refine"])
-    if legacy["seed"] is not None:
-        built.seed = _seed(legacy["seed"])
-    return built, ""
+    return RansacOptions(**{name: _RANSAC_CONVERSIONS[name](legacy[name]) for name in given}), ""
 
 
 def _refine_options(options: Optional[RefineOptions], function: str, *values: Any) -> Tuple[Any, str]:
@@ -130,18 +124,9 @@ def _refine_options(options: Optional[RefineOptions], function: str, *values: An
         raise ValueError(f"{function}: options and the keyword arguments {', '.join(given)} are both given; set "
                          f"them in options ({', '.join('options.' + name for name in given)})")
     warnings.warn(f"{function}: the keyword arguments {', '.join(given)} are deprecated; pass "
-                  f"options=tripose.RefineOptions() with {', '.join('options.' + name for name in given)} set "
+                  f"options=tripose.RefineOptions({', '.join(name + '=...' for name in given)}) "
                   "(README.md, 'Changes')", DeprecationWarning, stacklevel=3)
-    built = RefineOptions()
-    if legacy["max_iterations"] is not None:
-        built.max_iterations = int(legacy["max_iterations"])
-    if legacy["loss"] is not None:
-        built.loss = str(legacy["loss"])
-    if legacy["loss_scale"] is not None:
-        built.loss_scale = float(legacy["loss_scale"])
-    if legacy["tolerance"] is not None:
-        built.tolerance = float(legacy["tolerance"])
-    return built, ""
+    return RefineOptions(**{name: _REFINE_CONVERSIONS[name](legacy[name]) for name in given}), ""
 
 
 def _view_list(value: Any, name: str) -> Any:

@@ -14,7 +14,8 @@ class RefineOptions:
     Options of the maximum-likelihood refinement: Levenberg-Marquardt over the pose and the structure, minimising the reprojection error in pixels under a loss. Fields: max_iterations, loss, loss_scale, tolerance.
     """
 
-    def __init__(self) -> None: ...
+    def __init__(self, *, max_iterations: int = 30, loss: str = 'squared', loss_scale: float = 1.0, tolerance: float = 1e-10) -> None:
+        """The defaults, with any field given as a keyword set to its value."""
 
     @property
     def max_iterations(self) -> int:
@@ -53,7 +54,8 @@ class RansacOptions:
     Options of the robust estimators (LO-MSAC over minimal samples, then the maximum-likelihood refinement over the inliers). Fields: threshold (px), confidence, max_iterations (samples), local_optimization, refine, refine_options (a RefineOptions), seed, min_inliers.
     """
 
-    def __init__(self) -> None: ...
+    def __init__(self, *, threshold: float = 2.0, confidence: float = 0.999, max_iterations: int = 10000, local_optimization: bool = True, refine: bool = True, refine_options: RefineOptions = ..., seed: int = 0, min_inliers: int = 15) -> None:
+        """The defaults, with any field given as a keyword set to its value."""
 
     @property
     def threshold(self) -> float:
@@ -122,7 +124,8 @@ class MatchOptions:
     How the features of two frames are matched: candidates near the epipolar lines (or any, without a geometry), then mutual best descriptor with a ratio test. Fields: epipolar_distance (px), min_band_overlap, min_epipolar_angle_deg, point_ratio, line_ratio, max_line_distance, min_fundamental_inliers.
     """
 
-    def __init__(self) -> None: ...
+    def __init__(self, *, epipolar_distance: float = 2.0, min_band_overlap: float = 0.5, min_epipolar_angle_deg: float = 5.0, point_ratio: float = 0.8, line_ratio: float = 0.8, max_line_distance: float = 80.0, min_fundamental_inliers: int = 30) -> None:
+        """The defaults, with any field given as a keyword set to its value."""
 
     @property
     def epipolar_distance(self) -> float:
@@ -188,7 +191,8 @@ class TrackerOptions:
     Options of tripose.Tracker: the window of keyframes a frame is registered against, the support a pose needs (min_inliers), keyframes by parallax, the track checks, the local adjustment, and the RansacOptions (ransac) and MatchOptions (matching) it uses. Defaults are the library's.
     """
 
-    def __init__(self) -> None: ...
+    def __init__(self, *, window: int = 5, min_inliers: int = 15, keyframe_parallax_deg: float = 0.1, check_tracks: bool = True, local_adjustment: bool = False, robust: bool = True, ransac: RansacOptions = ..., matching: MatchOptions = ..., covariance: bool = False, max_frame_gap: int = 3) -> None:
+        """The defaults, with any field given as a keyword set to its value."""
 
     @property
     def window(self) -> int:
