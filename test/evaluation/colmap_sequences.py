@@ -5,6 +5,7 @@ the identity, the 0-1 baseline of the ground truth's length) and compared frame 
 
     python test/evaluation/colmap_sequences.py [--sequences fountain_p11 ...] [--folders DIR ...]
                                                [--output DIR] [--runs N] [--threads 1] [--seed 0]
+                                               [--init-first-pair] [--mapper NAME=VALUE ...]
 
 A folder holds a sequence in the tracker's layout: its images (an `images/` folder, or a list file
 `images.txt` or `frames.txt` as tripose-track --images reads it), `calib.yml` (K) and `groundtruth.txt`
@@ -157,9 +158,11 @@ def extract(pycolmap, seq, work, threads):
     return database, images, time.perf_counter() - start
 
 
-def reconstruct(pycolmap, features, images, work, method, threads, seed):
+def reconstruct(pycolmap, features, images, work, method, threads, seed, init_first_pair=False, mapper=()):
     """The largest reconstruction after `method` matching and incremental mapping with the intrinsics fixed,
-    as {frame: (R, t)}, the number of reconstructions and the seconds taken."""
+    as {frame: (R, t)}, the number of reconstructions and the seconds taken. With `init_first_pair` the
+    mapping starts from frames 0 and 1 (the tracker's start) instead of the pair COLMAP chooses; `mapper` is
+    (name, value) pairs of IncrementalMapperOptions set after the defaults."""
     database = work / f"{method}.db"
     shutil.copyfile(features, database)
     pycolmap.set_random_seed(seed)
@@ -189,6 +192,13 @@ def reconstruct(pycolmap, features, images, work, method, threads, seed):
     options.ba_refine_extra_params = False
     options.mapper.abs_pose_refine_focal_length = False
     options.mapper.abs_pose_refine_extra_params = False
+    for name, value in mapper:
+        setattr(options.mapper, name, value)
+    if init_first_pair:
+        database_file = pycolmap.Database.open(database)
+        ids = {int(Path(image.name).stem): image.image_id for image in database_file.read_all_images()}
+        database_file.close()
+        options.init_image_id1, options.init_image_id2 = ids[0], ids[1]
     output = work / f"{method}-sparse"
     output.mkdir()
     reconstructions = pycolmap.incremental_mapping(database, images, output, options=options)
@@ -202,6 +212,10 @@ def reconstruct(pycolmap, features, images, work, method, threads, seed):
                 poses[int(Path(image.name).stem)] = (np.asarray(pose.rotation.matrix()),
                                                      np.asarray(pose.translation).reshape(3))
     return poses, len(reconstructions), seconds
+
+
+def _mapper_defaults():
+    return import_pycolmap().IncrementalMapperOptions()
 
 
 # --- comparison ------------------------------------------------------------------------------------
@@ -251,7 +265,8 @@ def _pose_json(R, t):
 def _spread(values, digits=3):
     values = sorted(values)
     text = f"{statistics.median(values):.{digits}f}"
-    return text + (f" ({values[0]:.{digits}f}-{values[-1]:.{digits}f})" if len(values) > 1 else "")
+    low, high = f"{values[0]:.{digits}f}", f"{values[-1]:.{digits}f}"
+    return text + (f" ({low}-{high})" if low != high else "")
 
 
 def report_row(label, seq, method, runs):
@@ -284,7 +299,8 @@ def evaluate(pycolmap, label, seq, args):
                 work = tmp / f"run{run}"
                 work.mkdir(exist_ok=True)
                 seed = args.seed + run
-                poses, models, seconds = reconstruct(pycolmap, features, images, work, method, args.threads, seed)
+                poses, models, seconds = reconstruct(pycolmap, features, images, work, method, args.threads, seed,
+                                                     args.init_first_pair, args.mapper)
                 aligned = align_to_first(poses, seq)
                 errors = frame_errors(aligned, seq)
                 registered, last, largest = summary(errors)
@@ -303,19 +319,24 @@ def evaluate(pycolmap, label, seq, args):
                       + (f"last {last[0]:.3f} deg / {last[1]:.3f} %" if last else "last frame lost")
                       + f", {extract_seconds + seconds:.1f} s", file=sys.stderr, flush=True)
             shutil.rmtree(tmp / f"run{run}")
+    changes = ", ".join(f"{name} {value:g}" for name, value in args.mapper)
+    suffix = (", frames 0-1 first" if args.init_first_pair else "") + (f", {changes}" if changes else "")
     if args.output:
         args.output.mkdir(parents=True, exist_ok=True)
         for method, runs in results.items():
+            tag = method + ("-first-pair" if args.init_first_pair else "") + ("-tuned" if args.mapper else "")
             lasts = [(r["last"][0], i) for i, r in enumerate(runs) if r["last"] is not None]
             document = {
-                "sequence": label, "name": seq.name, "method": f"colmap-{method}",
+                "sequence": label, "name": seq.name, "method": f"colmap-{tag}",
                 "pycolmap": pycolmap.__version__, "image_size": [seq.width, seq.height],
+                "options": {"init_first_pair": args.init_first_pair, "mapper": dict(args.mapper),
+                            "threads": args.threads, "sequential_overlap": SEQUENTIAL_OVERLAP},
                 "path_length": rs.path_length(seq.R, seq.t),
                 "groundtruth": [_pose_json(R, t) for R, t in zip(seq.R, seq.t)],
                 "median_run": sorted(lasts)[(len(lasts) - 1) // 2][1] if lasts else 0,
                 "runs": runs}
-            (args.output / f"{label}-colmap-{method}.json").write_text(json.dumps(document, indent=1) + "\n")
-    return [report_row(label, seq, m, results[m]) for m in METHODS]
+            (args.output / f"{label}-colmap-{tag}.json").write_text(json.dumps(document, indent=1) + "\n")
+    return [report_row(label, seq, m + suffix, results[m]) for m in METHODS]
 
 
 def main():
@@ -327,7 +348,22 @@ def main():
     parser.add_argument("--runs", type=int, default=1, help="reconstructions per method (seeds seed..seed+N-1)")
     parser.add_argument("--threads", type=int, default=1, help="COLMAP's threads (default 1)")
     parser.add_argument("--seed", type=int, default=0, help="the first run's random seed")
+    parser.add_argument("--init-first-pair", action="store_true",
+                        help="start the mapping from frames 0 and 1, as the tracker does (default: COLMAP's choice)")
+    parser.add_argument("--mapper", nargs="+", default=[], metavar="NAME=VALUE",
+                        help="IncrementalMapperOptions changed from COLMAP's defaults, e.g. init_min_tri_angle=4")
     args = parser.parse_args()
+    mapper = []
+    for item in args.mapper:
+        name, sep, value = item.partition("=")
+        if not sep or not hasattr(pycolmap_options := _mapper_defaults(), name):
+            parser.error(f"--mapper: {item!r} is not NAME=VALUE with a name of IncrementalMapperOptions")
+        default = getattr(pycolmap_options, name)
+        try:
+            mapper.append((name, type(default)(float(value)) if not isinstance(default, bool) else value == "1"))
+        except ValueError:
+            parser.error(f"--mapper: {item!r}: {value!r} is not a number")
+    args.mapper = mapper
     if args.runs < 1:
         parser.error(f"--runs must be at least 1, got {args.runs}")
     if args.threads < 1:

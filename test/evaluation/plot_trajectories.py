@@ -24,7 +24,8 @@ sys.path.insert(0, str(REPO / "test" / "evaluation"))
 import real_sequences as rs  # noqa: E402
 from colmap_sequences import align_to_first, frame_errors  # noqa: E402
 
-STYLE = {"colmap-sequential": ("tab:orange", "s"), "colmap-exhaustive": ("tab:green", "^")}
+STYLE = {"colmap-sequential": ("tab:orange", "s"), "colmap-exhaustive": ("tab:green", "^"),
+         "colmap-sequential-first-pair": ("tab:brown", "D"), "colmap-exhaustive-first-pair": ("tab:olive", "v")}
 TRIPOSE_COLOURS = ["tab:blue", "tab:purple", "tab:cyan"]
 
 
@@ -97,7 +98,7 @@ def plot_sequence(label, documents, tripose, output, prefix):
             rot, pos, centres = run_curves(run)
             if i == median:
                 registered = int(np.sum(np.isfinite(rot)))
-                name = document["method"].replace("colmap-", "COLMAP ")
+                name = document["method"].replace("colmap-", "COLMAP ").replace("-first-pair", ", frames 0-1 first")
                 curves.append((f"{name} ({registered}/{n}, run {i + 1} of {len(document['runs'])})",
                                colour, marker, rot, pos, centres, 1.0))
             else:

@@ -64,7 +64,8 @@ def main():
         print("|---|---|---|---|---|---|")
         for sequence in args.sequences:
             with tempfile.TemporaryDirectory() as folder:
-                keep = args.trajectories / f"{sequence}-{label.lower().replace('+', 'p')}.txt" if args.trajectories else None
+                keep = (args.trajectories / f"{sequence}-{label.lower().replace('+', 'p')}.txt"
+                        if args.trajectories else None)
                 print(run(program, sequence, Path(folder), args.extra, keep), flush=True)
 
 
