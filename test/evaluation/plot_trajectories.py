@@ -24,8 +24,9 @@ sys.path.insert(0, str(REPO / "test" / "evaluation"))
 import real_sequences as rs  # noqa: E402
 from colmap_sequences import align_to_first, frame_errors  # noqa: E402
 
-STYLE = {"colmap-sequential": ("tab:orange", "s"), "colmap-exhaustive": ("tab:green", "^"),
-         "colmap-sequential-first-pair": ("tab:brown", "D"), "colmap-exhaustive-first-pair": ("tab:olive", "v")}
+# Colour and marker of COLMAP's methods: [0] with COLMAP's defaults, [1] with the options changed.
+STYLE = {"sequential": (("tab:orange", "s"), ("tab:brown", "D")),
+         "exhaustive": (("tab:green", "^"), ("tab:olive", "v"))}
 TRIPOSE_COLOURS = ["tab:blue", "tab:purple", "tab:cyan"]
 
 
@@ -65,15 +66,39 @@ def tripose_curves(path, seq):
 
 
 def top_view_axes(seq):
-    """Two horizontal axes for a top view: 'up' is the mean of the cameras' -y axes (level cameras, or a ring
-    of cameras about a vertical axis); the first axis is frame 0's x made horizontal."""
+    """Two axes of a top view: the plane of the ground-truth centres when they span one (an arc, a ring), else
+    the plane normal to the mean of the cameras' -y axes (level cameras) with frame 0's x made horizontal.
+    Seen from the side the cameras' -y axes point to."""
     up = np.mean([-np.asarray(R)[1] for R in seq.R], axis=0)
     up /= np.linalg.norm(up)
-    e1 = np.array([1.0, 0.0, 0.0]) - up[0] * up
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(up, e1)
-    # Frame 0 looks along +z: the plot's vertical axis points the way it looks.
-    return (e1, e2) if np.dot(e2, [0.0, 0.0, 1.0]) >= 0 else (e1, -e2)
+    centres = seq.centres()
+    _, sv, Vt = np.linalg.svd(centres - centres.mean(axis=0))
+    if len(centres) >= 3 and sv[1] > 0.1 * sv[0]:
+        normal = Vt[2] if np.dot(Vt[2], up) >= 0 else -Vt[2]
+        e1 = Vt[0]
+    else:
+        normal = up
+        e1 = np.array([1.0, 0.0, 0.0]) - up[0] * up
+    e1 = e1 / np.linalg.norm(e1)
+    return e1, np.cross(normal, e1)
+
+
+def method_style(method):
+    """The colour and marker of a COLMAP method name (colmap-<sequential|exhaustive>[-first-pair][-tuned])."""
+    base = "exhaustive" if "exhaustive" in method else "sequential"
+    return STYLE[base][int(method != f"colmap-{base}")]
+
+
+def method_name(document):
+    """The legend's name of a JSON file's method, with the options changed from COLMAP's defaults."""
+    base = "exhaustive" if "exhaustive" in document["method"] else "sequential"
+    options = document.get("options", {})
+    mapper = options.get("mapper", {})
+    changes = ([] if not mapper else ["initial pair relaxed"] if all(k.startswith("init_") for k in mapper)
+               else ["mapper options changed"])
+    if options.get("init_first_pair"):
+        changes.insert(0, "frames 0-1 first")
+    return f"COLMAP {base}" + (f" ({', '.join(changes)})" if changes else "")
 
 
 def plot_sequence(label, documents, tripose, output, prefix):
@@ -86,26 +111,26 @@ def plot_sequence(label, documents, tripose, output, prefix):
     n = len(seq)
     frames = np.arange(n)
     e1, e2 = top_view_axes(seq)
-    fig, (ax_r, ax_p, ax_t) = plt.subplots(1, 3, figsize=(13, 3.8), gridspec_kw={"width_ratios": [1, 1, 1.1]})
+    fig, (ax_r, ax_p, ax_t) = plt.subplots(1, 3, figsize=(13, 4.4), gridspec_kw={"width_ratios": [1, 1, 1.1]})
     gt = seq.centres()
     ax_t.plot(gt @ e1, gt @ e2, "-", color="black", lw=2.5, alpha=0.35, label="ground truth")
     ax_t.plot([gt[0] @ e1], [gt[0] @ e2], "o", color="black")
     curves = []
     for document in documents:
-        colour, marker = STYLE.get(document["method"], ("tab:red", "v"))
+        colour, marker = method_style(document["method"])
         median = document["median_run"]
         for i, run in enumerate(document["runs"]):
             rot, pos, centres = run_curves(run)
             if i == median:
                 registered = int(np.sum(np.isfinite(rot)))
-                name = document["method"].replace("colmap-", "COLMAP ").replace("-first-pair", ", frames 0-1 first")
-                curves.append((f"{name} ({registered}/{n}, run {i + 1} of {len(document['runs'])})",
+                name = method_name(document)
+                curves.append((f"{name}: {registered}/{n}, run {i + 1} of {len(document['runs'])}",
                                colour, marker, rot, pos, centres, 1.0))
             else:
                 curves.append((None, colour, None, rot, pos, centres, 0.25))
     for (name, path), colour in zip(tripose, TRIPOSE_COLOURS):
         rot, pos, centres = tripose_curves(path, seq)
-        curves.append((f"{name} ({int(np.sum(np.isfinite(rot)))}/{n})", colour, "o", rot, pos, centres, 1.0))
+        curves.append((f"{name}: {int(np.sum(np.isfinite(rot)))}/{n}", colour, "o", rot, pos, centres, 1.0))
     for name, colour, marker, rot, pos, centres, alpha in curves:
         size = 4 if n > 20 else 5
         ax_r.plot(frames, rot, "-", color=colour, marker=marker, ms=size, alpha=alpha, label=name)
@@ -113,7 +138,7 @@ def plot_sequence(label, documents, tripose, output, prefix):
         ax_t.plot(centres @ e1, centres @ e2, "-", color=colour, marker=marker, ms=size - 1, alpha=alpha)
     ax_r.set(xlabel="frame", ylabel="rotation error (deg)", title="rotation")
     ax_p.set(xlabel="frame", ylabel="position error (% of path)", title="position")
-    ax_t.set(xlabel="m", ylabel="m", title="top view (frame 0's frame)")
+    ax_t.set(xlabel="m", ylabel="m", title="top view")
     ax_t.set_aspect("equal", adjustable="datalim")
     for ax in (ax_r, ax_p):
         ax.set_ylim(bottom=0)
@@ -121,10 +146,12 @@ def plot_sequence(label, documents, tripose, output, prefix):
         if n <= 12:
             ax.set_xticks(frames)
     ax_t.grid(alpha=0.3)
-    ax_r.legend(fontsize=7, loc="upper left")
-    ax_t.legend(fontsize=7, loc="best")
+    handles, labels = ax_r.get_legend_handles_labels()
+    gt_handle, gt_label = ax_t.get_legend_handles_labels()
+    fig.legend(gt_handle + handles, gt_label + labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
     fig.suptitle(f"{seq.name}: frames 0-1 aligned to the ground truth", fontsize=10)
-    fig.tight_layout()
+    rows = (len(handles) + 1 + 2) // 3
+    fig.tight_layout(rect=(0, 0.06 * rows, 1, 1))
     output.mkdir(parents=True, exist_ok=True)
     path = output / f"{prefix}{label}.png"
     fig.savefig(path, dpi=80)
