@@ -174,12 +174,13 @@ int main(int argc, char** argv)
         if (robust && p.stereo)
             inliers = cv::tripose::estimatePoseLinePointStereoRansac(
                 p.points[0], p.points[1], p.points[2], p.points[3], p.lines[0], p.lines[1], p.lines[2], p.lines[3],
-                p.K, p.dist, p.R12, p.t12, R, t, options.ransac, pointInliers, lineInliers, covariance, noiseVariance);
+                p.K, p.dist, p.R12, p.t12, R, t, options.ransac, pointInliers, lineInliers, cv::noArray(),
+                cv::noArray(), cv::noArray(), covariance, noiseVariance);
         else if (robust)
             inliers = cv::tripose::estimatePoseLinePointRansac(p.points[0], p.points[1], p.points[2], p.lines[0],
                                                                p.lines[1], p.lines[2], p.K, p.dist, p.R12, p.t12, R, t,
-                                                               options.ransac, pointInliers, lineInliers, covariance,
-                                                               noiseVariance);
+                                                               options.ransac, pointInliers, lineInliers, cv::noArray(),
+                                                               cv::noArray(), cv::noArray(), covariance, noiseVariance);
         else if (p.stereo)
             n = cv::tripose::estimatePoseLinePointStereo(p.points[0], p.points[1], p.points[2], p.points[3],
                                                          p.lines[0], p.lines[1], p.lines[2], p.lines[3], p.K, p.dist,

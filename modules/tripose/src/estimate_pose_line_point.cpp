@@ -21,6 +21,7 @@ int estimatePoseLinePoint(InputArray points1, InputArray points2, InputArray poi
                           OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     detail::checkPoseMethod(method);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,

@@ -24,10 +24,11 @@ int estimatePoseLinePointRansac(InputArray points1, InputArray points2, InputArr
                                 InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                 InputArray R12, InputArray t12, OutputArray R, OutputArray t,
                                 const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers,
-                                OutputArray covariance, OutputArray noiseVariance, OutputArrayOfArrays candidateRs,
-                                OutputArrayOfArrays candidateTs, OutputArray reprojectionErrors)
+                                OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
+                                OutputArray reprojectionErrors, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views = detail::readThreeViewInput(points1, points2, points3, lines1, lines2, lines3,
                                                                        cameraMatrix, distCoeffs, R12, t12);

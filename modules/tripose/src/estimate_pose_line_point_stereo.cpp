@@ -30,6 +30,7 @@ int estimatePoseLinePointStereo(InputArray points1, InputArray points2, InputArr
                                 OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     detail::checkPoseMethod(method);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
@@ -48,9 +49,11 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
                                       InputArrayOfArrays cameraMatrix, InputArrayOfArrays distCoeffs,
                                       InputArray R12, InputArray t12, OutputArray R, OutputArray t,
                                       const RansacParams& params, OutputArray pointInliers, OutputArray lineInliers,
-                                      OutputArray covariance, OutputArray noiseVariance)
+                                      OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs,
+                                      OutputArray reprojectionErrors, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
             detail::readStereoRigInput(points1, points2, points3, points4, lines1, lines2, lines3, lines4, cameraMatrix,
@@ -61,6 +64,8 @@ int estimatePoseLinePointStereoRansac(InputArray points1, InputArray points2, In
         detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
                                         options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
                                         covariance, noiseVariance);
+        detail::writeRankedPoses(estimate.minima, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                 "candidateTs");
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

@@ -27,6 +27,7 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
                           OutputArray reprojectionErrors, OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     detail::checkPoseMethod(method);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
@@ -42,9 +43,12 @@ int estimatePoseMultiView(InputArrayOfArrays points, InputArrayOfArrays lines, I
 int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays lines, InputArrayOfArrays cameraMatrix,
                                 InputArrayOfArrays distCoeffs, InputArrayOfArrays Rs, InputArrayOfArrays ts,
                                 OutputArray R, OutputArray t, const RansacParams& params, OutputArray pointInliers,
-                                OutputArray lineInliers, OutputArray covariance, OutputArray noiseVariance)
+                                OutputArray lineInliers, OutputArrayOfArrays candidateRs,
+                                OutputArrayOfArrays candidateTs, OutputArray reprojectionErrors,
+                                OutputArray covariance, OutputArray noiseVariance)
 {
     CV_INSTRUMENT_REGION();
+    detail::checkCandidateOutputs(candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance);
     return TRIPOSE_CALL_CORE([&] {
         const detail::core::ViewSet views =
             detail::readMultiViewInput(points, lines, cameraMatrix, distCoeffs, Rs, ts, kMinMultiViewFeatures);
@@ -55,6 +59,8 @@ int estimatePoseMultiViewRansac(InputArrayOfArrays points, InputArrayOfArrays li
         detail::writeEstimateCovariance(views, found && options.refine ? &estimate.pose : nullptr,
                                         options.refineOptions, &estimate.pointInliers, &estimate.lineInliers,
                                         covariance, noiseVariance);
+        detail::writeRankedPoses(estimate.minima, candidateRs, candidateTs, reprojectionErrors, "candidateRs",
+                                 "candidateTs");
         return detail::writeRobustEstimate(found, estimate, R, t, pointInliers, lineInliers);
     });
 }

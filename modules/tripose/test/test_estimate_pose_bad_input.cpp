@@ -498,6 +498,85 @@ TEST_F(Tripose_StereoBadInput, three_distortion_vectors)
 }
 TEST_F(Tripose_StereoBadInput, unknown_method) { call.method = 3; expectStereoRejectedBy(STEREO_LINEAR, call, "method"); }
 
+// The robust functions' optional outputs follow the inlier masks in the order of the candidate
+// functions (candidateRs, candidateTs, reprojectionErrors, covariance, noiseVariance). A call written
+// for the earlier order of estimatePoseLinePointRansac() (covariance, noiseVariance right after the
+// masks, the candidates last), or one that puts a vector where a single array goes, is rejected
+// naming the output before any work, in every family.
+TEST(Tripose_BadOutput, outputs_in_another_order_are_rejected)
+{
+    const cv::tripose::support::SyntheticScene s = makeScene({ 6, 6 }, cv::tripose::support::MOTION_LARGE, 0.0, 1);
+    cv::tripose::support::SyntheticStereoParams stereoParams;
+    stereoParams.numPoints = 6;
+    stereoParams.numLines = 6;
+    stereoParams.seed = 1;
+    const cv::tripose::support::SyntheticStereoScene rig = cv::tripose::support::generateSyntheticStereoScene(stereoParams);
+    const cv::tripose::support::SyntheticMultiViewScene mv(3, 6, 6, 1);
+    cv::tripose::RansacParams params;
+    params.minInliers = 0; // a few features, all right: no floor on the inliers above them
+
+    // Each call with the given last five outputs; the name its message must hold.
+    const auto threeView = [&](OutputArrayOfArrays a, OutputArrayOfArrays b, OutputArray c, OutputArray d, OutputArray e) {
+        Mat R, t, pointInliers, lineInliers;
+        cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                                 s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params, pointInliers,
+                                                 lineInliers, a, b, c, d, e);
+    };
+    const auto stereo = [&](OutputArrayOfArrays a, OutputArrayOfArrays b, OutputArray c, OutputArray d, OutputArray e) {
+        Mat R, t, pointInliers, lineInliers;
+        cv::tripose::estimatePoseLinePointStereoRansac(rig.points1, rig.points2, rig.points3, rig.points4, rig.lines1,
+                                                       rig.lines2, rig.lines3, rig.lines4, rig.cameraMatrices,
+                                                       noArray(), rig.R12, rig.t12, R, t, params, pointInliers,
+                                                       lineInliers, a, b, c, d, e);
+    };
+    const auto multiView = [&](OutputArrayOfArrays a, OutputArrayOfArrays b, OutputArray c, OutputArray d, OutputArray e) {
+        Mat R, t, pointInliers, lineInliers;
+        cv::tripose::estimatePoseMultiViewRansac(mv.points, mv.lines, mv.K, noArray(), mv.Rs, mv.ts, R, t, params,
+                                                 pointInliers, lineInliers, a, b, c, d, e);
+    };
+    const auto linear = [&](OutputArrayOfArrays a, OutputArrayOfArrays b, OutputArray c, OutputArray d, OutputArray e) {
+        Mat R, t;
+        cv::tripose::estimatePoseLinePoint(s.points1, s.points2, s.points3, s.lines1, s.lines2, s.lines3,
+                                           s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
+                                           cv::tripose::POSE_LINEAR_REFINE, a, b, c, d, e);
+    };
+    typedef std::function<void(OutputArrayOfArrays, OutputArrayOfArrays, OutputArray, OutputArray, OutputArray)> Api;
+    const std::pair<const char*, Api> apis[] = { { "estimatePoseLinePointRansac", threeView },
+                                                 { "estimatePoseLinePointStereoRansac", stereo },
+                                                 { "estimatePoseMultiViewRansac", multiView },
+                                                 { "estimatePoseLinePoint", linear } };
+    const auto expectNamed = [](const char* api, const std::function<void()>& call, const std::string& argument) {
+        try
+        {
+            call();
+            ADD_FAILURE() << api << ": no exception; expected one naming '" << argument << "'";
+        }
+        catch (const cv::Exception& e)
+        {
+            EXPECT_TRUE(namesArgument(e.err, argument)) << api << ": message does not name '" << argument << "': " << e.err;
+        }
+    };
+    for (const auto& api : apis)
+    {
+        Mat covariance, noiseVariance, errors;
+        std::vector<Mat> Rs, ts;
+        // The earlier order: covariance, noiseVariance, candidateRs, candidateTs, reprojectionErrors.
+        expectNamed(api.first, [&] { api.second(covariance, noiseVariance, Rs, ts, errors); }, "candidateRs");
+        expectNamed(api.first, [&] { api.second(noArray(), noiseVariance, noArray(), noArray(), noArray()); },
+                    "candidateTs");
+        expectNamed(api.first, [&] { api.second(noArray(), noArray(), Rs, noArray(), noArray()); }, "reprojectionErrors");
+        expectNamed(api.first, [&] { api.second(noArray(), noArray(), noArray(), Rs, noArray()); }, "covariance");
+        expectNamed(api.first, [&] { api.second(noArray(), noArray(), noArray(), noArray(), ts); }, "noiseVariance");
+        // The order of the declarations: every output written, each of its own kind.
+        EXPECT_NO_THROW(api.second(Rs, ts, errors, covariance, noiseVariance)) << api.first;
+        EXPECT_GE(Rs.size(), 1u) << api.first;
+        EXPECT_EQ(Rs.size(), ts.size()) << api.first;
+        EXPECT_EQ((int)Rs.size(), errors.rows) << api.first;
+        EXPECT_EQ(6, covariance.rows) << api.first;
+        EXPECT_EQ(1u, noiseVariance.total()) << api.first;
+    }
+}
+
 // The matcher itself must be able to fail: a message naming only a longer word does not count.
 TEST(Tripose_BadInputMessage, argument_is_named_as_a_whole_word)
 {

@@ -266,6 +266,45 @@ TEST(Tripose_Stereo, ransac_finds_the_pose_and_the_wrong_matches)
     }
 }
 
+// The rig's robust estimate reports its candidates as the three-view one does, and the rig's
+// refinement descends from the estimator's pose alone: the one candidate is the returned pose, its
+// error the RMS over the inliers' residuals in the four views; none without refinement.
+TEST(Tripose_Stereo, ransac_reports_its_pose_as_the_one_candidate)
+{
+    for (int seed = 0; seed < 4; ++seed)
+    {
+        SCOPED_TRACE(cv::format("seed %d", 500 + seed));
+        const SyntheticStereoScene s = generateSyntheticStereoScene(stereoParams(60, 30, 500 + seed, 1.0, 0.25, 0.2));
+        cv::tripose::RansacParams params;
+        params.seed = seed;
+        Mat R, t, pointMask, lineMask, errors, covariance, noiseVariance;
+        std::vector<Mat> Rs, ts;
+        ASSERT_GT(cv::tripose::estimatePoseLinePointStereoRansac(
+                      s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3, s.lines4,
+                      s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params, pointMask, lineMask, Rs, ts, errors,
+                      covariance, noiseVariance),
+                  0);
+        ASSERT_EQ(1u, Rs.size());
+        ASSERT_EQ(1u, ts.size());
+        ASSERT_EQ(1, errors.rows);
+        EXPECT_EQ(0, cv::norm(Rs[0], R, NORM_INF));
+        EXPECT_EQ(0, cv::norm(ts[0], t, NORM_INF));
+        // 1 px noise: the inliers' RMS over their coordinates near 1 px.
+        EXPECT_GT(errors.at<double>(0), 0.5);
+        EXPECT_LT(errors.at<double>(0), 1.5);
+        EXPECT_EQ(6, covariance.rows);
+
+        params.refine = false;
+        ASSERT_GT(cv::tripose::estimatePoseLinePointStereoRansac(
+                      s.points1, s.points2, s.points3, s.points4, s.lines1, s.lines2, s.lines3, s.lines4,
+                      s.cameraMatrices, noArray(), s.R12, s.t12, R, t, params, pointMask, lineMask, Rs, ts, errors),
+                  0);
+        EXPECT_TRUE(Rs.empty());
+        EXPECT_TRUE(ts.empty());
+        EXPECT_TRUE(errors.empty());
+    }
+}
+
 //! The scene without its wrong matches: the rows that s.pointInliers / s.lineInliers mark, in every view.
 SyntheticStereoScene trueMatchesOnly(const SyntheticStereoScene& s)
 {

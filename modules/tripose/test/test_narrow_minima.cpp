@@ -306,7 +306,8 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
     // The aggregate bounds below hold on the first three seeds too (two of them are ambiguous), the
     // reduced suite's prefix.
     const int scenes = studySize() > 0 ? studySize() : scenesToRun(12);
-    int clearlyAmbiguous = 0, reportedByRansac = 0, reportedByLinear = 0, listed = 0, confirmedMinima = 0;
+    int clearlyAmbiguous = 0, reportedByRansac = 0, reportedByMultiView = 0, reportedByLinear = 0, listed = 0,
+        confirmedMinima = 0;
     for (int seed = 0; seed < scenes; ++seed)
     {
         ts::SyntheticSceneParams params;
@@ -333,8 +334,7 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
         Mat rms;
         ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                            s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                                           ransac, inlierPoints, inlierLines, noArray(), noArray(), Rs,
-                                                           ts_, rms),
+                                                           ransac, inlierPoints, inlierLines, Rs, ts_, rms),
                   0);
         ASSERT_GE(Rs.size(), 1u);
         ASSERT_EQ(Rs.size(), ts_.size());
@@ -365,10 +365,26 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
                               << (other.pose.R - first.pose.R).norm() << " from the first" << std::endl;
             }
         }
+        // The same problem as two known views and a new one: the multi-view RANSAC reports its
+        // minima likewise, its pose first.
+        const std::vector<Mat> points = { s.points1, s.points2, s.points3 }, lines = { s.lines1, s.lines2, s.lines3 };
+        const std::vector<Mat> knownRs = { Mat::eye(3, 3, CV_64F), s.R12 }, knownTs = { Mat::zeros(3, 1, CV_64F), s.t12 };
+        Mat Rm, tm, rmsMultiView;
+        std::vector<Mat> RsMultiView, tsMultiView;
+        ASSERT_GT(cv::tripose::estimatePoseMultiViewRansac(points, lines, s.cameraMatrices, noArray(), knownRs, knownTs,
+                                                           Rm, tm, ransac, noArray(), noArray(), RsMultiView,
+                                                           tsMultiView, rmsMultiView),
+                  0);
+        ASSERT_GE(RsMultiView.size(), 1u);
+        ASSERT_EQ(RsMultiView.size(), tsMultiView.size());
+        ASSERT_EQ((int)RsMultiView.size(), rmsMultiView.rows);
+        EXPECT_EQ(0, cv::norm(RsMultiView[0], Rm, NORM_INF));
+        EXPECT_EQ(0, cv::norm(tsMultiView[0], tm, NORM_INF));
         if (!ambiguous)
             continue;
         ++clearlyAmbiguous;
         reportedByRansac += Rs.size() > 1;
+        reportedByMultiView += RsMultiView.size() > 1;
 
         std::vector<Mat> candidateRs, candidateTs;
         Mat errors, variance;
@@ -389,20 +405,22 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
         reportedByLinear += reported;
     }
     std::cout << "narrow 0.5 % 4P+4L, " << scenes << " scenes: a second minimum clearly within the noise in "
-              << clearlyAmbiguous << "; reported by the RANSAC in " << reportedByRansac
-              << ", by linear + refine in " << reportedByLinear << "; other minima listed by the RANSAC: " << listed
+              << clearlyAmbiguous << "; reported by the RANSAC in " << reportedByRansac << ", by the multi-view RANSAC in "
+              << reportedByMultiView << ", by linear + refine in " << reportedByLinear << "; other minima listed by the RANSAC: " << listed
               << ", confirmed by further refinement: " << confirmedMinima << std::endl;
     // Not vacuous: the sample holds such scenes (half of them at 0.5 %, 4P+4L).
     EXPECT_GE(clearlyAmbiguous, 2);
     // Where the RANSAC stops in another minimum (at most 3 % of the scenes, the test above) it may
     // not see the second one: 90 % of the ambiguous scenes, rounded down.
     EXPECT_GE(reportedByRansac, 9 * clearlyAmbiguous / 10);
+    EXPECT_GE(reportedByMultiView, 9 * clearlyAmbiguous / 10);
     EXPECT_GE(reportedByLinear, 9 * clearlyAmbiguous / 10);
     // 95 % of what is listed holds up under further refinement.
     EXPECT_GT(listed, 0);
     EXPECT_GE(20 * confirmedMinima, 19 * listed);
 
-    // A wide baseline (the paper's small motion) has one basin: the RANSAC lists its pose alone.
+    // A wide baseline (the paper's small motion) has one basin: the RANSAC, three-view or multi-view,
+    // lists its pose alone.
     for (int seed = 0; seed < 5; ++seed)
     {
         ts::SyntheticSceneParams params;
@@ -419,9 +437,15 @@ TEST(Tripose_NarrowMinima, several_minima_within_the_noise_are_reported)
         std::vector<Mat> Rs, ts_;
         ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(s.points1, s.points2, s.points3, s.lines1, s.lines2,
                                                            s.lines3, s.cameraMatrices, noArray(), s.R12, s.t12, R, t,
-                                                           ransac, noArray(), noArray(), noArray(), noArray(), Rs, ts_),
+                                                           ransac, noArray(), noArray(), Rs, ts_),
                   0);
         EXPECT_EQ(1u, Rs.size()) << "seed " << seed;
+        const std::vector<Mat> points = { s.points1, s.points2, s.points3 }, lines = { s.lines1, s.lines2, s.lines3 };
+        const std::vector<Mat> knownRs = { Mat::eye(3, 3, CV_64F), s.R12 }, knownTs = { Mat::zeros(3, 1, CV_64F), s.t12 };
+        ASSERT_GT(cv::tripose::estimatePoseMultiViewRansac(points, lines, s.cameraMatrices, noArray(), knownRs, knownTs,
+                                                           R, t, ransac, noArray(), noArray(), Rs, ts_),
+                  0);
+        EXPECT_EQ(1u, Rs.size()) << "seed " << seed << ", multi-view";
     }
 }
 

@@ -362,16 +362,16 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
     cv::tripose::RansacParams ransac;
     ransac.threshold = 4.0;
     ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(x[0], x[1], x[2], l[0], l[1], l[2], p.K, noArray(), p.R12,
-                                                       p.t12, R, t, ransac, noArray(), noArray(), covariance,
-                                                       noiseVariance),
+                                                       p.t12, R, t, ransac, noArray(), noArray(), noArray(),
+                                                       noArray(), noArray(), covariance, noiseVariance),
               0);
     expectSymmetricPositiveDefinite(covariance, "estimatePoseLinePointRansac");
     EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
 
     ransac.refine = false;
     ASSERT_GT(cv::tripose::estimatePoseLinePointRansac(x[0], x[1], x[2], l[0], l[1], l[2], p.K, noArray(), p.R12,
-                                                       p.t12, R, t, ransac, noArray(), noArray(), covariance,
-                                                       noiseVariance),
+                                                       p.t12, R, t, ransac, noArray(), noArray(), noArray(),
+                                                       noArray(), noArray(), covariance, noiseVariance),
               0);
     EXPECT_TRUE(covariance.empty()) << "no refinement, no covariance";
     EXPECT_TRUE(noiseVariance.empty());
@@ -390,7 +390,8 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
     EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
     ransac.refine = true;
     ASSERT_GT(cv::tripose::estimatePoseMultiViewRansac(x, l, p.K, noArray(), Rs, tss, R, t, ransac, noArray(),
-                                                       noArray(), covariance, noiseVariance),
+                                                       noArray(), noArray(), noArray(), noArray(), covariance,
+                                                       noiseVariance),
               0);
     EXPECT_LE(cv::norm(covariance, reference, NORM_INF), 1e-6 * cv::norm(reference, NORM_INF));
 
@@ -408,7 +409,8 @@ TEST(Tripose_PoseCovarianceCheck, every_estimator_returns_it_where_documented)
     EXPECT_LE(cv::norm(covariance, rigReference, NORM_INF), 1e-6 * cv::norm(rigReference, NORM_INF));
     ASSERT_GT(cv::tripose::estimatePoseLinePointStereoRansac(
                   s.points[0], s.points[1], s.points[2], s.points[3], s.lines[0], s.lines[1], s.lines[2], s.lines[3],
-                  s.K, noArray(), s.R12, s.t12, R, t, ransac, noArray(), noArray(), covariance, noArray()),
+                  s.K, noArray(), s.R12, s.t12, R, t, ransac, noArray(), noArray(), noArray(), noArray(), noArray(),
+                  covariance, noArray()),
               0);
     EXPECT_LE(cv::norm(covariance, rigReference, NORM_INF), 1e-6 * cv::norm(rigReference, NORM_INF));
 }

@@ -31,6 +31,11 @@ Conventions of every function of the module (doc/conventions.md):
   time A being view 1 and \f$[R_{12} | t_{12}]\f$ the rig; \f$[R | t]\f$ is the left camera at time B.
 - Several known views (estimatePoseMultiView() and its siblings, adjustPosesMultiView()): every pose,
   given or returned, is a world pose in the caller's frame.
+- Every estimator takes its arguments in one order: the observations, the cameras (@p cameraMatrix,
+  @p distCoeffs), the known poses, the output pose @p R, @p t, then its method (#PoseMethod) or its
+  RansacParams, the inlier masks @p pointInliers, @p lineInliers (robust functions), and last the
+  same optional outputs in every family: @p candidateRs, @p candidateTs, @p reprojectionErrors,
+  @p covariance, @p noiseVariance.
 - @p Rs and @p ts are always poses the caller gives (the known views' world poses; in
   adjustPosesMultiView() every view's, refined in place); the candidates a function returns are
   @p candidateRs and @p candidateTs.

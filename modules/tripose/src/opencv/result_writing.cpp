@@ -33,7 +33,31 @@ void writeMask(const std::vector<unsigned char>& mask, OutputArray out)
         Mat((int)mask.size(), 1, CV_8U, (void*)mask.data()).copyTo(out);
 }
 
+void checkVectorOutput(OutputArrayOfArrays out, const char* name)
+{
+    if (out.needed() && out.kind() != _InputArray::STD_VECTOR_MAT)
+        CV_Error_(Error::StsBadArg, ("%s must be a std::vector<Mat>", name));
+}
+
+void checkSingleOutput(OutputArray out, const char* name)
+{
+    const auto kind = out.kind();
+    if (out.needed() && (kind == _InputArray::STD_VECTOR_MAT || kind == _InputArray::STD_VECTOR_UMAT ||
+                         kind == _InputArray::STD_VECTOR_VECTOR || kind == _InputArray::STD_ARRAY_MAT))
+        CV_Error_(Error::StsBadArg, ("%s must be a single array, not a vector of arrays", name));
+}
+
 } // namespace
+
+void checkCandidateOutputs(OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs, OutputArray errors,
+                           OutputArray covariance, OutputArray noiseVariance)
+{
+    checkVectorOutput(candidateRs, "candidateRs");
+    checkVectorOutput(candidateTs, "candidateTs");
+    checkSingleOutput(errors, "reprojectionErrors");
+    checkSingleOutput(covariance, "covariance");
+    checkSingleOutput(noiseVariance, "noiseVariance");
+}
 
 void writePose(const core::CameraPose* pose, OutputArray R, OutputArray t)
 {

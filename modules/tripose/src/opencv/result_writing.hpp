@@ -50,6 +50,14 @@ int writeCandidateEstimate(const core::ViewSet& views, const std::vector<core::S
                            OutputArrayOfArrays candidateTs, OutputArray errors, OutputArray covariance,
                            OutputArray noiseVariance);
 
+/** Rejects, before any work, candidate and uncertainty outputs of the wrong kind: @p candidateRs and
+@p candidateTs must be std::vector<Mat> and @p errors, @p covariance and @p noiseVariance single
+arrays where wanted, so that outputs passed in another order fail naming the argument instead of
+receiving another output's values.
+*/
+void checkCandidateOutputs(OutputArrayOfArrays candidateRs, OutputArrayOfArrays candidateTs, OutputArray errors,
+                           OutputArray covariance, OutputArray noiseVariance);
+
 //! A robust estimate (or none: @p found false) and its inlier masks (Nx1 CV_8U). Returns the inlier count.
 int writeRobustEstimate(bool found, const core::RobustEstimate& estimate, OutputArray R, OutputArray t,
                         OutputArray pointInliers, OutputArray lineInliers);

@@ -90,10 +90,22 @@ Arguments as in estimatePoseMultiView().
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
+@param candidateRs Optional output: with RansacParams::refine, the returned rotation first, then
+those of the other minima that the final refinement reached and that the data cannot tell apart from
+it, lowest cost first (3x3 CV_64F each), by the rule of estimatePoseLinePointRansac()'s candidates
+with the residuals over every view. More than one: the pose is ambiguous, as where the known views
+triangulate poorly. Only the returned pose where the refinement searched one basin; empty without
+refinement or when no pose was found.
+@param candidateTs Optional output: the matching translations (3x1 CV_64F).
+@param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
+(px, CV_64F) over the inliers in every view after refinement.
 @param covariance Optional output: the returned pose's 6x6 covariance, as estimatePoseLinePointRansac() gives it.
 @param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePointRansac() gives it.
 @return The number of inliers (points + lines), one more than a minimal sample at least (as
 estimatePoseLinePointRansac()); 0 when no pose was found (R and t empty, masks zero).
+
+@throws cv::Exception naming the argument or the field as estimatePoseLinePointRansac() does, and
+for the input errors of estimatePoseMultiView().
 */
 CV_EXPORTS_W int estimatePoseMultiViewRansac(
     InputArrayOfArrays points, InputArrayOfArrays lines,
@@ -102,6 +114,8 @@ CV_EXPORTS_W int estimatePoseMultiViewRansac(
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
     OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
+    OutputArray reprojectionErrors = noArray(),
     OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Maximum-likelihood refinement of the new view's pose and the structure over every view.

@@ -89,7 +89,9 @@ that candidate, as in refinePoseLinePoint(); released together with @p covarianc
 
 @throws cv::Exception naming the argument when an input has the wrong shape or type, the counts
 disagree between views, fewer than four features are given, a value is not finite, \f$R_{12}\f$ is
-not a rotation, \f$t_{12}\f$ is zero or an intrinsic matrix is not usable.
+not a rotation, \f$t_{12}\f$ is zero or an intrinsic matrix is not usable, or when @p candidateRs or
+@p candidateTs is not a std::vector<Mat> or @p reprojectionErrors, @p covariance or @p noiseVariance
+is a vector of arrays.
 */
 CV_EXPORTS_W int estimatePoseLinePoint(
     InputArray points1, InputArray points2, InputArray points3,

@@ -57,13 +57,6 @@ Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask, 1 for inlier point triplets (RansacParams::threshold).
 @param lineInliers Optional output: Mx1 CV_8U mask, 1 for inlier line triplets.
-@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
-returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
-inliers with RansacParams::refineParams. Released without refinement (the sample's or local
-optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
-pose was found and when the pose is not determined.
-@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
-from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
 @param candidateRs Optional output: with RansacParams::refine, the returned rotation first, then
 those of the other minima of the cost that the final refinement reached and that the data cannot
 tell apart from it (3x3 CV_64F each, lowest cost first): their sum of squared residuals over the
@@ -76,13 +69,22 @@ above: a wide baseline, or a large inlier set); empty without refinement or when
 @param candidateTs Optional output: the matching translations (3x1 CV_64F).
 @param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
 (px, CV_64F) over the inliers in the three views after refinement.
+@param covariance Optional output: with RansacParams::refine, the 6x6 CV_64F covariance of the
+returned pose for 1 px image noise, as refinePoseLinePoint() reports it at that pose over the
+inliers with RansacParams::refineParams. Released without refinement (the sample's or local
+optimisation's pose is not the maximum-likelihood estimate that the covariance describes), when no
+pose was found and when the pose is not determined.
+@param noiseVariance Optional output: 1x1 CV_64F estimate of the image noise variance (px\f$^2\f$)
+from the inliers' residuals, as in refinePoseLinePoint(); released together with @p covariance.
 @return The number of inliers (points + lines) of the returned pose: one more than a sample holds at
 least (four, or five with the samples of four features; a sample fits wrong matches too), or all
 features where there are no more; 0 when no pose was found (then R and t are empty and the masks
 all zero).
 
-@throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), and
-naming the field when a field of @p params (or of params.refineParams, when refine is set) is out of range.
+@throws cv::Exception naming the argument for the input errors of estimatePoseLinePoint(), when
+@p candidateRs or @p candidateTs is not a std::vector<Mat> or @p reprojectionErrors, @p covariance or
+@p noiseVariance is a vector of arrays, and naming the field when a field of @p params (or of
+params.refineParams, when refine is set) is out of range.
 */
 CV_EXPORTS_W int estimatePoseLinePointRansac(
     InputArray points1, InputArray points2, InputArray points3,
@@ -92,9 +94,9 @@ CV_EXPORTS_W int estimatePoseLinePointRansac(
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
     OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
-    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray(),
     OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
-    OutputArray reprojectionErrors = noArray());
+    OutputArray reprojectionErrors = noArray(),
+    OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 //! @}
 

@@ -93,10 +93,20 @@ Arguments as in estimatePoseLinePointStereo(); at least three features (the samp
 @param params See RansacParams.
 @param pointInliers Optional output: Nx1 CV_8U mask of inlier points.
 @param lineInliers Optional output: Mx1 CV_8U mask of inlier lines.
+@param candidateRs Optional output: with RansacParams::refine, the returned rotation (3x3 CV_64F), as
+estimatePoseLinePointRansac() gives its first candidate; empty without refinement or when no pose
+was found. The rig's refinement descends from the estimator's pose alone (its samples, scored with
+the known structure free to slide in depth, find the basin), so no other minimum is reported: the
+vector holds one entry.
+@param candidateTs Optional output: the matching translation (3x1 CV_64F).
+@param reprojectionErrors Optional output: per entry of @p candidateRs, the RMS reprojection error
+(px, CV_64F) over the inliers in the four views after refinement.
 @param covariance Optional output: the returned pose's 6x6 covariance, as estimatePoseLinePointRansac() gives it.
 @param noiseVariance Optional output: the noise variance estimate, as estimatePoseLinePointRansac() gives it.
 @return The number of inliers (points + lines), four at least (one more than a sample of three; all
 three where only three features are given); 0 when no pose was found (R and t empty, masks zero).
+
+@throws cv::Exception naming the argument or the field as estimatePoseLinePointRansac() does.
 */
 CV_EXPORTS_W int estimatePoseLinePointStereoRansac(
     InputArray points1, InputArray points2, InputArray points3, InputArray points4,
@@ -106,6 +116,8 @@ CV_EXPORTS_W int estimatePoseLinePointStereoRansac(
     OutputArray R, OutputArray t,
     const RansacParams& params = RansacParams(),
     OutputArray pointInliers = noArray(), OutputArray lineInliers = noArray(),
+    OutputArrayOfArrays candidateRs = noArray(), OutputArrayOfArrays candidateTs = noArray(),
+    OutputArray reprojectionErrors = noArray(),
     OutputArray covariance = noArray(), OutputArray noiseVariance = noArray());
 
 /** @brief Maximum-likelihood refinement of a stereo rig's motion and the structure.
