@@ -58,8 +58,8 @@ struct CV_EXPORTS FeatureTriplets
     int pointPairs = 0;   //!< Points of views 1-2 matched, before view 3.
     int segmentPairs = 0; //!< Segments of views 1-2 matched, before view 3.
     /** (points of views 1-2 matched by descriptor alone, of them within the epipolar distance of their
-    epipolar lines under R12, t12): under 30 % of 20 or more says that the calibration is not the
-    images'. */
+    epipolar lines under R12, t12): a small share of many matches says that the calibration is not
+    the images' (doc/usage.md gives the samples' rule). */
     Vec2i pairAgreement;
 };
 

@@ -75,13 +75,13 @@ CV_EXPORTS_W int estimatePoseMultiView(
 /** @brief Robust registration against several known views from point and line correspondences with
 outliers.
 
-The problem of estimatePoseMultiView() with RANSAC as in estimatePoseLinePointRansac(): samples of
-three points and lines mixed, solved on the structure triangulated from the known views, from enough
-features with structure that the new view sees when the known views triangulate well (the median
-over the features of the widest angle between the rays of the known views that see them decides),
-else samples of four features for the linear solver; hypotheses scored (MSAC) on their residuals in
-the new view against the structure triangulated from the known views that see each feature,
-truncated at 2 x RansacParams::threshold; local optimisation, adaptive stopping; then
+The problem of estimatePoseMultiView() with RANSAC as in estimatePoseLinePointRansac(): where the
+known views triangulate the features well (by the widest angle between the rays of the known views
+that see each feature), samples of three points and lines mixed, solved on the structure
+triangulated from the known views; else samples of four features for the linear solver;
+hypotheses scored (MSAC) on their residuals in the new view against the structure triangulated
+from the known views that see each feature, truncated at 2 x RansacParams::threshold; local
+optimisation, adaptive stopping; then
 maximum-likelihood refinement over every view on the inliers (known poses fixed). A feature is an
 inlier when its RMS reprojection error over every view that sees it, re-triangulated from all of
 them with the returned pose, is below RansacParams::threshold.

@@ -56,9 +56,9 @@ struct CV_EXPORTS_W_SIMPLE RansacParams
     CV_PROP_RW RefineParams refineParams; //!< Parameters of the final refinement (default RefineParams()).
     CV_PROP_RW int seed;               //!< Seed of the sampler: the same seed gives the same result (default 0).
     /** Fewest inliers of a returned pose (default 15; >= 0): an estimate with fewer is no pose (the
-    functions return 0, R and t empty). Chance matches agree with a pose in numbers up to about a
-    dozen (doc/conventions.md, "Results and errors"); set it lower only where every feature is known
-    to be right, as in small synthetic problems. */
+    functions return 0, R and t empty). Wrong matches can agree with a wrong pose by chance in small
+    numbers (doc/conventions.md, "Results and errors", says how many); set it lower only where every
+    feature is known to be right, as in small synthetic problems. */
     CV_PROP_RW int minInliers;
 };
 

@@ -42,17 +42,16 @@ view 3 (points: pixel distance; segments: distances of both end points to the pr
 Four or five features whose constraints are dependent (e.g. collinear points) give no candidate.
 
 With POSE_LINEAR_REFINE every candidate is then refined over the three views. Where the cost has
-several basins (a narrow baseline of views 1-2, planar structure, mostly lines) so are: a few
-poses of distinct rotations from the linear solver on four-feature subsets (every subset of a small
-set, else a sample of them; the best by their reprojection error with the structure triangulated
-at them), starts that keep the best-ranked candidate's rotation and move view 3's centre around
-view 1 at the same distance, and, when the best minimum's rotation differs from that candidate's,
-the same starts around it; each refinement is repeated from its result with the structure triangulated afresh
-until it settles. The distinct minima that use every usable feature are returned, ranked by their
-RMS reprojection error over the three views: with a narrow known baseline or planar structure the
-linear candidates alone lead to another local minimum in many scenes (doc/studies/accuracy.md). Minima
-whose costs the noise cannot order are all there: see doc/conventions.md, "Several minima", for the
-rule (from @p reprojectionErrors and @p noiseVariance) that tells them.
+several basins (a narrow baseline of views 1-2, planar structure, mostly lines) so are further
+starts: poses of distinct rotations from the linear solver on four-feature subsets, and poses that
+keep the best-ranked candidate's rotation (and, when the best minimum's rotation differs from it,
+that minimum's) and move view 3's centre around view 1 at the same distance; each refinement is
+repeated from its result with the structure triangulated afresh until it settles. The distinct
+minima that use every usable feature are returned, ranked by their RMS reprojection error over
+the three views: with a narrow known baseline or planar structure the linear candidates alone lead
+to another local minimum in many scenes (doc/studies/accuracy.md). Minima whose costs the noise
+cannot order are all there: see doc/conventions.md, "Several minima", for the rule (from
+@p reprojectionErrors and @p noiseVariance) that tells them.
 
 Any mix of at least four features works (4 points, 4 lines, 2 points + 2 lines, 3 + 1, 1 + 3 and
 anything larger).

@@ -19,39 +19,37 @@ namespace tripose {
 /** @brief Robust pose of a third view from point and line triplets with outliers.
 
 RANSAC over minimal samples, with:
-- when views 1 and 2 triangulate well (a wide enough baseline: the median triangulation angle
-  decides), samples of three features solved as absolute-pose problems on the structure
-  triangulated from views 1 and 2: from enough features with structure on, three points (P3P), two
-  points and a line, a point and two lines, or three lines, each kind chosen per sample in
-  proportion to the probability that it is all inliers (from the inlier ratios of points and of
-  lines of the best model so far; lines whose planes in views 1 and 2 meet at a grazing angle are
-  not drawn), and the stopping rule counts the samples of every kind; on smaller sets three points
-  when enough points have structure and they are a fair share of the features. Every feature votes
-  in every score and takes part in the local optimisation and the refinement;
-- otherwise (narrow baselines, small sets with few points) samples of four features (any mix of
-  points and lines: the smallest set the linear solver of estimatePoseLinePoint() handles), which
-  need no triangulated structure;
+- where views 1 and 2 triangulate the features well, samples of three features solved as
+  absolute-pose problems on the structure triangulated from views 1 and 2: three points (P3P), two
+  points and a line, a point and two lines, or three lines, each kind drawn in proportion to the
+  probability that it is all inliers (from the inlier ratios of points and of lines of the best
+  model so far; lines whose planes in views 1 and 2 meet at a grazing angle are not drawn), the
+  stopping rule counting the samples of every kind; on small sets, three points where the points
+  with structure allow it. Every feature votes in every score and takes part in the local
+  optimisation and the refinement;
+- otherwise (a narrow baseline of views 1-2, small sets with few points) samples of four features
+  (any mix of points and lines: the smallest set the linear solver of estimatePoseLinePoint()
+  handles), which need no triangulated structure;
 - hypotheses scored by truncated least squares (MSAC) on their residuals in view 3, in pixels,
   against the structure triangulated from views 1 and 2: for a point the distance of its
   reprojection, for a line the RMS of the distances of its two observed end points to the
   reprojected 3D line, truncated at 2 x RansacParams::threshold (see there);
 - local optimisation: the linear solver re-run on the inliers of each new best model;
 - adaptive stopping from the inlier ratios at the requested confidence;
-- with few features (few enough distinct samples to enumerate, and no more than maxIterations),
-  every distinct sample drawn once instead, in an order set by the seed; when none has support, the
-  linear solution over all features goes on to the inlier test;
+- where the features admit few enough distinct samples to enumerate (and no more than
+  RansacParams::maxIterations), every distinct sample drawn once instead, in an order set by the
+  seed; when none has support, the linear solution over all features goes on to the inlier test;
 - final maximum-likelihood refinement (as refinePoseLinePoint(), with RansacParams::refineParams) on
-  the inliers, the inliers then re-classified and the refinement repeated until they settle (in a
-  few rounds). Where the cost has several basins (a narrow baseline of views 1-2 or planar
-  structure; also few points among the features, on sets that do not draw the samples of points
-  and lines mixed), on moderate inlier sets the refinement also starts from the linear solution on
-  the inliers, from poses of distinct rotations from four-inlier subsets (as in
-  estimatePoseLinePoint() with #POSE_LINEAR_REFINE) and from starts that keep the rotation and move
-  view 3's centre around view 1 (repeated around the best minimum when its rotation moved), each
-  re-triangulated until it settles, and keeps the lowest cost; on moderate sets the same is done
-  from all features too, and the lower truncated cost of the two wins. There a single refinement
-  can leave the pose in another local minimum (doc/studies/accuracy.md). The other minima it reaches
-  that the noise cannot tell from the returned one are reported in @p candidateRs.
+  the inliers, the inliers then re-classified and the refinement repeated until they settle. Where
+  the cost may have several basins (a narrow baseline of views 1-2, planar structure, few points
+  among the features where samples of four features are drawn), where a single refinement can
+  leave the pose in another local minimum (doc/studies/accuracy.md), the refinement also starts
+  from further poses (the linear solutions on the inliers and on subsets of them, as
+  estimatePoseLinePoint() with #POSE_LINEAR_REFINE, and poses that keep the rotation and move view
+  3's centre around view 1), each re-triangulated until it settles, and keeps the lowest cost (on
+  large inlier sets only where the baseline of views 1-2 is narrow); on sets that are not large it
+  is also run from all features, and the lower truncated cost of the two wins. The other minima it
+  reaches that the noise cannot tell from the returned one are reported in @p candidateRs.
 
 Arguments as in estimatePoseLinePoint().
 @param params See RansacParams.

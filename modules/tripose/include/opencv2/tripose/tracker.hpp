@@ -143,8 +143,9 @@ public:
 
     /** How far the points of the first two frames agree with their given poses, judged without them:
     (points matched by descriptor alone, of them lying within the epipolar distance of their
-    epipolar lines). Under 30 % of 20 or more says that the images are not in the poses' order or
-    the calibration is not theirs. (0, 0) before frame 1, or from observations. */
+    epipolar lines). A small share of many matches says that the images are not in the poses' order
+    or the calibration is not theirs (doc/usage.md gives the samples' rule). (0, 0) before frame 1,
+    or from observations. */
     virtual Vec2i givenPairAgreement() const = 0;
 };
 
@@ -169,7 +170,7 @@ keyframes that gives a pose with at least TrackerParams::minInliers inliers; a f
 is lost (FRAME_LOST, TrackedFrame::reason says why), never given a wrong pose, and tracking goes on
 with the next frame. A registered frame becomes a keyframe when its inlier structure subtends at
 least TrackerParams::keyframeParallaxDeg between it and the keyframe (a rig standing still adds
-none), or when the keyframe's stereo pair sees less than half of its own stereo matches (a rig
+none), or when the keyframe's stereo pair sees too few of its own stereo matches (a rig
 turning on the spot adds them before its view leaves the keyframe's). TrackerParams::localAdjustment
 is not used. TrackedFrame::features counts the features the frame shares with its keyframe's
 stereo pair (with the newest keyframe's when lost), and TrackedFrame::knownViews is 1 (one stereo
