@@ -159,12 +159,20 @@ def plot_sequence(label, documents, tripose, output, prefix):
     return path
 
 
+def tripose_label(sequence, path):
+    """The legend's name of a tracker trajectory from track_real_sequences.py's file name
+    (<sequence>-cpp.txt: tripose_track, <sequence>-python.txt: tripose-track), else the file's name."""
+    program = path.stem[len(sequence) + 1:] if path.stem.startswith(sequence + "-") else None
+    return {"cpp": "tripose_track (C++)", "python": "tripose-track (Python)"}.get(program, f"tripose ({path.name})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--colmap", nargs="+", type=Path, required=True, help="JSON files or folders of them")
     parser.add_argument("--tripose", nargs="*", default=[], metavar="SEQUENCE=TUM",
                         help="the tracker's trajectory of a sequence; repeat a sequence for several programs")
-    parser.add_argument("--label", nargs="*", default=None, help="a legend label per --tripose file")
+    parser.add_argument("--label", nargs="*", default=None,
+                        help="a legend label per --tripose file (default: from track_real_sequences.py's file names)")
     parser.add_argument("--output", type=Path, required=True)
     parser.add_argument("--prefix", default="", help="prefix of the PNG file names")
     args = parser.parse_args()
@@ -185,7 +193,7 @@ def main():
         if not sep or sequence not in by_sequence:
             parser.error(f"--tripose: {item!r} is not SEQUENCE=TUM with a sequence of the JSON files "
                          f"({', '.join(sorted(by_sequence))})")
-        label = args.label[i] if args.label else f"tripose ({Path(path).stem})"
+        label = args.label[i] if args.label else tripose_label(sequence, Path(path))
         tripose.setdefault(sequence, []).append((label, Path(path)))
     for label, documents in by_sequence.items():
         documents.sort(key=lambda d: d["method"], reverse=True)
