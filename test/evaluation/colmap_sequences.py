@@ -354,13 +354,16 @@ def main():
                         help="IncrementalMapperOptions changed from COLMAP's defaults, e.g. init_min_tri_angle=4")
     args = parser.parse_args()
     mapper = []
+    defaults = _mapper_defaults() if args.mapper else None
     for item in args.mapper:
         name, sep, value = item.partition("=")
-        if not sep or not hasattr(pycolmap_options := _mapper_defaults(), name):
+        if not sep or name.startswith("_") or not hasattr(defaults, name):
             parser.error(f"--mapper: {item!r} is not NAME=VALUE with a name of IncrementalMapperOptions")
-        default = getattr(pycolmap_options, name)
+        default = getattr(defaults, name)
+        if not isinstance(default, (bool, int, float)):
+            parser.error(f"--mapper: {name} is not a number option")
         try:
-            mapper.append((name, type(default)(float(value)) if not isinstance(default, bool) else value == "1"))
+            mapper.append((name, value == "1" if isinstance(default, bool) else type(default)(float(value))))
         except ValueError:
             parser.error(f"--mapper: {item!r}: {value!r} is not a number")
     args.mapper = mapper
@@ -375,7 +378,10 @@ def main():
     jobs += [(folder.name, lambda folder=folder: folder_sequence(folder)) for folder in args.folders]
     rows = []
     for label, load in jobs:
-        seq = load()
+        try:
+            seq = load()
+        except ValueError as error:
+            parser.error(str(error))
         rows += evaluate(pycolmap, label, seq, args)
     print(f"\nCOLMAP (pycolmap {pycolmap.__version__}, {args.runs} run(s), median (range)): sequence | method | "
           "image size | frames with a pose | last frame deg / % path | largest deg / % | s per frame")
