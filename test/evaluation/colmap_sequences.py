@@ -3,13 +3,14 @@
 fixed, after sequential and after exhaustive matching, aligned to the ground truth as the tracker is (frame 0 at
 the identity, the 0-1 baseline of the ground truth's length) and compared frame by frame.
 
-    python test/evaluation/colmap_sequences.py [--sequences fountain_p11 ...] [--folders DIR ...]
+    python test/evaluation/colmap_sequences.py [--sequences fountain_p11 ...] [--folders DIR ...] [--methods ...]
                                                [--output DIR] [--runs N] [--threads 1] [--seed 0]
                                                [--init-first-pair] [--mapper NAME=VALUE ...]
 
 A folder holds a sequence in the tracker's layout: its images (an `images/` folder, or a list file
-`images.txt` or `frames.txt` as tripose-track --images reads it), `calib.yml` (K) and `groundtruth.txt`
-(TUM, one pose per frame, matched by timestamp, else in order). With --output, one JSON file per sequence and
+`images.txt`, `frames.txt` or `left.txt` (render_sequence.py's) as tripose-track --images reads it),
+`calib.yml` (K, dist zero if any) and `groundtruth.txt` (TUM, one pose per frame, matched by timestamp,
+else in order). With --output, one JSON file per sequence and
 method holds every run's per-frame errors and aligned poses and the ground truth (plot_trajectories.py draws
 them).
 """
@@ -94,9 +95,10 @@ def folder_sequence(folder):
                         key=_natural_key)
         stamps = None
     else:
-        lists = [folder / name for name in ("images.txt", "frames.txt") if (folder / name).is_file()]
+        lists = [folder / name for name in ("images.txt", "frames.txt", "left.txt") if (folder / name).is_file()]
         if not lists:
-            raise ValueError(f"folders: {folder}: neither an images/ folder nor an images.txt or frames.txt list")
+            raise ValueError(f"folders: {folder}: neither an images/ folder nor an images.txt, frames.txt or "
+                             "left.txt list")
         stamps, images = _read_image_list(lists[0])
     if len(images) < 2:
         raise ValueError(f"folders: {folder}: fewer than two images")
@@ -288,14 +290,14 @@ def report_row(label, seq, method, runs):
 
 def evaluate(pycolmap, label, seq, args):
     """Every run of both methods on one sequence: the table's rows, and the JSON files under --output."""
-    results = {m: [] for m in METHODS}
+    results = {m: [] for m in args.methods}
     with tempfile.TemporaryDirectory(prefix="colmap-") as tmp:
         tmp = Path(tmp)
         # SIFT extraction on the CPU is deterministic: the features are extracted once and their time
         # counted in every run of both methods.
         features, images, extract_seconds = extract(pycolmap, seq, tmp, args.threads)
         for run in range(args.runs):
-            for method in METHODS:
+            for method in args.methods:
                 work = tmp / f"run{run}"
                 work.mkdir(exist_ok=True)
                 seed = args.seed + run
@@ -336,7 +338,7 @@ def evaluate(pycolmap, label, seq, args):
                 "median_run": sorted(lasts)[(len(lasts) - 1) // 2][1] if lasts else 0,
                 "runs": runs}
             (args.output / f"{label}-colmap-{tag}.json").write_text(json.dumps(document, indent=1) + "\n")
-    return [report_row(label, seq, m + suffix, results[m]) for m in METHODS]
+    return [report_row(label, seq, m + suffix, results[m]) for m in args.methods]
 
 
 def main():
@@ -344,6 +346,7 @@ def main():
     parser.add_argument("--sequences", nargs="*", default=None, choices=SEQUENCES,
                         help="real sequences (default: all four unless --folders is given)")
     parser.add_argument("--folders", nargs="+", type=Path, default=[], help="sequences in the tracker's layout")
+    parser.add_argument("--methods", nargs="+", default=METHODS, choices=METHODS, help="matching (default both)")
     parser.add_argument("--output", type=Path, help="folder for the per-frame JSON files")
     parser.add_argument("--runs", type=int, default=1, help="reconstructions per method (seeds seed..seed+N-1)")
     parser.add_argument("--threads", type=int, default=1, help="COLMAP's threads (default 1)")
