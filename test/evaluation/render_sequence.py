@@ -160,7 +160,8 @@ def sky():
 
 
 def mipmap(image):
-    """The texture's levels: the image, then halved by area averaging down to 8 px."""
+    """The texture's levels: the image, then halved by area averaging while its sides reach 16 px
+    (each level spans the whole texture, odd sides rounded up)."""
     levels = [image]
     while min(levels[-1].shape[:2]) >= 16:
         h, w = levels[-1].shape[:2]
@@ -657,6 +658,8 @@ def write_sequence(folder, frames=LOOP_FRAMES, stereo=False, seed=0, noise=NOISE
         raise ValueError(f"frames: at least 2 are needed (the mono calibration holds frames 0-1), got {frames}")
     if noise < 0:
         raise ValueError(f"noise: expected a standard deviation >= 0, got {noise}")
+    if seed < 0:
+        raise ValueError(f"seed: expected a whole number >= 0, got {seed}")
     folder = Path(folder)
     quads = courtyard()
     walk = poses(frames)
