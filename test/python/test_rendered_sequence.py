@@ -75,12 +75,14 @@ def plane_residual(folder, i, j, shift=(0.0, 0.0)):
     Rj, tj = poses[j]
     ni, di = Ri @ n0, d0 + (Ri @ n0) @ ti
     R, t = rs.relative_pose(Ri, ti, Rj, tj)
-    H = np.array([[1, 0, shift[0]], [0, 1, shift[1]], [0, 0, 1]]) @ render.K @ (R + np.outer(t, ni) / di) @ np.linalg.inv(render.K)
-    images = [cv2.imread(str(folder / "left" / f"{k:06d}.png"), cv2.IMREAD_GRAYSCALE).astype(np.float32) for k in (i, j)]
+    moved = np.array([[1, 0, shift[0]], [0, 1, shift[1]], [0, 0, 1]])
+    H = moved @ render.K @ (R + np.outer(t, ni) / di) @ np.linalg.inv(render.K)
+    images = [cv2.imread(str(folder / "left" / f"{k:06d}.png"), cv2.IMREAD_GRAYSCALE).astype(np.float32)
+              for k in (i, j)]
     size = (render.WIDTH, render.HEIGHT)
     warped = cv2.warpPerspective(images[1], H, size, flags=cv2.INTER_LINEAR | cv2.WARP_INVERSE_MAP)
-    wall_in_j = cv2.warpPerspective(seen[1].astype(np.float32), H, size, flags=cv2.INTER_NEAREST | cv2.WARP_INVERSE_MAP,
-                                    borderValue=-1)
+    wall_in_j = cv2.warpPerspective(seen[1].astype(np.float32), H, size,
+                                    flags=cv2.INTER_NEAREST | cv2.WARP_INVERSE_MAP, borderValue=-1)
     index = quads.index(wall)
     both = ((seen[0] == index) & (wall_in_j == index)).astype(np.uint8)
     both = cv2.erode(both, np.ones((7, 7), np.uint8)).astype(bool)
