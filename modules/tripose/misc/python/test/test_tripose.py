@@ -911,5 +911,77 @@ class tripose_test(NewOpenCVTests):
         except cv.error as e:
             self.assertTrue(names_argument(str(e), 'Rs'), str(e))
 
+    def test_agrees_with_the_package(self):
+        # The problems of test/data/agreement/cv2_agreement.npz (three views, a stereo rig, several
+        # known views; 0.5 px noise, 25 % wrong matches for RANSAC) and the tripose package's
+        # solutions of them, recorded by python/tests/test_cv2_agreement.py, which also checks the
+        # package against them: cv2.tripose gives the same, so the two agree without both being
+        # installed in one Python. Every optional output in the order the C++ functions declare it.
+        path = self.find_file('agreement/cv2_agreement.npz', required=False)
+        if path is None:
+            self.skipTest('test/data/agreement/cv2_agreement.npz not found (OPENCV_TEST_DATA_PATH=<repo>/test/data)')
+        with np.load(path, allow_pickle=False) as data:
+            p = {key: data[key] for key in data.files}
+        params = cv.tripose.RansacParams()
+        params.seed = int(p['seed'])
+        views = len(p['multi_Rs']) + 1
+        multi_points = [p['multi_points%d' % v] for v in range(views)]
+        multi_lines = [p['multi_lines%d' % v] for v in range(views)]
+        multi_ransac = (multi_points[:-1] + [p['multi_ransac_points']], multi_lines[:-1] + [p['multi_ransac_lines']])
+        rig_late = lambda prefix: [p[prefix + 'points3'], p[prefix + 'points4']]
+        rig_late_lines = lambda prefix: [p[prefix + 'lines3'], p[prefix + 'lines4']]
+        three = (p['three_K'], None, p['three_R12'], p['three_t12'])
+        rig = (p['rig_K'], None, p['rig_R12'], p['rig_t12'])
+        linear = {
+            'three': cv.tripose.estimatePoseLinePoint(p['three_points1'], p['three_points2'], p['three_points3'],
+                                                      p['three_lines1'], p['three_lines2'], p['three_lines3'], *three),
+            'rig': cv.tripose.estimatePoseLinePointStereo(p['rig_points1'], p['rig_points2'], *rig_late('rig_'),
+                                                          p['rig_lines1'], p['rig_lines2'], *rig_late_lines('rig_'),
+                                                          *rig),
+            'multi': cv.tripose.estimatePoseMultiView(multi_points, multi_lines, p['multi_K'], None,
+                                                      list(p['multi_Rs']), list(p['multi_ts'])),
+        }
+        robust = {
+            'three': cv.tripose.estimatePoseLinePointRansac(
+                p['three_points1'], p['three_points2'], p['three_ransac_points3'], p['three_lines1'],
+                p['three_lines2'], p['three_ransac_lines3'], *three, params=params),
+            'rig': cv.tripose.estimatePoseLinePointStereoRansac(
+                p['rig_points1'], p['rig_points2'], *rig_late('rig_ransac_'), p['rig_lines1'], p['rig_lines2'],
+                *rig_late_lines('rig_ransac_'), *rig, params=params),
+            'multi': cv.tripose.estimatePoseMultiViewRansac(multi_ransac[0], multi_ransac[1], p['multi_K'], None,
+                                                            list(p['multi_Rs']), list(p['multi_ts']), params=params),
+        }
+
+        def expect_poses(Rs, ts, key_R, key_t, what):
+            # The same core on the same doubles: builds differ in rounding only.
+            R0 = p[key_R].reshape(-1, 3, 3)
+            t0 = p[key_t].reshape(-1, 3)
+            self.assertEqual(len(Rs), len(R0), what)
+            scale = max(1.0, float(np.abs(t0).max()))
+            for k in range(len(R0)):
+                self.assertLess(np.abs(np.asarray(Rs[k], np.float64).reshape(3, 3) - R0[k]).max(), 1e-8, what)
+                self.assertLess(np.abs(np.asarray(ts[k], np.float64).ravel() - t0[k]).max(), 1e-8 * scale, what)
+
+        for family in ('three', 'rig', 'multi'):
+            count, R, t, Rs, ts = linear[family][:5]
+            self.assertEqual(count, len(Rs), family)
+            expect_poses(Rs, ts, family + '_linear_Rs', family + '_linear_ts', family + ' linear')
+            key = family + '_ransac_'
+            n, R, t, point_inliers, line_inliers, Rs, ts, errors, covariance, noise_variance = robust[family]
+            what = family + ' RANSAC'
+            self.assertEqual(n, int(p[key + 'num_inliers']), what)
+            np.testing.assert_array_equal(np.asarray(point_inliers).ravel() != 0, p[key + 'point_inliers'], what)
+            np.testing.assert_array_equal(np.asarray(line_inliers).ravel() != 0, p[key + 'line_inliers'], what)
+            expect_poses([R], [t], key + 'R', key + 't', what)
+            expect_poses(Rs, ts, key + 'candidate_Rs', key + 'candidate_ts', what + ' candidates')
+            rms0 = p[key + 'candidate_rms']
+            self.assertEqual(np.asarray(errors).size, rms0.size, what)
+            self.assertLess(np.abs(np.asarray(errors, np.float64).ravel() - rms0).max(), 1e-8 * rms0.max(), what)
+            C0 = p[key + 'covariance']
+            self.assertLess(np.linalg.norm(np.asarray(covariance, np.float64) - C0), 1e-6 * np.linalg.norm(C0), what)
+            s20 = float(p[key + 'noise_variance'])
+            self.assertLess(abs(float(np.asarray(noise_variance).ravel()[0]) - s20), 1e-8 * s20, what)
+
+
 if __name__ == '__main__':
     NewOpenCVTests.bootstrap()
