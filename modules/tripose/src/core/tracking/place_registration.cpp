@@ -100,6 +100,14 @@ Registration registerAgainstPlace(TrackStore& store, int frame, const FrameFeatu
         out = Registration();
         out.reason = e.what();
     }
+    // Matches to a place are checked by no earlier frame: a pose most of them contradict is a
+    // coincidence of repeated texture, not the place.
+    if (out.registered && 2 * out.inliers < out.features)
+    {
+        out.registered = false;
+        out.reason = formatString("%d of the %d features shared with the place agree with its pose; half must",
+                                  out.inliers, out.features);
+    }
     if (!out.registered)
         store = std::move(before);
     return out;

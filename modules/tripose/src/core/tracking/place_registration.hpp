@@ -27,7 +27,8 @@ std::vector<int> covisibleKeyframes(const TrackStore& store, int keyframe, int c
 loop, or a lost camera found again): the frame's features are matched to the keyframe's under their
 fundamental matrix (matchUnknownPose()); each match joins the frame's feature to the keyframe
 feature's track, the two tracks merged where the frame's feature already had one and they share no
-frame; then registerAgainstWindow() on @p neighbours with @p minInliers. Registered: the store keeps
+frame; then registerAgainstWindow() on @p neighbours with @p minInliers, and at least half of the features
+agreeing with the pose. Registered: the store keeps
 the links (the frame's pose is left to the caller); else the store is as it was. */
 Registration registerAgainstPlace(TrackStore& store, int frame, const FrameFeatures& features, int keyframe,
                                   const FrameFeatures& keyframeFeatures, const std::vector<int>& neighbours,

@@ -282,11 +282,13 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
                 window.insert(window.begin(), j);
         const int recent = (int)window.size();
         oldestRecent = window.empty() ? -1 : window.front();
-        // Older keyframes that see much of what the frame sees (a place the camera came back to)
-        // join the window, so that the frame is held by the structure already known there.
-        for (const auto& k : keyframesSharingTracks(store_, frame, options_.minInliers))
-            if ((int)window.size() < recent + options_.window && (window.empty() || k.first < window.front()))
-                window.push_back(k.first);
+        // With loop closure, older keyframes that see much of what the frame sees (a place the
+        // camera came back to) join the window, so that the frame is held by the structure already
+        // known there.
+        if (options_.loopClosure)
+            for (const auto& k : keyframesSharingTracks(store_, frame, options_.minInliers))
+                if ((int)window.size() < recent + options_.window && (window.empty() || k.first < window.front()))
+                    window.push_back(k.first);
         std::sort(window.begin(), window.end());
         result.knownViews = (int)window.size();
         Registration r;
@@ -375,16 +377,8 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
             result.recognisedKeyframe < 0 && oldestRecent >= 0)
         {
             // The keyframes older than the window that look like the frame are places it may see
-            // again: one it registers against is linked to it; a loop when the frame's tracks did not
-            // reach it yet or the two poses of the frame disagree.
-            std::set<int> reached;
-            const StoredFrame& f = store_.frames[frame];
-            for (int kind = 0; kind < 2; ++kind)
-                for (int track : kind == 0 ? f.pointTrack : f.lineTrack)
-                    if (track >= 0)
-                        for (const auto& o : store_.observationsOf(kind == 0 ? FeatureKind::Point : FeatureKind::Line,
-                                                                   track))
-                            reached.insert(o.first);
+            // again: one it registers against is linked to it (its tracks join theirs), and closes a
+            // loop when the frame's pose through it and its tracked pose disagree.
             int keyframe = -1;
             const Registration place = recognisePlace(
                 frame, *features, [&](int k) { return k < oldestRecent; }, 2 * options_.minInliers, keyframe);
@@ -395,7 +389,7 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
                 const double angle = Eigen::AngleAxisd(place.pose.R * tracked.R.transpose()).angle();
                 const double shift = (place.pose.centre() - tracked.centre()).norm();
                 const double reach = (store_.frames[keyframe].pose.centre() - tracked.centre()).norm();
-                if (!reached.count(keyframe) || angle > kLoopAngle || shift > kLoopShift * reach)
+                if (angle > kLoopAngle || shift > kLoopShift * reach)
                 {
                     closeLoop(frame, keyframe, place.pose);
                     closed = true;

@@ -37,14 +37,17 @@ struct TrackerOptions
     bool localAdjustment = false;
     /** After each new keyframe, the keyframes older than the window that look most like it (by
     descriptors) are tried as a place seen before: when the frame registers against one of them and
-    its neighbours with twice minInliers, its tracks join theirs (a loop), the correction is spread
-    along the frames since, and every registered frame is adjusted with the structure (given frames
-    held). Needs descriptors (frames given as features). */
-    bool loopClosure = true;
+    its neighbours with twice minInliers (and half of the features shared), its tracks join theirs;
+    when its pose through the place disagrees with its tracked pose (a loop), the correction is
+    spread along the frames since and every registered frame is adjusted with the structure (given
+    frames held). Keyframes that share minInliers tracks with a frame then join its window. It costs
+    a place check per keyframe (doc/studies/front_end_and_tracker.md), hence off by default. Needs
+    descriptors (frames given as features). */
+    bool loopClosure = false;
     /** Every this many new keyframes, every registered frame and the structure are adjusted
     together with the given frames held, and the observations that disagree with the result leave
     their tracks (0: only when a loop closes). */
-    int globalAdjustmentInterval = 10;
+    int globalAdjustmentInterval = 0;
     bool robust = true; //!< The robust multi-view estimator (else the linear one on every feature).
     RansacOptions ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
     MatchOptions matching; //!< Of the features of consecutive frames.
