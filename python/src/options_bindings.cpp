@@ -283,6 +283,13 @@ void bindOptions(nb::module_& m)
                 "registration rejects.")
         .def_rw("local_adjustment", &tripose::TrackerOptions::localAdjustment,
                 "Refine the window's registered frames and their structure after each registration.")
+        .def_rw("loop_closure", &tripose::TrackerOptions::loopClosure,
+                "After each new keyframe, look for a place seen before among the keyframes older than the "
+                "window (by descriptors); registered against it, join the tracks, spread the correction and "
+                "adjust every frame (frames given as features only).")
+        .def_rw("global_adjustment_interval", &tripose::TrackerOptions::globalAdjustmentInterval,
+                "Every this many new keyframes, adjust every registered frame and the structure together, "
+                "the given frames held, and split off the observations that disagree (0: only at a loop).")
         .def_rw("robust", &tripose::TrackerOptions::robust,
                 "Register with the robust estimator (else the linear one on every feature).")
         .def_rw("ransac", &tripose::TrackerOptions::ransac, "RansacOptions of the registration.")
@@ -294,10 +301,11 @@ void bindOptions(nb::module_& m)
                 "How many frames back a frame is matched when the nearer ones share too few matches with it.")
         .def("__repr__", [](const tripose::TrackerOptions& o) {
             return tripose::formatString("TrackerOptions(window=%d, min_inliers=%d, keyframe_parallax_deg=%g, "
-                                         "check_tracks=%s, local_adjustment=%s, robust=%s, max_frame_gap=%d, ...)",
+                                         "check_tracks=%s, local_adjustment=%s, loop_closure=%s, "
+                                         "global_adjustment_interval=%d, robust=%s, max_frame_gap=%d, ...)",
                                          o.window, o.minInliers, o.keyframeParallaxDeg,
                                          o.checkTracks ? "True" : "False", o.localAdjustment ? "True" : "False",
-                                         o.robust ? "True" : "False", o.maxFrameGap);
+                                         o.loopClosure ? "True" : "False", o.globalAdjustmentInterval, o.robust ? "True" : "False", o.maxFrameGap);
         });
     defKeywordConstructor(tracker);
 }

@@ -94,6 +94,9 @@ void bindTracker(nb::module_& m)
         .def_ro("inliers", &tripose::FrameResult::inliers, "Of them, those that agree with the pose.")
         .def_ro("known_views", &tripose::FrameResult::knownViews, "Window keyframes registered against.")
         .def_ro("keyframe", &tripose::FrameResult::keyframe, "Later frames are registered against it.")
+        .def_ro("recognised_keyframe", &tripose::FrameResult::recognisedKeyframe,
+                "The keyframe of a place seen before through which the frame was registered: a loop it "
+                "closed, or where the lost camera was found again; -1 for neither.")
         .def_ro("milliseconds", &tripose::FrameResult::milliseconds, "Time of matching and registration.")
         .def_ro("reason", &tripose::FrameResult::reason, "Why the frame is lost; empty otherwise.")
         .def_prop_ro("covariance", [](const tripose::FrameResult& r) -> nb::object {

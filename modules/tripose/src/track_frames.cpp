@@ -24,6 +24,8 @@ TrackerParams::TrackerParams()
     keyframeParallaxDeg = defaults.keyframeParallaxDeg;
     checkTracks = defaults.checkTracks;
     localAdjustment = defaults.localAdjustment;
+    loopClosure = defaults.loopClosure;
+    globalAdjustmentInterval = defaults.globalAdjustmentInterval;
     robust = defaults.robust;
     maxFrameGap = defaults.maxFrameGap;
     covariance = defaults.covariance;

@@ -20,6 +20,8 @@ namespace detail {
     o.keyframeParallaxDeg = params.keyframeParallaxDeg;
     o.checkTracks = params.checkTracks;
     o.localAdjustment = params.localAdjustment;
+    o.loopClosure = params.loopClosure;
+    o.globalAdjustmentInterval = params.globalAdjustmentInterval;
     o.robust = params.robust;
     o.ransac = toCoreOptions(params.ransac);
     o.matching = toCoreOptions(params.matching);
@@ -75,6 +77,7 @@ TrackedFrame toTrackedFrame(const ::tripose::FrameResult& r)
     out.features = r.features;
     out.inliers = r.inliers;
     out.knownViews = r.knownViews;
+    out.recognisedKeyframe = r.recognisedKeyframe;
     out.keyframe = r.keyframe;
     out.milliseconds = r.milliseconds;
     out.reason = r.reason;

@@ -36,6 +36,18 @@ struct CV_EXPORTS TrackerParams
     //! After each registration, refine the window's registered frames and their structure against the
     //! earlier keyframes (default false).
     bool localAdjustment;
+    /** After each new keyframe, look for a place seen before among the keyframes older than the
+    window (by their descriptors); when the frame registers against one, its tracks join theirs, and
+    when they did not reach it yet or the frame's two poses disagree, the correction is spread along
+    the frames since and every registered frame is adjusted with the structure, the given frames held;
+    keyframes sharing minInliers tracks with a frame join its window (default false: it costs a
+    place check per keyframe). Frames given as features only. A frame lost against the window is
+    looked for among every keyframe's places whatever this says. */
+    bool loopClosure;
+    /** Every this many new keyframes, adjust every registered frame and the structure together, the
+    given frames held, and split off the observations that disagree with the result (default 0:
+    only when a loop closes). */
+    int globalAdjustmentInterval;
     bool robust; //!< Register with estimatePoseMultiViewRansac()'s estimator (default true), else the linear one.
     RansacParams ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
     MatchParams matching; //!< Of consecutive frames' features.
@@ -66,6 +78,9 @@ struct CV_EXPORTS TrackedFrame
     int knownViews = 0;          //!< Window keyframes registered against.
     bool keyframe = false;       //!< Later frames are registered against it.
     double milliseconds = 0;     //!< Time of matching and registration.
+    //! The keyframe of a place seen before through which the frame was registered: a loop it closed
+    //! or a link to an older place, or where a lost camera was found again; -1 for neither.
+    int recognisedKeyframe = -1;
     std::string reason;          //!< Why the frame is lost; empty otherwise.
     std::vector<int> pointTracks, lineTracks; //!< Per point and segment of the frame: its track, -1 for none.
     /** With TrackerParams::covariance, for a registered frame whose pose is determined: 6x6 CV_64F, the

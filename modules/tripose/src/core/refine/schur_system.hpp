@@ -26,7 +26,10 @@ struct StructureBlock
 {
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
     Eigen::Matrix<double, D, D> V;    //!< Structure-structure block J_s^T w J_s.
-    Eigen::Matrix<double, P, D> W;    //!< Pose-structure block J_p^T w J_s.
+    //! Pose-structure block J_p^T w J_s: all P rows for one pose; for several poses, 6 rows per pose
+    //! in @p poses (those the feature's observations depend on), in that order.
+    Eigen::Matrix<double, P, D> W;
+    std::vector<int> poses;           //!< Several poses: the poses of W's rows.
     Eigen::Matrix<double, D, 1> g;    //!< Structure gradient J_s^T w r.
     Eigen::Matrix<double, D, D> Vinv; //!< Inverse of the damped V (set per damping value).
     Eigen::Matrix<double, D, 1> diag; //!< Marquardt scaling of the damping.
@@ -58,10 +61,13 @@ public:
         const int n = 6 * poses;
         points_.resize(points);
         lines_.resize(lines);
-        for (StructureBlock<3, P>& b : points_)
-            b.W.resize(n, 3);
-        for (StructureBlock<4, P>& b : lines_)
-            b.W.resize(n, 4);
+        if constexpr (!kSeveral)
+        {
+            for (StructureBlock<3, P>& b : points_)
+                b.W.resize(n, 3);
+            for (StructureBlock<4, P>& b : lines_)
+                b.W.resize(n, 4);
+        }
         U_.resize(n, n);
         gPose_.resize(n);
         poseDiag_.resize(n);
@@ -84,7 +90,13 @@ public:
     StructureBlock<D, P>& begin(StructureBlock<D, P>& block)
     {
         block.V.setZero();
-        block.W.setZero();
+        if constexpr (kSeveral)
+        {
+            block.poses.clear();
+            block.W.resize(0, D);
+        }
+        else
+            block.W.setZero();
         block.g.setZero();
         block.active = true;
         return block;
@@ -107,7 +119,10 @@ public:
         if (Jp)
         {
             const int o = 6 * pose;
-            block.W.template middleRows<6>(o).noalias() += Jp->transpose() * wJs;
+            if constexpr (kSeveral)
+                block.W.template middleRows<6>(6 * slot(block, pose)).noalias() += Jp->transpose() * wJs;
+            else
+                block.W.template middleRows<6>(o).noalias() += Jp->transpose() * wJs;
             U_.template block<6, 6>(o, o).noalias() += Jp->transpose() * (weight * *Jp);
             gPose_.template segment<6>(o).noalias() += Jp->transpose() * (weight * r);
         }
@@ -162,6 +177,66 @@ public:
     }
 
 private:
+    //! Several poses (P dynamic): each structure block couples only the poses that see it, so its
+    //! pose-structure block holds those poses' rows alone and the elimination touches only their
+    //! blocks of the reduced system, which keeps a step linear in the number of features.
+    static constexpr bool kSeveral = P == Eigen::Dynamic;
+
+    //! The index of @p pose among @p block's poses, added (its rows zeroed) when new.
+    template <int D>
+    static int slot(StructureBlock<D, P>& block, int pose)
+    {
+        for (size_t i = 0; i < block.poses.size(); ++i)
+            if (block.poses[i] == pose)
+                return (int)i;
+        block.poses.push_back(pose);
+        const Eigen::Index rows = 6 * (Eigen::Index)block.poses.size();
+        block.W.conservativeResize(rows, D);
+        block.W.template bottomRows<6>().setZero();
+        return (int)block.poses.size() - 1;
+    }
+
+    //! reduced -= W A W^T and b += W A g over the poses of @p block (A symmetric D x D).
+    template <int D>
+    static void subtractCoupling(const StructureBlock<D, P>& block, const Eigen::Matrix<double, D, D>& A,
+                                 PoseMatrix& reduced, PoseVector* b)
+    {
+        if constexpr (!kSeveral)
+        {
+            const Eigen::Matrix<double, P, D> Y = block.W * A;
+            reduced.noalias() -= Y * block.W.transpose();
+            if (b)
+                b->noalias() += Y * block.g;
+            return;
+        }
+        else
+        {
+        const Eigen::Matrix<double, Eigen::Dynamic, D> Y = block.W * A;
+        for (size_t i = 0; i < block.poses.size(); ++i)
+        {
+            const int oi = 6 * block.poses[i];
+            for (size_t j = 0; j < block.poses.size(); ++j)
+                reduced.template block<6, 6>(oi, 6 * block.poses[j]).noalias() -=
+                    Y.template middleRows<6>(6 * i) * block.W.template middleRows<6>(6 * j).transpose();
+            if (b)
+                b->template segment<6>(oi).noalias() += Y.template middleRows<6>(6 * i) * block.g;
+        }
+        }
+    }
+
+    //! W^T poseStep over the poses of @p block.
+    template <int D>
+    static Eigen::Matrix<double, D, 1> transposedTimes(const StructureBlock<D, P>& block, const PoseVector& poseStep)
+    {
+        if constexpr (!kSeveral)
+            return block.W.transpose() * poseStep;
+        Eigen::Matrix<double, D, 1> out = Eigen::Matrix<double, D, 1>::Zero();
+        for (size_t i = 0; i < block.poses.size(); ++i)
+            out.noalias() += block.W.template middleRows<6>(6 * i).transpose() *
+                             poseStep.template segment<6>(6 * block.poses[i]);
+        return out;
+    }
+
     template <typename T>
     using AlignedVector = std::vector<T, Eigen::aligned_allocator<T>>;
 
@@ -195,9 +270,7 @@ private:
             block.Vinv.setZero();
             return;
         }
-        const Eigen::Matrix<double, P, D> Y = block.W * block.Vinv;
-        S.noalias() -= Y * block.W.transpose();
-        b.noalias() += Y * block.g;
+        subtractCoupling<D>(block, block.Vinv, S, &b);
     }
 
     template <int D>
@@ -208,7 +281,10 @@ private:
         const Eigen::LLT<Eigen::Matrix<double, D, D>> llt(block.V);
         if (llt.info() != Eigen::Success)
             return false;
-        reduced.noalias() -= block.W * llt.solve(block.W.transpose());
+        if constexpr (kSeveral)
+            subtractCoupling<D>(block, llt.solve(Eigen::Matrix<double, D, D>::Identity()), reduced, nullptr);
+        else
+            reduced.noalias() -= block.W * llt.solve(block.W.transpose());
         return true;
     }
 
@@ -221,7 +297,7 @@ private:
             block.step.setZero();
             return 0;
         }
-        block.step.noalias() = -block.Vinv * (block.g + block.W.transpose() * poseStep);
+        block.step.noalias() = -block.Vinv * (block.g + transposedTimes<D>(block, poseStep));
         return block.step.dot(lambda * block.diag.cwiseProduct(block.step) - block.g);
     }
 

@@ -28,7 +28,7 @@ void TrackStore::observe(FeatureKind kind, int track, int frame, int row)
 int TrackStore::rowIn(FeatureKind kind, int track, int frame) const
 {
     const Track& t = tracks(kind)[track];
-    // Observations are added frame by frame: the most recent frames are at the back.
+    // Observations are kept in frame order: the most recent frames are at the back.
     for (auto it = t.rbegin(); it != t.rend(); ++it)
         if (it->first == frame)
             return it->second;
@@ -45,6 +45,23 @@ int TrackStore::split(FeatureKind kind, int frame, int row)
     const int track = newTrack(kind);
     observe(kind, track, frame, row);
     return track;
+}
+
+bool TrackStore::merge(FeatureKind kind, int keep, int drop)
+{
+    if (keep == drop)
+        return true;
+    Track& a = tracks(kind)[keep];
+    Track& b = tracks(kind)[drop];
+    for (const auto& o : b)
+        if (rowIn(kind, keep, o.first) >= 0)
+            return false;
+    for (const auto& o : b)
+        trackOf(kind, o.first)[o.second] = keep;
+    a.insert(a.end(), b.begin(), b.end());
+    std::sort(a.begin(), a.end());
+    b.clear();
+    return true;
 }
 
 void TrackStore::observation(FeatureKind kind, int track, int frame, double* out) const

@@ -52,11 +52,19 @@ public:
     int rowIn(FeatureKind kind, int track, int frame) const;
     //! Feature @p row of frame @p frame leaves its track and starts a new one, returned.
     int split(FeatureKind kind, int frame, int row);
+    /** Joins track @p drop into @p keep (one feature of the scene seen as two): false, both unchanged,
+    when they are seen in a common frame; else @p drop is left empty. */
+    bool merge(FeatureKind kind, int keep, int drop);
+    //! The (frame, row) observations of @p track, in frame order.
+    const std::vector<std::pair<int, int>>& observationsOf(FeatureKind kind, int track) const
+    {
+        return tracks(kind)[track];
+    }
     //! The observation of @p track in frame @p frame: 2 (point) or 4 (segment) values, or NaN.
     void observation(FeatureKind kind, int track, int frame, double* out) const;
 
 private:
-    using Track = std::vector<std::pair<int, int>>; //!< (frame, row), in the order added.
+    using Track = std::vector<std::pair<int, int>>; //!< (frame, row), by frame.
     std::vector<Track>& tracks(FeatureKind kind) { return kind == FeatureKind::Point ? pointTracks_ : lineTracks_; }
     const std::vector<Track>& tracks(FeatureKind kind) const
     {

@@ -9,8 +9,12 @@
 #include <cmath>
 #include <set>
 
+#include <Eigen/Geometry>
+
 #include "../problem/view_set_builder.hpp"
 #include "../support/error.hpp"
+#include "bundle_adjustment.hpp"
+#include "place_registration.hpp"
 #include "window_registration.hpp"
 
 namespace tripose {
@@ -47,6 +51,11 @@ CameraPose checkedPose(const CameraPose& pose)
     return out;
 }
 
+// A place seen again moves the trajectory when the frame's pose through it differs from its tracked
+// pose by more than this rotation (radians) or this share of the distance to the place's keyframe.
+const double kLoopAngle = 0.1 * M_PI / 180.0;
+const double kLoopShift = 0.002;
+
 //! The pose of frame b relative to frame a.
 CameraPose relativePose(const CameraPose& a, const CameraPose& b)
 {
@@ -59,7 +68,7 @@ CameraPose relativePose(const CameraPose& a, const CameraPose& b)
 } // namespace
 
 Tracker::Tracker(const Eigen::Matrix3d& K, const std::vector<double>& distortion, const TrackerOptions& options)
-    : options_(options), K_(K)
+    : options_(options), K_(K), retrieval_(options.matching)
 {
     checkCameraMatrix(K, "K");
     const size_t n = distortion.size();
@@ -218,7 +227,7 @@ FrameResult Tracker::addFeatures(const FrameFeatures& features, const CameraPose
     recent_.emplace_back(frame, std::move(undistorted));
     while ((int)recent_.size() > options_.maxFrameGap)
         recent_.pop_front();
-    return finishFrame(frame, start);
+    return finishFrame(frame, start, &recent_.back().second);
 }
 
 FrameResult Tracker::addObservations(const std::vector<Eigen::Vector2d>& points, const std::vector<int64_t>& pointIds,
@@ -257,20 +266,30 @@ FrameResult Tracker::addObservations(const std::vector<Eigen::Vector2d>& points,
     }
     pointIdsOfFrame_.push_back(pointIds);
     lineIdsOfFrame_.push_back(lineIds);
-    return finishFrame(frame, start);
+    return finishFrame(frame, start, nullptr);
 }
 
-FrameResult Tracker::finishFrame(int frame, double startSeconds)
+FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeatures* features)
 {
-    StoredFrame& f = store_.frames[frame];
     FrameResult result;
     result.frame = frame;
-    if (f.status != FrameStatus::Given)
+    std::vector<int> window;
+    int oldestRecent = -1; // The oldest of the latest keyframes in the window.
+    if (store_.frames[frame].status != FrameStatus::Given)
     {
-        std::vector<int> window;
         for (int j = frame - 1; j >= 0 && (int)window.size() < options_.window; --j)
             if (store_.frames[j].keyframe)
                 window.insert(window.begin(), j);
+        const int recent = (int)window.size();
+        oldestRecent = window.empty() ? -1 : window.front();
+        // With loop closure, older keyframes that see much of what the frame sees (a place the
+        // camera came back to) join the window, so that the frame is held by the structure already
+        // known there.
+        if (options_.loopClosure)
+            for (const auto& k : keyframesSharingTracks(store_, frame, options_.minInliers))
+                if ((int)window.size() < recent + options_.window && (window.empty() || k.first < window.front()))
+                    window.push_back(k.first);
+        std::sort(window.begin(), window.end());
         result.knownViews = (int)window.size();
         Registration r;
         if (window.size() < 2)
@@ -291,6 +310,19 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds)
                 r.reason = e.what();
             }
         }
+        if (!r.registered && features && !keyframeFeatures_.empty())
+        {
+            // Lost against the window: any keyframe whose place the frame sees can take it back.
+            int keyframe = -1;
+            Registration found = recognisePlace(
+                frame, *features, [](int) { return true; }, options_.minInliers, keyframe);
+            if (found.registered)
+            {
+                r = found;
+                r.keyframe = true;
+                result.recognisedKeyframe = keyframe;
+            }
+        }
         result.features = r.features;
         result.inliers = r.inliers;
         result.reason = r.reason;
@@ -299,6 +331,7 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds)
             result.hasCovariance = r.covariance.valid;
             result.covariance = r.covariance.covariance;
             result.noiseVariance = r.covariance.noiseVariance;
+            StoredFrame& f = store_.frames[frame];
             f.status = FrameStatus::Registered;
             f.pose = r.pose;
             f.keyframe = r.keyframe;
@@ -337,6 +370,40 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds)
             }
         }
     }
+    if (features && store_.frames[frame].keyframe)
+    {
+        bool closed = false;
+        if (options_.loopClosure && store_.frames[frame].status == FrameStatus::Registered &&
+            result.recognisedKeyframe < 0 && oldestRecent >= 0)
+        {
+            // The keyframes older than the window that look like the frame are places it may see
+            // again: one it registers against is linked to it (its tracks join theirs), and closes a
+            // loop when the frame's pose through it and its tracked pose disagree.
+            int keyframe = -1;
+            const Registration place = recognisePlace(
+                frame, *features, [&](int k) { return k < oldestRecent; }, 2 * options_.minInliers, keyframe);
+            if (place.registered)
+            {
+                result.recognisedKeyframe = keyframe;
+                const CameraPose& tracked = store_.frames[frame].pose;
+                const double angle = Eigen::AngleAxisd(place.pose.R * tracked.R.transpose()).angle();
+                const double shift = (place.pose.centre() - tracked.centre()).norm();
+                const double reach = (store_.frames[keyframe].pose.centre() - tracked.centre()).norm();
+                if (angle > kLoopAngle || shift > kLoopShift * reach)
+                {
+                    closeLoop(frame, keyframe, place.pose);
+                    closed = true;
+                }
+            }
+        }
+        keyframeFeatures_[frame] = *features;
+        retrieval_.add(frame, *features);
+        ++keyframesSinceAdjustment_;
+        if (!closed && options_.globalAdjustmentInterval > 0 &&
+            keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
+            adjustEveryFrame();
+    }
+    const StoredFrame& f = store_.frames[frame];
     result.status = f.status;
     result.pose = f.pose;
     result.keyframe = f.keyframe;
@@ -344,6 +411,80 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds)
     result.lineTracks = f.lineTrack;
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
+}
+
+Registration Tracker::recognisePlace(int frame, const FrameFeatures& features,
+                                     const std::function<bool(int)>& eligible, int minInliers, int& keyframe)
+{
+    // A place is worth the geometric check when a good share of the sample matches.
+    const int minMatches = 20, candidates = 3;
+    Registration out;
+    out.reason = "no keyframe looks like it";
+    for (const auto& candidate : retrieval_.rank(
+             features, [&](int k) { return eligible(k) && store_.frames[k].hasPose(); }, minMatches, candidates))
+    {
+        const std::vector<int> neighbours = covisibleKeyframes(store_, candidate.first, options_.window);
+        if (neighbours.size() < 2)
+            continue;
+        Registration r = registerAgainstPlace(store_, frame, features, candidate.first,
+                                              keyframeFeatures_.at(candidate.first), neighbours, options_, minInliers);
+        if (r.registered)
+        {
+            keyframe = candidate.first;
+            return r;
+        }
+        out.reason = r.reason;
+    }
+    return out;
+}
+
+void Tracker::closeLoop(int frame, int keyframe, const CameraPose& loopPose)
+{
+    // The world moved by G maps the frame's tracked pose onto its pose through the loop:
+    // T_loop = T_frame * G^-1, so G = T_loop^-1 * T_frame; frame k after the keyframe gets the share
+    // (k - keyframe) / (frame - keyframe) of G's rotation angle and translation.
+    const CameraPose& tracked = store_.frames[frame].pose;
+    const Eigen::Matrix3d RG = loopPose.R.transpose() * tracked.R;
+    const Eigen::Vector3d tG = loopPose.R.transpose() * (tracked.t - loopPose.t);
+    const Eigen::AngleAxisd rotation(RG);
+    for (int k = keyframe + 1; k <= frame; ++k)
+    {
+        StoredFrame& f = store_.frames[k];
+        if (f.status != FrameStatus::Registered)
+            continue;
+        const double share = double(k - keyframe) / double(frame - keyframe);
+        const Eigen::Matrix3d Ra = Eigen::AngleAxisd(share * rotation.angle(), rotation.axis()).toRotationMatrix();
+        const Eigen::Vector3d ta = share * tG;
+        f.pose.t = f.pose.t - f.pose.R * Ra.transpose() * ta;
+        f.pose.R = f.pose.R * Ra.transpose();
+    }
+    adjustEveryFrame();
+}
+
+void Tracker::adjustEveryFrame()
+{
+    keyframesSinceAdjustment_ = 0;
+    std::vector<int> free, fixed;
+    for (int k = 0; k < numFrames(); ++k)
+    {
+        if (store_.frames[k].status == FrameStatus::Given)
+            fixed.push_back(k);
+        else if (store_.frames[k].status == FrameStatus::Registered)
+            free.push_back(k);
+    }
+    if (fixed.size() < 2 || free.empty())
+        return;
+    // Two rounds of splitting wrong links off leave the few that the first adjustment hid.
+    const int rounds = 3;
+    try
+    {
+        adjustAndSplitOutliers(store_, free, fixed, options_, rounds);
+    }
+    catch (const Error& e)
+    {
+        if (e.code() == ErrorCode::Internal)
+            throw;
+    }
 }
 
 } // namespace tripose

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -15,8 +16,10 @@
 #include "../geometry/distortion.hpp"
 #include "frame_features.hpp"
 #include "frame_matching.hpp"
+#include "keyframe_retrieval.hpp"
 #include "track_store.hpp"
 #include "tracker_options.hpp"
+#include "window_registration.hpp"
 
 namespace tripose {
 
@@ -59,7 +62,16 @@ public:
 private:
     int startFrame(const std::vector<Eigen::Vector2d>& points, const std::vector<Eigen::Vector4d>& segments,
                    const CameraPose* pose, const Eigen::Matrix3d* K);
-    FrameResult finishFrame(int frame, double startSeconds);
+    FrameResult finishFrame(int frame, double startSeconds, const FrameFeatures* features);
+    /** Registers the frame against the best of the keyframes for which @p eligible holds, as retrieved
+    by descriptors, and their neighbours (registerAgainstPlace()); @p keyframe the one that did. */
+    Registration recognisePlace(int frame, const FrameFeatures& features, const std::function<bool(int)>& eligible,
+                                int minInliers, int& keyframe);
+    /** Moves the frames after @p keyframe towards the frame's pose @p loopPose through the place it
+    recognised, by a share of the correction growing along them, then adjusts every frame. */
+    void closeLoop(int frame, int keyframe, const CameraPose& loopPose);
+    //! Every registered frame and the structure adjusted together, the given frames held.
+    void adjustEveryFrame();
     void associateByMatching(int frame, const FrameFeatures& features);
     void link(FeatureKind kind, int from, int to, const Matches& matches);
 
@@ -75,6 +87,10 @@ private:
     std::vector<std::vector<int64_t>> pointIdsOfFrame_, lineIdsOfFrame_;
     bool byIds_ = false, byFeatures_ = false;
     EpipolarAgreement givenPairAgreement_;
+    //! The keyframes' features, for recognising their places.
+    KeyframeRetrieval retrieval_;
+    std::map<int, FrameFeatures> keyframeFeatures_;
+    int keyframesSinceAdjustment_ = 0;
 };
 
 } // namespace tripose

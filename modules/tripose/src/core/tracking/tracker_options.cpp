@@ -43,6 +43,9 @@ void checkTrackerOptions(const TrackerOptions& options, const char* name)
              options.keyframeParallaxDeg);
     if (options.maxFrameGap < 1)
         fail(ErrorCode::BadArgument, "%smax_frame_gap must be at least 1, got %d", prefix.c_str(), options.maxFrameGap);
+    if (options.globalAdjustmentInterval < 0)
+        fail(ErrorCode::BadArgument, "%sglobal_adjustment_interval must be at least 0, got %d", prefix.c_str(),
+             options.globalAdjustmentInterval);
     checkMatchOptions(options.matching, (prefix + "matching").c_str());
     checkRansacOptions(options.ransac, (prefix + "ransac").c_str());
 }

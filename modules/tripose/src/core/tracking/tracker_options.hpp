@@ -35,6 +35,19 @@ struct TrackerOptions
     //! After each registration, the window's registered frames, the new one and their structure are
     //! refined together (Huber loss at the RANSAC threshold) against the earlier keyframes, held fixed.
     bool localAdjustment = false;
+    /** After each new keyframe, the keyframes older than the window that look most like it (by
+    descriptors) are tried as a place seen before: when the frame registers against one of them and
+    its neighbours with twice minInliers (and half of the features shared), its tracks join theirs;
+    when its pose through the place disagrees with its tracked pose (a loop), the correction is
+    spread along the frames since and every registered frame is adjusted with the structure (given
+    frames held). Keyframes that share minInliers tracks with a frame then join its window. It costs
+    a place check per keyframe (doc/studies/front_end_and_tracker.md), hence off by default. Needs
+    descriptors (frames given as features). */
+    bool loopClosure = false;
+    /** Every this many new keyframes, every registered frame and the structure are adjusted
+    together with the given frames held, and the observations that disagree with the result leave
+    their tracks (0: only when a loop closes). */
+    int globalAdjustmentInterval = 0;
     bool robust = true; //!< The robust multi-view estimator (else the linear one on every feature).
     RansacOptions ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
     MatchOptions matching; //!< Of the features of consecutive frames.
@@ -69,6 +82,9 @@ struct FrameResult
     int knownViews = 0;     //!< Window keyframes registered against.
     bool keyframe = false;  //!< Later frames are registered against it.
     double milliseconds = 0; //!< Matching and registration.
+    //! The keyframe of a place seen before through which the frame was registered: a loop it closed,
+    //! or where a lost camera was found again; -1 for neither.
+    int recognisedKeyframe = -1;
     std::string reason;     //!< Why the frame is lost; empty otherwise.
     //! Per point and per segment of the frame, in the order given: its track (-1: matched to none).
     std::vector<int> pointTracks, lineTracks;

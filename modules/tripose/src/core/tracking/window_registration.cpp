@@ -13,126 +13,11 @@
 #include "../pipeline/posed_structure.hpp"
 #include "../problem/view_set_builder.hpp"
 #include "../support/error.hpp"
+#include "window_problem.hpp"
 
 namespace tripose {
 
 namespace {
-
-// The linear method needs four features.
-const int kMinFeatures = 4;
-
-const FeatureKind kKinds[2] = { FeatureKind::Point, FeatureKind::Line };
-
-int width(FeatureKind kind)
-{
-    return kind == FeatureKind::Point ? 2 : 4;
-}
-
-//! The observations of @p tracks in @p frame, a row each (NaN where unseen).
-ArgumentMatrix observations(const TrackStore& store, FeatureKind kind, const std::vector<int>& tracks, int frame,
-                            const std::string& name)
-{
-    ArgumentMatrix m;
-    m.name = name;
-    if (tracks.empty())
-        return m;
-    m.rows = (int)tracks.size();
-    m.cols = width(kind);
-    m.values.resize((size_t)m.rows * m.cols);
-    for (int i = 0; i < m.rows; ++i)
-        store.observation(kind, tracks[i], frame, &m.values[(size_t)i * m.cols]);
-    return m;
-}
-
-bool seen(const ArgumentMatrix& m, int row)
-{
-    return !m.empty() && !std::isnan(m.values[(size_t)row * m.cols]);
-}
-
-//! A problem over frames @p frames (every one a view, each free to miss features) on @p tracks.
-struct WindowProblem
-{
-    std::vector<int> tracks[2];
-    ProblemArguments arguments;
-    std::vector<ArgumentMatrix> Rs, ts;
-
-    WindowProblem(const TrackStore& store, const std::vector<int>& frames, const std::vector<int> (&features)[2],
-                  int posedViews)
-    {
-        for (int kind = 0; kind < 2; ++kind)
-            tracks[kind] = features[kind];
-        for (size_t v = 0; v < frames.size(); ++v)
-        {
-            const StoredFrame& f = store.frames[frames[v]];
-            ViewArguments view;
-            view.points = observations(store, FeatureKind::Point, tracks[0], frames[v], "points[" + std::to_string(v) + "]");
-            view.lines = observations(store, FeatureKind::Line, tracks[1], frames[v], "lines[" + std::to_string(v) + "]");
-            view.mayMiss = true;
-            arguments.views.push_back(view);
-            Eigen::Matrix<double, 3, 3, Eigen::RowMajor> K = f.K;
-            arguments.cameraMatrices.push_back(matrixArgument("K", 3, 3, K.data()));
-            if ((int)v < posedViews)
-            {
-                Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R = f.pose.R;
-                Rs.push_back(matrixArgument("Rs[" + std::to_string(v) + "]", 3, 3, R.data()));
-                ts.push_back(matrixArgument("ts[" + std::to_string(v) + "]", 3, 1, f.pose.t.data()));
-            }
-        }
-    }
-
-    ArgumentMatrix& rows(int kind, size_t view)
-    {
-        return kind == 0 ? arguments.views[view].points : arguments.views[view].lines;
-    }
-
-    //! Keeps the features seen by at least two of the first @p views views.
-    void keepSeenTwice(size_t views)
-    {
-        for (int kind = 0; kind < 2; ++kind)
-        {
-            std::vector<int> keep;
-            for (int i = 0; i < (int)tracks[kind].size(); ++i)
-            {
-                int count = 0;
-                for (size_t v = 0; v < views; ++v)
-                    count += seen(rows(kind, v), i) ? 1 : 0;
-                if (count >= 2)
-                    keep.push_back(i);
-            }
-            std::vector<int> kept;
-            for (int i : keep)
-                kept.push_back(tracks[kind][i]);
-            tracks[kind] = kept;
-            for (size_t v = 0; v < arguments.views.size(); ++v)
-            {
-                ArgumentMatrix& m = rows(kind, v);
-                ArgumentMatrix out;
-                out.name = m.name;
-                if (!keep.empty())
-                {
-                    out.rows = (int)keep.size();
-                    out.cols = m.cols;
-                    for (int i : keep)
-                        out.values.insert(out.values.end(), m.values.begin() + (size_t)i * m.cols,
-                                          m.values.begin() + (size_t)(i + 1) * m.cols);
-                }
-                m = out;
-            }
-        }
-    }
-
-    int numFeatures() const { return (int)(tracks[0].size() + tracks[1].size()); }
-
-    //! The first @p views views alone (known poses), for triangulation.
-    PosedStructure triangulate(size_t views) const
-    {
-        ProblemArguments known = arguments;
-        known.views.resize(views);
-        known.cameraMatrices.resize(views);
-        const std::vector<ArgumentMatrix> R(Rs.begin(), Rs.begin() + views), t(ts.begin(), ts.begin() + views);
-        return triangulateStructure(buildPosedViewSet(known, R, t));
-    }
-};
 
 /** Drops, feature by feature, the observation of the first @p views views furthest from the
 structure triangulated from them while it is more than @p threshold px off. */
@@ -304,53 +189,6 @@ Registration registerAgainstWindow(const TrackStore& store, int frame, const std
                     rejected.push_back(problem.tracks[kind][i]);
         }
     return out;
-}
-
-bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                  const TrackerOptions& options)
-{
-    std::vector<int> all = fixed;
-    all.insert(all.end(), free.begin(), free.end());
-    std::vector<int> features[2];
-    for (int kind = 0; kind < 2; ++kind)
-    {
-        std::vector<int> candidates;
-        for (int f : free)
-            for (int track : kKinds[kind] == FeatureKind::Point ? store.frames[f].pointTrack : store.frames[f].lineTrack)
-                if (track >= 0)
-                    candidates.push_back(track);
-        std::sort(candidates.begin(), candidates.end());
-        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-        for (int track : candidates)
-        {
-            int count = 0;
-            for (int f : all)
-                count += store.rowIn(kKinds[kind], track, f) >= 0 ? 1 : 0;
-            if (count >= 2)
-                features[kind].push_back(track);
-        }
-    }
-    if ((int)(features[0].size() + features[1].size()) < kMinFeatures)
-        return false;
-    const WindowProblem problem(store, all, features, (int)all.size());
-    std::vector<int> fixedFlags(all.size(), 0), poseOfView;
-    std::fill(fixedFlags.begin(), fixedFlags.begin() + fixed.size(), 1);
-    std::vector<CameraPose> poses;
-    const ViewSet set =
-        buildSeveralPosesSet(problem.arguments, problem.Rs, problem.ts, fixedFlags, "fixed", poseOfView, poses);
-    RefineOptions refine;
-    refine.loss = Loss::Huber;
-    refine.lossScale = options.ransac.threshold;
-    const double rms = refineSeveralPoses(set, poseOfView, poses, refine);
-    if (!std::isfinite(rms))
-        return false;
-    for (const CameraPose& pose : poses)
-        if (!pose.allFinite())
-            return false;
-    const std::vector<CameraPose> refined = allViewPoses(set, poseOfView, poses);
-    for (size_t v = fixed.size(); v < all.size(); ++v)
-        store.frames[all[v]].pose = refined[v];
-    return true;
 }
 
 } // namespace tripose

@@ -38,14 +38,6 @@ the window, subtends TrackerOptions::keyframeParallaxDeg between it and the wind
 Registration registerAgainstWindow(const TrackStore& store, int frame, const std::vector<int>& window,
                                    const TrackerOptions& options);
 
-/** Refines the poses of frames @p free and the structure of the tracks they see with at least one
-other frame of @p free or @p fixed, with @p fixed held (Huber loss at the RANSAC threshold). False,
-poses unchanged, when fewer than four features qualify or the refinement fails. @p fixed must hold
-two frames at distinct centres.
-*/
-bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                  const TrackerOptions& options);
-
 } // namespace tripose
 
 #endif // TRIPOSE_CORE_TRACKING_WINDOW_REGISTRATION_HPP

@@ -1,0 +1,38 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_TRACKING_BUNDLE_ADJUSTMENT_HPP
+#define TRIPOSE_CORE_TRACKING_BUNDLE_ADJUSTMENT_HPP
+
+#include <vector>
+
+#include "track_store.hpp"
+#include "tracker_options.hpp"
+
+namespace tripose {
+
+/** Refines the poses of frames @p free and the structure of the tracks they see with at least one
+other frame of @p free or @p fixed, with @p fixed held (Huber loss at the RANSAC threshold). False,
+poses unchanged, when fewer than four features qualify or the refinement fails. @p fixed must hold
+two frames at distinct centres.
+*/
+bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
+                  const TrackerOptions& options);
+
+/** Splits off every observation, in @p frames, of the tracks seen at least twice there whose
+reprojection error at the structure triangulated from those frames (with their current poses)
+exceeds @p threshold px: a wrong link leaves its track, which then agrees with the poses again.
+Returns the number of observations split off.
+*/
+int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& frames, double threshold);
+
+/** adjustFrames(), then splitDisagreeingObservations() over every frame involved at the RANSAC
+threshold, repeated while observations are split, at most @p rounds times: a bundle adjustment that
+is not pulled by the wrong links it finds. False when the first adjustment fails. */
+bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
+                            const TrackerOptions& options, int rounds);
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_TRACKING_BUNDLE_ADJUSTMENT_HPP
