@@ -16,6 +16,7 @@
 #include "../problem/view_set_builder.hpp"
 #include "../support/error.hpp"
 #include "epipolar_matching.hpp"
+#include "frame_arguments.hpp"
 #include "frame_matching.hpp"
 
 namespace tripose {
@@ -30,49 +31,10 @@ const double kMinOverlap = 0.5;
 
 const FeatureKind kKinds[2] = { FeatureKind::Point, FeatureKind::Line };
 
-double nowSeconds()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-void checkCameraMatrix(const Eigen::Matrix3d& K, const char* name)
-{
-    if (!K.allFinite() || !(K(0, 0) > 0) || !(K(1, 1) > 0) || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 ||
-        K(2, 2) != 1)
-        fail(ErrorCode::BadArgument, "%s must be a camera matrix [fx s cx; 0 fy cy; 0 0 1] with fx, fy > 0", name);
-}
-
-//! @p coefficients read into @p out; true when any is non-zero.
-bool readDistortion(const std::vector<double>& coefficients, const char* name, Distortion& out)
-{
-    const size_t n = coefficients.size();
-    if (!(n == 0 || n == 4 || n == 5 || n == 8 || n == 12 || n == 14))
-        fail(ErrorCode::BadArgument, "%s must hold 4, 5, 8, 12 or 14 coefficients (OpenCV's model), got %d", name,
-             (int)n);
-    bool distorted = false;
-    for (size_t i = 0; i < n; ++i)
-    {
-        if (!std::isfinite(coefficients[i]))
-            fail(ErrorCode::BadArgument, "%s[%d] is not finite", name, (int)i);
-        out.k[i] = coefficients[i];
-        distorted = distorted || coefficients[i] != 0;
-    }
-    return distorted;
-}
-
 ArgumentMatrix rotationArgument(const std::string& name, const Eigen::Matrix3d& R)
 {
     const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> rowMajor = R;
     return matrixArgument(name, 3, 3, rowMajor.data());
-}
-
-//! The pose the caller gave, its rotation checked and made exact as every rotation argument is.
-CameraPose checkedPose(const CameraPose& pose, const char* Rname, const char* tname)
-{
-    CameraPose out;
-    out.R = readRotation(rotationArgument(Rname, pose.R));
-    out.t = readTranslation(matrixArgument(tname, 3, 1, pose.t.data()), false);
-    return out;
 }
 
 //! Checks one image's features: a descriptor row per feature, finite values.

@@ -14,42 +14,13 @@
 #include "../problem/view_set_builder.hpp"
 #include "../support/error.hpp"
 #include "bundle_adjustment.hpp"
+#include "frame_arguments.hpp"
 #include "place_registration.hpp"
 #include "window_registration.hpp"
 
 namespace tripose {
 
 namespace {
-
-double nowSeconds()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-void checkCameraMatrix(const Eigen::Matrix3d& K, const char* name)
-{
-    if (!K.allFinite() || !(K(0, 0) > 0) || !(K(1, 1) > 0) || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 ||
-        K(2, 2) != 1)
-        fail(ErrorCode::BadArgument, "%s must be a camera matrix [fx s cx; 0 fy cy; 0 0 1] with fx, fy > 0", name);
-}
-
-//! The pose the caller gave, its rotation checked and made exact as every rotation argument is.
-CameraPose checkedPose(const CameraPose& pose)
-{
-    ArgumentMatrix R, t;
-    R.name = "R";
-    R.rows = R.cols = 3;
-    t.name = "t";
-    t.rows = 3;
-    t.cols = 1;
-    for (int i = 0; i < 9; ++i)
-        R.values.push_back(pose.R(i / 3, i % 3));
-    t.values.assign(pose.t.data(), pose.t.data() + 3);
-    CameraPose out;
-    out.R = readRotation(R);
-    out.t = readTranslation(t, false);
-    return out;
-}
 
 // A place seen again moves the trajectory when the frame's pose through it differs from its tracked
 // pose by more than this rotation (radians) or this share of the distance to the place's keyframe.
