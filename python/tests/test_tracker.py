@@ -227,6 +227,38 @@ def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small
     assert_same_poses(trajectory, Rs, ts, range(count))
 
 
+def test_program_closes_loops_and_writes_the_recognised_keyframes(tmp_path, fountain, small_fountain):
+    # --loop-closure on the reduced images: the program's poses and recognised keyframes are the API's
+    # with loop_closure; without it no keyframe older than the window is looked for.
+    folder, calib = small_fountain
+    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
+    K = fs.getNode("K").mat()
+    fs.release()
+    paths = sorted(folder.iterdir())
+    features = [images.extract_features(images.read_image(p), K) for p in paths]
+    for closing in (True, False):
+        output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
+        proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--yaml", result_yaml,
+                       *(["--loop-closure"] if closing else []), cwd=tmp_path)
+        assert proc.returncode == 0, proc.stderr
+        options = cli_options(1.0)
+        options.loop_closure = closing
+        results, trajectory = track(K, features, given_poses(fountain), options)
+        fs = cv2.FileStorage(str(result_yaml), cv2.FILE_STORAGE_READ)
+        assert fs.getNode("loop_closure").real() == int(closing)
+        node = fs.getNode("frames")
+        recognised = [int(node.at(i).getNode("recognised_keyframe").real()) for i in range(node.size())]
+        fs.release()
+        assert recognised == [r.recognised_keyframe for r in results]
+        if closing:
+            assert any(k >= 0 for k in recognised), recognised
+            assert all(f"(place of keyframe {k})" in proc.stdout for k in recognised if k >= 0)
+        else:
+            assert recognised == [-1] * len(paths)
+        _, Rs, ts = rs.read_tum(output)
+        assert_same_poses(trajectory, Rs, ts, range(len(paths)))
+
+
 # --- another detector ----------------------------------------------------------------------------------
 
 def _lbd(image, segments):
@@ -570,4 +602,7 @@ def test_program_bad_input_exits_1_naming_it(tmp_path, small_fountain):
 
     proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--window", "1", cwd=tmp_path)
     _fails(tmp_path, proc, "--window")
+    proc = run_cli("--images", folder, "--right", folder, "--calib", calib, "--output", output, "--loop-closure",
+                   cwd=tmp_path)
+    _fails(tmp_path, proc, "--loop-closure", "--right")
     assert list(tmp_path.glob(".trajectory.txt*")) == []  # no temporary file left behind

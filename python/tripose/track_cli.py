@@ -2,7 +2,7 @@
 
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
-                  [--threshold PX] [--local-adjustment] [--max-image-size PX]
+                  [--threshold PX] [--local-adjustment] [--loop-closure] [--max-image-size PX]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
@@ -18,7 +18,15 @@ first frames, in order (at least two; its timestamps are not used); --poses take
 
 The output is a TUM trajectory of every frame with a pose (lost frames are left out), stamped with
 the frames' timestamps; --yaml writes per frame its status (0 given, 1 registered, 2 lost), keyframe,
-features, inliers, R and t (x_cam = R X + t; absent for a lost frame) and the reason it is lost.
+features, inliers, R and t (x_cam = R X + t; absent for a lost frame), the reason it is lost and
+recognised_keyframe: the keyframe of a place seen before through which the frame was registered (a
+loop it closed, a link to an older place, or a lost camera found again), -1 for none.
+
+--loop-closure (tripose.TrackerOptions.loop_closure) looks, after each new keyframe, for a place seen
+before among the keyframes older than the window, and closes the loop through it: the correction is
+spread along the frames since and every registered frame is adjusted with the structure. It costs a
+place check per keyframe. A frame lost against the window is looked for among every keyframe's
+places with or without it.
 
 Pixel tolerances (--threshold, default 2 px, and the matching's epipolar distance) are those of
 features detected at full size: when the images are detected in a reduced copy (--max-image-size),
@@ -36,7 +44,8 @@ camera's (as many frames), tracked by tripose.StereoTracker: the calibration hol
 dist1) of the left camera, K2 (dist2) of the right (or K, dist for both), and the rig as R12, t12: the
 right camera's pose relative to the left (x_2 = R12 x_1 + t12; |t12|, the baseline, is the unit of
 length). No pose is needed: frame 0's left camera is the world's origin, or the first pose of
---poses when given. The poses written are the left camera's. --local-adjustment is not available.
+--poses when given. The poses written are the left camera's. --local-adjustment and --loop-closure
+are not available.
 
 Also run as `python -m tripose.track_cli`.
 """
@@ -120,6 +129,9 @@ def _parser():
                         "reduction of --max-image-size)")
     p.add_argument("--local-adjustment", action="store_true",
                    help="refine the window's frames and structure after each registration")
+    p.add_argument("--loop-closure", action="store_true",
+                   help="after each keyframe, look for a place seen before among the older keyframes and close "
+                        "the loop through it (a place check per keyframe)")
     p.add_argument("--max-image-size", type=_whole_number(0),
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
     return p
@@ -414,6 +426,7 @@ def tracker_options(args, pixel_scale: float = 1.0):
     if args.threshold is not None:
         options.ransac.threshold = args.threshold
     options.local_adjustment = bool(args.local_adjustment)
+    options.loop_closure = bool(args.loop_closure)
     options.ransac.threshold *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
     return options
@@ -445,6 +458,7 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
     fs.write("min_inliers", options.min_inliers)
     fs.write("threshold", options.ransac.threshold)
     fs.write("local_adjustment", int(options.local_adjustment))
+    fs.write("loop_closure", int(options.loop_closure))
     fs.write("pixel_scale", float(pixel_scale))
     fs.startWriteStruct("frames", cv2.FileNode_SEQ)
     for f, pose in zip(frames, poses):
@@ -460,6 +474,7 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
             fs.write("R", np.ascontiguousarray(pose[0]))
             fs.write("t", np.ascontiguousarray(pose[1]).reshape(3, 1))
         fs.write("reason", f["reason"])
+        fs.write("recognised_keyframe", f["recognised_keyframe"])
         fs.endWriteStruct()
     fs.endWriteStruct()
     return fs.releaseAndGetString()
@@ -489,6 +504,8 @@ def run_stereo(args) -> int:
 
     if args.local_adjustment:
         raise InputError("--local-adjustment: not available with --right (the stereo tracker has none)")
+    if args.loop_closure:
+        raise InputError("--loop-closure: not available with --right (the stereo tracker has none)")
     (K, K_right), (dist, dist_right), (R12, t12) = read_stereo_calibration(args.calib)
     given = read_initial_poses(args.poses, minimum=1)[:1] if args.poses is not None else []
     try:
@@ -541,7 +558,7 @@ def run_stereo(args) -> int:
             reason = "the left image cannot be read or decoded"
         frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
                        "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
-                       "reason": reason})
+                       "reason": reason, "recognised_keyframe": result.recognised_keyframe})
         share = f"{result.inliers}/{result.features}"
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
               + (f"  {reason}" if reason else ""), flush=True)
@@ -617,10 +634,12 @@ def run(args) -> int:
             reason = "the image cannot be read or decoded"
         frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
                        "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
-                       "reason": reason})
+                       "reason": reason, "recognised_keyframe": result.recognised_keyframe})
         share = f"{result.inliers}/{result.features}"
+        place = frames[-1]["recognised_keyframe"]
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
-              + (f"  {reason}" if reason else ""), flush=True)
+              + (f"  {reason}" if reason else "") + (f"  (place of keyframe {place})" if place >= 0 else ""),
+              flush=True)
         if index == 1 and features is not None:
             matches, agreeing = tracker.given_pair_agreement
             if matches >= _AGREEMENT_MIN_MATCHES and agreeing < _AGREEMENT_MIN_FRACTION * matches:
