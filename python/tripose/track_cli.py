@@ -234,9 +234,9 @@ def _matrix(fs, key):
     return np.asarray(value, np.float64)
 
 
-def read_calibration(path: Path):
-    """(K, dist or None, (R12, t12) or None) of the calibration file; InputError naming the file and
-    the key otherwise."""
+def _read_calibration_keys(path: Path, keys, present=()):
+    """{key: array or None} of the calibration file's keys (_matrix), and for each key of present
+    whether the file has it; InputError naming the file otherwise."""
     cv2 = _cv2()
     if not path.is_file():
         raise InputError(f"--calib {path}: no such file")
@@ -250,46 +250,70 @@ def read_calibration(path: Path):
     if not fs.isOpened():
         raise InputError(f"--calib {path}: cannot be opened as OpenCV YAML, JSON or XML")
     try:
-        values = {key: _matrix(fs, key) for key in ("K", "dist", "R12", "t12")}
-        per_view_K = not fs.getNode("K1").empty()
+        values = {key: _matrix(fs, key) for key in keys}
+        values.update({key: not fs.getNode(key).empty() for key in present})
+        return values
     except InputError as error:
         raise InputError(f"--calib {path}: {error}") from None
     finally:
         fs.release()
+
+
+def _camera_matrix(path: Path, key, K):
+    """K (a calibration value under key) as a checked 3x3 camera matrix."""
+    if K.size != 9 or not np.all(np.isfinite(K)):
+        raise InputError(f"--calib {path}: key {key}: expected a finite 3x3 camera matrix, got {K.size} values")
+    K = K.reshape(3, 3)
+    if not (K[0, 0] > 0 and K[1, 1] > 0 and K[2, 2] != 0):
+        raise InputError(f"--calib {path}: key {key}: the focal lengths K[0,0], K[1,1] must be > 0 and K[2,2] "
+                         "non-zero")
+    return K
+
+
+def _distortion(path: Path, key, dist):
+    """dist (a calibration value under key, or None) as OpenCV's coefficients, None when empty."""
+    if dist is None:
+        return None
+    dist = dist.ravel()
+    if dist.size == 0:
+        return None
+    if dist.size not in (4, 5, 8, 12, 14) or not np.all(np.isfinite(dist)):
+        raise InputError(f"--calib {path}: key {key}: expected 4, 5, 8, 12 or 14 finite distortion coefficients, "
+                         f"got {dist.size}")
+    return dist
+
+
+def _relative_pose(path: Path, R12, t12, zero_baseline):
+    """(R12, t12), R12 a 3x3 rotation or a rotation vector, t12 non-zero (zero_baseline says why)."""
+    if R12.size == 3:
+        R12 = _cv2().Rodrigues(R12.reshape(3, 1))[0]
+    if R12.size != 9 or not _is_rotation(R12.reshape(3, 3)):
+        raise InputError(f"--calib {path}: key R12: expected a 3x3 rotation or a rotation vector")
+    if t12.size != 3 or not np.all(np.isfinite(t12)):
+        raise InputError(f"--calib {path}: key t12: expected 3 finite numbers, got {t12.size} values")
+    if not np.any(t12):
+        raise InputError(f"--calib {path}: key t12 is zero: {zero_baseline}")
+    return np.ascontiguousarray(R12.reshape(3, 3)), t12.reshape(3).copy()
+
+
+def read_calibration(path: Path):
+    """(K, dist or None, (R12, t12) or None) of the calibration file; InputError naming the file and
+    the key otherwise."""
+    values = _read_calibration_keys(path, ("K", "dist", "R12", "t12"), present=("K1",))
     K = values["K"]
     if K is None:
         per_view = " (K1, K2, ... are per view of a triplet: a tracked sequence has one camera, K)" \
-            if per_view_K else ""
+            if values["K1"] else ""
         raise InputError(f"--calib {path}: no key K (the 3x3 camera matrix){per_view}")
-    if K.size != 9 or not np.all(np.isfinite(K)):
-        raise InputError(f"--calib {path}: key K: expected a finite 3x3 camera matrix, got {K.size} values")
-    K = K.reshape(3, 3)
-    if not (K[0, 0] > 0 and K[1, 1] > 0 and K[2, 2] != 0):
-        raise InputError(f"--calib {path}: key K: the focal lengths K[0,0], K[1,1] must be > 0 and K[2,2] non-zero")
-    dist = values["dist"]
-    if dist is not None:
-        dist = dist.ravel()
-        if dist.size == 0:
-            dist = None
-        elif dist.size not in (4, 5, 8, 12, 14) or not np.all(np.isfinite(dist)):
-            raise InputError(f"--calib {path}: key dist: expected 4, 5, 8, 12 or 14 finite distortion coefficients, "
-                             f"got {dist.size}")
+    K = _camera_matrix(path, "K", K)
+    dist = _distortion(path, "dist", values["dist"])
     R12, t12 = values["R12"], values["t12"]
     relative = None
     if R12 is not None or t12 is not None:
         if R12 is None or t12 is None:
             raise InputError(f"--calib {path}: key {'R12' if R12 is None else 't12'} is missing "
                              f"({'t12' if R12 is None else 'R12'} is given; frame 1's pose needs both)")
-        if R12.size == 3:
-            R12 = cv2.Rodrigues(R12.reshape(3, 1))[0]
-        if R12.size != 9 or not _is_rotation(R12.reshape(3, 3)):
-            raise InputError(f"--calib {path}: key R12: expected a 3x3 rotation or a rotation vector")
-        if t12.size != 3 or not np.all(np.isfinite(t12)):
-            raise InputError(f"--calib {path}: key t12: expected 3 finite numbers, got {t12.size} values")
-        if not np.any(t12):
-            raise InputError(f"--calib {path}: key t12 is zero: frames 0 and 1 must be apart (their baseline "
-                             "fixes the scale)")
-        relative = (np.ascontiguousarray(R12.reshape(3, 3)), t12.reshape(3).copy())
+        relative = _relative_pose(path, R12, t12, "frames 0 and 1 must be apart (their baseline fixes the scale)")
     return K, dist, relative
 
 
@@ -297,23 +321,7 @@ def read_stereo_calibration(path: Path):
     """(K (left, right), dist (left, right; None where absent), (R12, t12)) of a stereo rig's
     calibration file: K1 and K2 (or K for both), optional dist1 and dist2 (or dist), and R12, t12, the
     right camera's pose relative to the left; InputError naming the file and the key otherwise."""
-    cv2 = _cv2()
-    if not path.is_file():
-        raise InputError(f"--calib {path}: no such file")
-    try:
-        fs = cv2.FileStorage(str(path), cv2.FILE_STORAGE_READ)
-    except (cv2.error, SystemError) as error:
-        error = error.__cause__ or error
-        raise InputError(f"--calib {path}: cannot be parsed as OpenCV YAML, JSON or XML "
-                         f"({str(error).strip().splitlines()[-1]})") from None
-    if not fs.isOpened():
-        raise InputError(f"--calib {path}: cannot be opened as OpenCV YAML, JSON or XML")
-    try:
-        values = {key: _matrix(fs, key) for key in ("K", "K1", "K2", "dist", "dist1", "dist2", "R12", "t12")}
-    except InputError as error:
-        raise InputError(f"--calib {path}: {error}") from None
-    finally:
-        fs.release()
+    values = _read_calibration_keys(path, ("K", "K1", "K2", "dist", "dist1", "dist2", "R12", "t12"))
 
     def per_camera(key, required):
         shared, first, second = values[key], values[key + "1"], values[key + "2"]
@@ -328,39 +336,13 @@ def read_stereo_calibration(path: Path):
                              f"calibration gives {key}1 and {key}2, or {key} for both)")
         return [(f"{key}1", first), (f"{key}2", second)]
 
-    Ks = []
-    for key, K in per_camera("K", True):
-        if K.size != 9 or not np.all(np.isfinite(K)):
-            raise InputError(f"--calib {path}: key {key}: expected a finite 3x3 camera matrix, got {K.size} values")
-        K = K.reshape(3, 3)
-        if not (K[0, 0] > 0 and K[1, 1] > 0 and K[2, 2] != 0):
-            raise InputError(f"--calib {path}: key {key}: the focal lengths K[0,0], K[1,1] must be > 0 and K[2,2] "
-                             "non-zero")
-        Ks.append(K)
-    dists = []
-    for key, dist in per_camera("dist", False):
-        if dist is not None:
-            dist = dist.ravel()
-            if dist.size == 0:
-                dist = None
-            elif dist.size not in (4, 5, 8, 12, 14) or not np.all(np.isfinite(dist)):
-                raise InputError(f"--calib {path}: key {key}: expected 4, 5, 8, 12 or 14 finite distortion "
-                                 f"coefficients, got {dist.size}")
-        dists.append(dist)
-    R12, t12 = values["R12"], values["t12"]
-    for key, value in (("R12", R12), ("t12", t12)):
-        if value is None:
+    Ks = [_camera_matrix(path, key, K) for key, K in per_camera("K", True)]
+    dists = [_distortion(path, key, dist) for key, dist in per_camera("dist", False)]
+    for key in ("R12", "t12"):
+        if values[key] is None:
             raise InputError(f"--calib {path}: no key {key} (with --right, R12 and t12 are the rig: the right "
                              "camera's pose relative to the left)")
-    if R12.size == 3:
-        R12 = cv2.Rodrigues(R12.reshape(3, 1))[0]
-    if R12.size != 9 or not _is_rotation(R12.reshape(3, 3)):
-        raise InputError(f"--calib {path}: key R12: expected a 3x3 rotation or a rotation vector")
-    if t12.size != 3 or not np.all(np.isfinite(t12)):
-        raise InputError(f"--calib {path}: key t12: expected 3 finite numbers, got {t12.size} values")
-    if not np.any(t12):
-        raise InputError(f"--calib {path}: key t12 is zero: the rig's baseline fixes the scale")
-    return Ks, dists, (np.ascontiguousarray(R12.reshape(3, 3)), t12.reshape(3).copy())
+    return Ks, dists, _relative_pose(path, values["R12"], values["t12"], "the rig's baseline fixes the scale")
 
 
 def read_initial_poses(path: Path, minimum: int = 2) -> List[Tuple[np.ndarray, np.ndarray]]:
