@@ -35,8 +35,8 @@ const char* kUsage =
     "usage: tripose_track --images <folder | video | list> [--right <folder | video | list>]\n"
     "                     --calib calib.yml [--poses initial.txt]\n"
     "                     --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]\n"
-    "                     [--threshold px] [--local-adjustment 0|1] [--keyframe-parallax deg] [--seed n]\n"
-    "                     [--max-image-size px]\n"
+    "                     [--threshold px] [--local-adjustment 0|1] [--loop-closure 0|1]\n"
+    "                     [--keyframe-parallax deg] [--seed n] [--max-image-size px]\n"
     "  --images       a folder (its images in natural name order), a video file, or a text file listing\n"
     "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
     "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
@@ -45,16 +45,22 @@ const char* kUsage =
     "                 frames as --images; the calibration then holds K1 (optional dist1) of the left\n"
     "                 camera, K2 (dist2) of the right, and R12, t12: the right camera's pose relative to\n"
     "                 the left (|t12| sets the scale). No pose is needed: frame 0's left camera is the\n"
-    "                 world's origin, or the first pose of --poses. --local-adjustment is not available\n"
+    "                 world's origin, or the first pose of --poses. --local-adjustment and\n"
+    "                 --loop-closure are not available\n"
     "  --poses        a TUM trajectory (timestamp tx ty tz qx qy qz qw, camera to world) whose lines are\n"
     "                 the poses of the first frames, in order (at least two)\n"
     "  --output       the trajectory (TUM), one line per frame with a pose; lost frames are left out\n"
     "  --yaml         also every frame's status (0 given, 1 registered, 2 lost), keyframe, features,\n"
-    "                 inliers and pose (R row-major, t; NaN when lost)\n"
+    "                 inliers, pose (R row-major, t; NaN when lost) and recognised_keyframe: the keyframe\n"
+    "                 of a place seen before through which the frame was registered (a loop closed, a\n"
+    "                 link to an older place, or a lost camera found again), -1 for none\n"
     "  --window N     register each frame against the last N keyframes (default 5, at least 2)\n"
     "  --min-inliers  a frame is lost when fewer features agree with its pose (default 15)\n"
     "  --threshold    the registration's inlier threshold (px, default 2)\n"
     "  --local-adjustment 1: refine the window's frames and structure after each frame (default 0)\n"
+    "  --loop-closure 1: after each keyframe, look for a place seen before among the older keyframes and\n"
+    "                 close the loop through it (default 0; it costs a place check per keyframe). A\n"
+    "                 frame lost against the window is looked for among all keyframes either way\n"
     "  --keyframe-parallax  a registered frame becomes a keyframe from this parallax on (deg, default 0.1)\n"
     "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
@@ -102,6 +108,8 @@ Options parseArguments(int argc, char** argv)
             throw std::runtime_error(std::string("argument ") + required.first + " is required");
     if (!o.right.empty() && o.track.localAdjustment)
         throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
+    if (!o.right.empty() && o.track.loopClosure)
+        throw argumentError("--loop-closure", "not available with --right (the stereo tracker has none)");
     return o;
 }
 
@@ -291,6 +299,8 @@ int main(int argc, char** argv)
                                     result.features, result.milliseconds, frame.name.c_str());
             if (!result.reason.empty())
                 std::cout << "  (" << result.reason << ")";
+            if (result.recognisedKeyframe >= 0)
+                std::cout << "  (place of keyframe " << result.recognisedKeyframe << ")";
             std::cout << "\n";
             results.push_back(result);
             timestamps.push_back(frame.timestamp);
@@ -333,7 +343,7 @@ int main(int argc, char** argv)
         std::string text;
         const int F = (int)results.size();
         cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(std::nan(""))), status(F, 1, CV_32S), keyframes(F, 1, CV_32S),
-            featureCounts(F, 1, CV_32S), inliers(F, 1, CV_32S);
+            featureCounts(F, 1, CV_32S), inliers(F, 1, CV_32S), recognised(F, 1, CV_32S);
         for (int k = 0; k < F; ++k)
         {
             cv::tripose::TrackedFrame& r = results[k];
@@ -341,6 +351,7 @@ int main(int argc, char** argv)
             keyframes.at<int>(k) = r.keyframe ? 1 : 0;
             featureCounts.at<int>(k) = r.features;
             inliers.at<int>(k) = r.inliers;
+            recognised.at<int>(k) = r.recognisedKeyframe;
             // The current poses: a local adjustment moves frames after their own result.
             if (r.status == cv::tripose::FRAME_LOST ||
                 !(stereo ? stereoTracker->getPose(k, r.R, r.t) : tracker->getPose(k, r.R, r.t)))
@@ -363,7 +374,7 @@ int main(int argc, char** argv)
                     fs << "right" << options.right;
                 fs << "window" << options.track.window << "poses" << poses
                    << "status" << status << "keyframe" << keyframes << "features" << featureCounts << "inliers"
-                   << inliers;
+                   << inliers << "recognised_keyframe" << recognised;
             });
     }
     catch (const std::exception& e)

@@ -10,7 +10,8 @@ namespace tripose_samples {
 
 std::vector<std::string> trackerOptionNames(const std::string& localAdjustmentOption)
 {
-    return { "--window", "--min-inliers", "--threshold", "--keyframe-parallax", "--seed", localAdjustmentOption };
+    return { "--window", "--min-inliers", "--threshold", "--keyframe-parallax", "--seed", "--loop-closure",
+             localAdjustmentOption };
 }
 
 bool parseSwitch(const std::string& arg, const std::string& value)
@@ -42,6 +43,8 @@ bool readTrackerOption(const std::string& arg, const std::string& value, const s
     }
     else if (arg == "--seed")
         params.ransac.seed = parseInteger(arg, value, -2147483647.0);
+    else if (arg == "--loop-closure")
+        params.loopClosure = parseSwitch(arg, value);
     else if (arg == localAdjustmentOption)
         params.localAdjustment = parseSwitch(arg, value);
     else

@@ -13,7 +13,8 @@
 
 namespace tripose_samples {
 
-//! --window, --min-inliers, --threshold, --keyframe-parallax, --seed and @p localAdjustmentOption (0|1).
+//! --window, --min-inliers, --threshold, --keyframe-parallax, --seed, --loop-closure (0|1) and
+//! @p localAdjustmentOption (0|1).
 std::vector<std::string> trackerOptionNames(const std::string& localAdjustmentOption);
 
 /** Reads option @p arg (one of trackerOptionNames()) with @p value into @p params; false for any
