@@ -57,7 +57,6 @@ struct FrameExtras
     const Eigen::Matrix3d* KPtr() const { return hasK ? &K : nullptr; }
 };
 
-using detail::matOf;
 using detail::toTrackedFrame;
 
 std::vector<int64_t> readIds(InputArray array, int count, const char* name)
@@ -84,14 +83,8 @@ class TrackerImpl : public Tracker
 public:
     TrackerImpl(InputArray cameraMatrix, InputArray distCoeffs, const TrackerParams& params)
         : tracker_(TRIPOSE_CALL_CORE([&] {
-              std::vector<double> dist;
-              if (!distCoeffs.empty())
-              {
-                  Mat d;
-                  distCoeffs.getMat().convertTo(d, CV_64F);
-                  dist.assign(d.ptr<double>(), d.ptr<double>() + d.total());
-              }
-              return core::Tracker(detail::readMatrix3(cameraMatrix, "cameraMatrix"), dist, detail::toCoreOptions(params));
+              return core::Tracker(detail::readMatrix3(cameraMatrix, "cameraMatrix"), detail::readDistortion(distCoeffs),
+                                   detail::toCoreOptions(params));
           }))
     {
     }
@@ -123,20 +116,13 @@ public:
 
     bool getPose(int frame, OutputArray R, OutputArray t) const CV_OVERRIDE
     {
-        if (frame < 0 || frame >= tracker_.numFrames())
-            CV_Error_(Error::StsOutOfRange, ("frame %d is not one of the %d frames tracked", frame, tracker_.numFrames()));
-        const core::StoredFrame& f = tracker_.frame(frame);
-        if (!f.hasPose())
-            return false;
-        matOf(f.pose.R).copyTo(R);
-        matOf(f.pose.t).copyTo(t);
-        return true;
+        detail::checkFrameIndex(frame, tracker_.numFrames());
+        return detail::writeFramePose(tracker_.frame(frame), R, t);
     }
 
     void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks) const CV_OVERRIDE
     {
-        if (frame < 0 || frame >= tracker_.numFrames())
-            CV_Error_(Error::StsOutOfRange, ("frame %d is not one of the %d frames tracked", frame, tracker_.numFrames()));
+        detail::checkFrameIndex(frame, tracker_.numFrames());
         const core::StoredFrame& f = tracker_.frame(frame);
         Mat(f.pointTrack, true).copyTo(pointTracks);
         Mat(f.lineTrack, true).copyTo(lineTracks);

@@ -19,19 +19,6 @@ namespace {
 
 namespace core = detail::core;
 
-std::vector<double> readDistortion(InputArray array)
-{
-    std::vector<double> out;
-    if (!array.empty())
-    {
-        Mat d;
-        array.getMat().convertTo(d, CV_64F);
-        d = d.isContinuous() ? d : d.clone();
-        out.assign(d.ptr<double>(), d.ptr<double>() + d.total());
-    }
-    return out;
-}
-
 //! The rig from R (3x3 or a rotation vector) and t (3 elements), both required.
 core::CameraPose readRig(InputArray R, InputArray t)
 {
@@ -50,7 +37,7 @@ public:
         : tracker_(TRIPOSE_CALL_CORE([&] {
               const Eigen::Matrix3d KLeft = detail::readMatrix3(leftCameraMatrix, "leftCameraMatrix");
               const Eigen::Matrix3d KRight = detail::readMatrix3(rightCameraMatrix, "rightCameraMatrix");
-              return core::StereoTracker(KLeft, readDistortion(leftDist), KRight, readDistortion(rightDist),
+              return core::StereoTracker(KLeft, detail::readDistortion(leftDist), KRight, detail::readDistortion(rightDist),
                                          readRig(R, t), detail::toCoreOptions(params));
           }))
     {
@@ -72,19 +59,14 @@ public:
 
     bool getPose(int frame, OutputArray R, OutputArray t) const CV_OVERRIDE
     {
-        checkFrame(frame);
-        const core::StoredFrame& f = tracker_.frame(frame);
-        if (!f.hasPose())
-            return false;
-        detail::matOf(f.pose.R).copyTo(R);
-        detail::matOf(f.pose.t).copyTo(t);
-        return true;
+        detail::checkFrameIndex(frame, tracker_.numFrames());
+        return detail::writeFramePose(tracker_.frame(frame), R, t);
     }
 
     void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks, OutputArray pointStereoMatches,
                    OutputArray lineStereoMatches) const CV_OVERRIDE
     {
-        checkFrame(frame);
+        detail::checkFrameIndex(frame, tracker_.numFrames());
         const core::StoredFrame& f = tracker_.frame(frame);
         Mat(f.pointTrack, true).copyTo(pointTracks);
         Mat(f.lineTrack, true).copyTo(lineTracks);
@@ -95,12 +77,6 @@ public:
     }
 
 private:
-    void checkFrame(int frame) const
-    {
-        if (frame < 0 || frame >= tracker_.numFrames())
-            CV_Error_(Error::StsOutOfRange, ("frame %d is not one of the %d frames tracked", frame, tracker_.numFrames()));
-    }
-
     core::StereoTracker tracker_;
 };
 

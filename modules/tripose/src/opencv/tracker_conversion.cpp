@@ -51,6 +51,34 @@ bool readFramePose(InputArray R, InputArray t, ::tripose::CameraPose& pose)
     return true;
 }
 
+std::vector<double> readDistortion(InputArray distCoeffs)
+{
+    std::vector<double> out;
+    if (!distCoeffs.empty())
+    {
+        Mat d;
+        distCoeffs.getMat().convertTo(d, CV_64F);
+        d = d.isContinuous() ? d : d.clone();
+        out.assign(d.ptr<double>(), d.ptr<double>() + d.total());
+    }
+    return out;
+}
+
+void checkFrameIndex(int frame, int numFrames)
+{
+    if (frame < 0 || frame >= numFrames)
+        CV_Error_(Error::StsOutOfRange, ("frame %d is not one of the %d frames tracked", frame, numFrames));
+}
+
+bool writeFramePose(const ::tripose::StoredFrame& frame, OutputArray R, OutputArray t)
+{
+    if (!frame.hasPose())
+        return false;
+    matOf(frame.pose.R).copyTo(R);
+    matOf(frame.pose.t).copyTo(t);
+    return true;
+}
+
 Mat matOf(const Eigen::Matrix3d& R)
 {
     Mat out(3, 3, CV_64F);

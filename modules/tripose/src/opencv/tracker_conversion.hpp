@@ -12,6 +12,7 @@
 #include "opencv2/tripose/tracker.hpp"
 
 #include "../core/geometry/camera.hpp"
+#include "../core/tracking/track_store.hpp"
 #include "../core/tracking/tracker_options.hpp"
 
 namespace cv {
@@ -24,6 +25,15 @@ namespace detail {
 /** A frame's pose from @p R (3x3 or a rotation vector) and @p t (3 elements), given together or
 not at all; false when neither is given. cv::Exception naming "R" or "t" otherwise. */
 bool readFramePose(InputArray R, InputArray t, ::tripose::CameraPose& pose);
+
+//! The distortion coefficients as given (converted to double); empty when @p distCoeffs is.
+std::vector<double> readDistortion(InputArray distCoeffs);
+
+//! cv::Exception (out of range) unless @p frame is one of the @p numFrames frames tracked.
+void checkFrameIndex(int frame, int numFrames);
+
+//! The pose of a tracked frame written to @p R and @p t; false, leaving them, when it has none.
+bool writeFramePose(const ::tripose::StoredFrame& frame, OutputArray R, OutputArray t);
 
 Mat matOf(const Eigen::Matrix3d& R); //!< 3x3 CV_64F.
 Mat matOf(const Eigen::Vector3d& t); //!< 3x1 CV_64F.
