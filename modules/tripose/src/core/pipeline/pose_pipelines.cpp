@@ -76,11 +76,11 @@ std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolve
 }
 
 bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& linear, const RansacOptions& options,
-                                    RobustEstimate& estimate)
+                                    RobustEstimate& estimate, BasinSearch basins)
 {
     const PoseScorer scorer(views);
     const HybridPoseSolver solver(views, scorer, linear);
-    return estimateRobust(views, scorer, solver, options, estimate);
+    return estimateRobust(views, scorer, solver, options, estimate, basins);
 }
 
 bool estimateRobustRig(const ViewSet& views, const RansacOptions& options, RobustEstimate& estimate)
@@ -92,7 +92,7 @@ bool estimateRobustRig(const ViewSet& views, const RansacOptions& options, Robus
 }
 
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
-                    const RansacOptions& options, RobustEstimate& estimate)
+                    const RansacOptions& options, RobustEstimate& estimate, BasinSearch basins)
 {
     // Mixed minimal samples include three-line samples of the whole set, scored on all of it: they
     // find the basin of a line-dominated set as three-point samples do for points (doc/studies/speed.md,
@@ -102,8 +102,8 @@ bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSo
     // find the basin too, and the starts would take nearly all of the time without changing the
     // result (doc/studies/speed.md, "Stereo rig"); settling from all features, which costs one
     // refinement, stays.
-    const bool severalBasins =
-        solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer);
+    const bool severalBasins = basins == BasinSearch::WhereSeveral &&
+        (solver.mixedSampling() ? structureHasSeveralBasins(views, scorer) : hasSeveralBasins(views, scorer));
     const MultiStartRefiner refiner(views, options.refineOptions, &solver, severalBasins, !scorer.slidesKnownDepth(),
                                     severalBasins && knownPairIsNarrow(views, scorer));
     estimate.minima.clear();

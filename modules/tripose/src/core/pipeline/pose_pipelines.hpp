@@ -29,19 +29,30 @@ several basins, from starts around the best one), the distinct minima ranked by 
 */
 std::vector<ScoredPose> estimateCandidates(const ViewSet& views, const PoseSolver& solver, bool refine);
 
+/** Where the final refinement looks for the minimum: from further starts where the structure's
+regime allows several basins (a single estimate), or from the estimate alone (a tracked frame,
+whose pose its neighbours already place in the right basin).
+*/
+enum class BasinSearch
+{
+    WhereSeveral,
+    EstimateOnly
+};
+
 /** The robust estimate: RANSAC over @p solver's samples scored by @p scorer, then the refinement
 that @p options asks for. @p options must be valid (checkRansacOptions()). Returns false (and @p estimate's masks all zero) when no pose was found
 or the pose has fewer than RansacOptions::minInliers inliers.
 */
 bool estimateRobust(const ViewSet& views, const PoseScorer& scorer, const PoseSolver& solver,
-                    const RansacOptions& options, RobustEstimate& estimate);
+                    const RansacOptions& options, RobustEstimate& estimate,
+                    BasinSearch basins = BasinSearch::WhereSeveral);
 
 /** The robust estimate of one estimated view on the structure of known views (three views, several
 known views): the hybrid sample solver (robust/hybrid_pose_solver.hpp) over @p linear, its minimal
 samples solved on the structure that the scorer triangulates from the known views.
 */
 bool estimateRobustOnKnownStructure(const ViewSet& views, const PoseSolver& linear, const RansacOptions& options,
-                                    RobustEstimate& estimate);
+                                    RobustEstimate& estimate, BasinSearch basins = BasinSearch::WhereSeveral);
 
 /** The robust estimate of a stereo rig's pose at time B (linear/rig_system.hpp's layout): the hybrid
 sample solver over the rig's linear solver, its minimal samples drawn from the features of one

@@ -146,7 +146,7 @@ Registration registerAgainstWindow(const TrackStore& store, int frame, const std
         RansacOptions ransac = options.ransac;
         ransac.minInliers = options.minInliers;
         RobustEstimate estimate;
-        if (estimateRobustOnKnownStructure(set, linear, ransac, estimate))
+        if (estimateRobustOnKnownStructure(set, linear, ransac, estimate, BasinSearch::EstimateOnly))
         {
             out.pose = estimate.pose;
             out.inliers = estimate.numInliers;
