@@ -154,7 +154,7 @@ ImageFeatures extractFeatures(const cv::Mat& image, const cv::Matx33d& K, const 
     out.segments = cv::Mat(0, 4, CV_64F);
     if (options.kinds & FEATURES_POINTS)
     {
-        const cv::Ptr<cv::SIFT> sift = cv::SIFT::create(options.maxPoints);
+        const cv::Ptr<cv::SIFT> sift = cv::SIFT::create(options.maxPoints, 3, options.contrastThreshold);
         std::vector<cv::KeyPoint> keypoints;
         const int64 start = cv::getTickCount();
         sift->detectAndCompute(grey, cv::noArray(), keypoints, out.pointDescriptors);

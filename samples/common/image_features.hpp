@@ -54,6 +54,9 @@ struct FeatureOptions
 {
     FeatureKinds kinds = FEATURES_ALL;
     int maxPoints = 4000;            //!< The strongest SIFT key points kept (0: all).
+    //! SIFT's contrast threshold: lower finds more, fainter points, which hold a trajectory better
+    //! where texture is scarce, at more time per frame.
+    double contrastThreshold = 0.04;
     double minSegmentLength = 20;    //!< Shorter segments are dropped (px of the detection image): they are too short to give a direction.
     /** Images whose longer side exceeds this (px) are detected in a copy reduced to it (area
     averaging), and the features' positions mapped back to the image's pixels; 0: always the full
