@@ -3,11 +3,21 @@
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
                   [--threshold PX] [--local-adjustment] [--loop-closure] [--max-image-size PX]
+                  [--mode full | video]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
 segments with LBD), given to tripose.Tracker with the calibration's K and dist (the tracker
 undistorts them).
+
+--mode video tracks a monocular video in real time instead (tripose.video.VideoTracker): points are
+followed from frame to frame by optical flow and given to the tracker as linked observations, and
+detected afresh only in the frame after a keyframe or when too few survive (no descriptors, no
+matching). On the rendered courtyard (640x480) it takes a fraction of the full mode's time per frame
+at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
+by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG); --window, --min-inliers,
+--threshold, --local-adjustment and --loop-closure apply as in the full mode, --max-image-size and
+--right do not (the points are followed in the full-size frames of one camera).
 
 calib.yml (OpenCV FileStorage YAML, JSON or XML) holds K (3x3), optionally dist (OpenCV's
 distortion coefficients), and the pose of frame 1 relative to frame 0 as R12 (3x3 rotation or
@@ -132,6 +142,9 @@ def _parser():
     p.add_argument("--loop-closure", action="store_true",
                    help="after each keyframe, look for a place seen before among the older keyframes and close "
                         "the loop through it (a place check per keyframe)")
+    p.add_argument("--mode", choices=("full", "video"), default="full",
+                   help="full: features detected and matched in every frame (default); video: points followed "
+                        "by optical flow, detected afresh after keyframes (real time, monocular)")
     p.add_argument("--max-image-size", type=_whole_number(0),
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
     return p
@@ -395,12 +408,12 @@ def check_image_fits(K, shape, frame: int, name: str, calib: Path):
 
 # --- tracking --------------------------------------------------------------------------------------
 
-def tracker_options(args, pixel_scale: float = 1.0):
-    """tripose.TrackerOptions of the command line, the pixel tolerances grown by pixel_scale (the
-    reduction of the detection images)."""
+def tracker_options(args, pixel_scale: float = 1.0, options=None):
+    """tripose.TrackerOptions of the command line (over options, by default the library's), the pixel
+    tolerances grown by pixel_scale (the reduction of the detection images)."""
     import tripose
 
-    options = tripose.TrackerOptions()
+    options = tripose.TrackerOptions() if options is None else options
     if args.window is not None:
         options.window = args.window
     if args.min_inliers is not None:
@@ -561,6 +574,62 @@ def run_stereo(args) -> int:
     return 0
 
 
+def _write_outputs(args, pixel_scale, options, frames, poses):
+    """The TUM trajectory (and with --yaml the per-frame results), each written atomically, and the
+    summary line."""
+    rows = [(f["timestamp"], R, t) for f, pose in zip(frames, poses) if pose is not None for R, t in [pose]]
+    texts = [(args.output, _tum_text(rows))]
+    if args.yaml is not None:
+        texts.append((args.yaml, _yaml_text(args, pixel_scale, options, frames, poses)))
+    for path, text in texts:
+        try:
+            _write_atomically(path, text)
+        except OSError as error:
+            raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
+    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
+          f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
+
+
+def run_video(args, K, dist, given, source) -> int:
+    """run() with --mode video: tripose.video.VideoTracker on the frames of one camera."""
+    from . import video
+
+    options = video.VideoOptions(tracker=tracker_options(args, options=video.video_tracker_options()))
+    tracker = video.VideoTracker(K, dist, options)
+    frames, index = [], 0
+    print(f"{'frame':>5}  {'name':<28} {'status':<10} {'inliers/features':>16} {'ms':>7}  flow / detection / "
+          "registration ms")
+    for stamp, name, image in source:
+        if image is None:
+            outcome = "its given pose is kept, without features" if index < len(given) else "lost"
+            print(f"{PROGRAM}: frame {index} ({name}): cannot be read or decoded; {outcome}", file=sys.stderr)
+        else:
+            check_image_fits(K, image.shape, index, name, args.calib)
+        try:
+            frame = tracker.track(image, *(given[index] if index < len(given) else (None, None)))
+        except ValueError as error:
+            raise InputError(f"frame {index} ({name}): {error}") from None
+        result = frame.result
+        status, reason = result.status.name, result.reason
+        if image is None and status == "LOST":
+            reason = "the image cannot be read or decoded"
+        frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
+                       "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
+                       "reason": reason, "recognised_keyframe": result.recognised_keyframe})
+        ms = frame.milliseconds
+        print(f"{index:>5}  {name:<28} {status:<10} {f'{result.inliers}/{result.features}':>16} {ms['total']:>7.1f}  "
+              f"{ms['flow']:.1f} / {ms['detection']:.1f} / {ms['registration']:.1f}" + (f"  {reason}" if reason else ""),
+              flush=True)
+        index += 1
+    if index == 0:
+        raise InputError(f"--images {args.images}: holds no frames")
+    if args.poses is not None and len(given) > len(frames):
+        print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
+    _write_outputs(args, 1.0, options.tracker, frames, tracker.trajectory())
+    return 0
+
+
 def run(args) -> int:
     import tripose
     from . import images
@@ -571,7 +640,12 @@ def run(args) -> int:
         if args.yaml.resolve() == args.output.resolve():
             raise InputError(f"--yaml {args.yaml}: the same file as --output")
     if args.right is not None:
+        if args.mode == "video":
+            raise InputError("--mode video: not available with --right (the video mode tracks one camera)")
         return run_stereo(args)
+    if args.mode == "video" and args.max_image_size is not None:
+        raise InputError("--max-image-size: not used by --mode video (the points are followed in the full-size "
+                         "frames)")
     K, dist, relative = read_calibration(args.calib)
     if args.poses is not None:
         given = read_initial_poses(args.poses)
@@ -593,6 +667,8 @@ def run(args) -> int:
         source = images.open_frames(args.images)
     except ValueError as error:
         raise InputError(f"--images {error}") from None
+    if args.mode == "video":
+        return run_video(args, K, dist, given, source)
 
     tracker, pixel_scale, options = None, 1.0, None
     frames, waiting = [], []
