@@ -37,6 +37,7 @@ const char* kUsage =
     "                     --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]\n"
     "                     [--threshold px] [--local-adjustment 0|1] [--loop-closure 0|1]\n"
     "                     [--keyframe-parallax deg] [--seed n] [--max-image-size px]\n"
+    "                     [--contrast-threshold value]\n"
     "  --images       a folder (its images in natural name order), a video file, or a text file listing\n"
     "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
     "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
@@ -63,6 +64,8 @@ const char* kUsage =
     "                 frame lost against the window is looked for among all keyframes either way\n"
     "  --keyframe-parallax  a registered frame becomes a keyframe from this parallax on (deg, default 0.1)\n"
     "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
+    "  --contrast-threshold SIFT's contrast threshold (default 0.04): lower finds more, fainter points,\n"
+    "                       which hold a trajectory better where texture is scarce\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
     "arguments or input (the message names the option, file, frame or key; no output is written).\n";
 
@@ -70,6 +73,7 @@ struct Options
 {
     std::string images, right, calib, poses, output, yaml;
     int maxImageSize = -1;
+    double contrastThreshold = -1;
     cv::tripose::TrackerParams track;
 };
 
@@ -78,7 +82,7 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
-                                       "--max-image-size" };
+                                       "--max-image-size", "--contrast-threshold" };
     for (const std::string& name : trackerOptionNames("--local-adjustment"))
         known.push_back(name);
     for (const auto& option : optionPairs(argc, argv, kUsage, known, {}))
@@ -99,6 +103,12 @@ Options parseArguments(int argc, char** argv)
             o.yaml = value;
         else if (arg == "--max-image-size")
             o.maxImageSize = parseInteger(arg, value, 0.0);
+        else if (arg == "--contrast-threshold")
+        {
+            o.contrastThreshold = parseNumber(arg, value);
+            if (!(o.contrastThreshold >= 0))
+                throw argumentError(arg, "must be a number >= 0, got " + value);
+        }
         else
             readTrackerOption(arg, value, "--local-adjustment", o.track);
     }
@@ -224,6 +234,8 @@ int main(int argc, char** argv)
     FeatureOptions features;
     if (options.maxImageSize >= 0)
         features.maxImageSize = options.maxImageSize;
+    if (options.contrastThreshold >= 0)
+        features.contrastThreshold = options.contrastThreshold;
     cv::Ptr<cv::tripose::Tracker> tracker;
     cv::Ptr<cv::tripose::StereoTracker> stereoTracker;
     std::vector<cv::tripose::TrackedFrame> results;
