@@ -244,136 +244,11 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
 {
     FrameResult result;
     result.frame = frame;
-    std::vector<int> window;
     int oldestRecent = -1; // The oldest of the latest keyframes in the window.
     if (store_.frames[frame].status != FrameStatus::Given)
-    {
-        for (int j = frame - 1; j >= 0 && (int)window.size() < options_.window; --j)
-            if (store_.frames[j].keyframe)
-                window.insert(window.begin(), j);
-        const int recent = (int)window.size();
-        oldestRecent = window.empty() ? -1 : window.front();
-        // With loop closure, older keyframes that see much of what the frame sees (a place the
-        // camera came back to) join the window, so that the frame is held by the structure already
-        // known there.
-        if (options_.loopClosure)
-            for (const auto& k : keyframesSharingTracks(store_, frame, options_.minInliers))
-                if ((int)window.size() < recent + options_.window && (window.empty() || k.first < window.front()))
-                    window.push_back(k.first);
-        std::sort(window.begin(), window.end());
-        result.knownViews = (int)window.size();
-        Registration r;
-        if (window.size() < 2)
-            r.reason = "fewer than two keyframes to register against";
-        else
-        {
-            try
-            {
-                r = registerAgainstWindow(store_, frame, window, options_);
-            }
-            catch (const Error& e)
-            {
-                // The window's own geometry can be degenerate (keyframes at one centre): the frame is
-                // lost, not the tracker.
-                if (e.code() == ErrorCode::Internal)
-                    throw;
-                r = Registration();
-                r.reason = e.what();
-            }
-        }
-        if (!r.registered && features && !keyframeFeatures_.empty())
-        {
-            // Lost against the window: any keyframe whose place the frame sees can take it back.
-            int keyframe = -1;
-            Registration found = recognisePlace(
-                frame, *features, [](int) { return true; }, options_.minInliers, keyframe);
-            if (found.registered)
-            {
-                r = found;
-                r.keyframe = true;
-                result.recognisedKeyframe = keyframe;
-            }
-        }
-        result.features = r.features;
-        result.inliers = r.inliers;
-        result.reason = r.reason;
-        if (r.registered)
-        {
-            result.hasCovariance = r.covariance.valid;
-            result.covariance = r.covariance.covariance;
-            result.noiseVariance = r.covariance.noiseVariance;
-            StoredFrame& f = store_.frames[frame];
-            f.status = FrameStatus::Registered;
-            f.pose = r.pose;
-            f.keyframe = r.keyframe;
-            for (int kind = 0; kind < 2; ++kind)
-            {
-                const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
-                for (int track : kind == 0 ? r.rejectedPoints : r.rejectedLines)
-                {
-                    const int row = store_.rowIn(k, track, frame);
-                    const int newTrack = store_.split(k, frame, row);
-                    // The caller's id now names the new track in the frames that follow.
-                    if (byIds_)
-                        (kind == 0 ? pointIdTrack_ : lineIdTrack_)[(kind == 0 ? pointIdsOfFrame_
-                                                                              : lineIdsOfFrame_)[frame][row]] = newTrack;
-                }
-            }
-            if (options_.localAdjustment)
-            {
-                std::vector<int> free, fixed;
-                for (int j : window)
-                    if (store_.frames[j].status == FrameStatus::Registered)
-                        free.push_back(j);
-                free.push_back(frame);
-                for (int j = 0; j < frame; ++j)
-                    if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
-                        fixed.push_back(j);
-                try
-                {
-                    adjustFrames(store_, free, fixed, options_);
-                }
-                catch (const Error& e)
-                {
-                    if (e.code() == ErrorCode::Internal)
-                        throw;
-                }
-            }
-        }
-    }
+        registerFrame(frame, features, result, oldestRecent);
     if (features && store_.frames[frame].keyframe)
-    {
-        bool closed = false;
-        if (options_.loopClosure && store_.frames[frame].status == FrameStatus::Registered &&
-            result.recognisedKeyframe < 0 && oldestRecent >= 0)
-        {
-            // The keyframes older than the window that look like the frame are places it may see
-            // again: one it registers against is linked to it (its tracks join theirs), and closes a
-            // loop when the frame's pose through it and its tracked pose disagree.
-            int keyframe = -1;
-            const Registration place = recognisePlace(
-                frame, *features, [&](int k) { return k < oldestRecent; }, 2 * options_.minInliers, keyframe);
-            if (place.registered)
-            {
-                result.recognisedKeyframe = keyframe;
-                const CameraPose& tracked = store_.frames[frame].pose;
-                const double angle = Eigen::AngleAxisd(place.pose.R * tracked.R.transpose()).angle();
-                const double shift = (place.pose.centre() - tracked.centre()).norm();
-                const double reach = (store_.frames[keyframe].pose.centre() - tracked.centre()).norm();
-                if (angle > kLoopAngle || shift > kLoopShift * reach)
-                {
-                    closeLoop(frame, keyframe, place.pose);
-                    closed = true;
-                }
-            }
-        }
-        keyframeFeatures_[frame] = *features;
-        retrieval_.add(frame, *features);
-        ++keyframesSinceAdjustment_;
-        if (!closed && options_.globalAdjustmentInterval > 0 &&
-            keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
-            adjustEveryFrame();
-    }
+        keepKeyframe(frame, *features, oldestRecent, result);
     const StoredFrame& f = store_.frames[frame];
     result.status = f.status;
     result.pose = f.pose;
@@ -382,6 +257,137 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
     result.lineTracks = f.lineTrack;
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
+}
+
+void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResult& result, int& oldestRecent)
+{
+    std::vector<int> window;
+    for (int j = frame - 1; j >= 0 && (int)window.size() < options_.window; --j)
+        if (store_.frames[j].keyframe)
+            window.insert(window.begin(), j);
+    const int recent = (int)window.size();
+    oldestRecent = window.empty() ? -1 : window.front();
+    // With loop closure, older keyframes that see much of what the frame sees (a place the
+    // camera came back to) join the window, so that the frame is held by the structure already
+    // known there.
+    if (options_.loopClosure)
+        for (const auto& k : keyframesSharingTracks(store_, frame, options_.minInliers))
+            if ((int)window.size() < recent + options_.window && (window.empty() || k.first < window.front()))
+                window.push_back(k.first);
+    std::sort(window.begin(), window.end());
+    result.knownViews = (int)window.size();
+    Registration r;
+    if (window.size() < 2)
+        r.reason = "fewer than two keyframes to register against";
+    else
+    {
+        try
+        {
+            r = registerAgainstWindow(store_, frame, window, options_);
+        }
+        catch (const Error& e)
+        {
+            // The window's own geometry can be degenerate (keyframes at one centre): the frame is
+            // lost, not the tracker.
+            if (e.code() == ErrorCode::Internal)
+                throw;
+            r = Registration();
+            r.reason = e.what();
+        }
+    }
+    if (!r.registered && features && !keyframeFeatures_.empty())
+    {
+        // Lost against the window: any keyframe whose place the frame sees can take it back.
+        int keyframe = -1;
+        Registration found = recognisePlace(
+            frame, *features, [](int) { return true; }, options_.minInliers, keyframe);
+        if (found.registered)
+        {
+            r = found;
+            r.keyframe = true;
+            result.recognisedKeyframe = keyframe;
+        }
+    }
+    result.features = r.features;
+    result.inliers = r.inliers;
+    result.reason = r.reason;
+    if (r.registered)
+    {
+        result.hasCovariance = r.covariance.valid;
+        result.covariance = r.covariance.covariance;
+        result.noiseVariance = r.covariance.noiseVariance;
+        StoredFrame& f = store_.frames[frame];
+        f.status = FrameStatus::Registered;
+        f.pose = r.pose;
+        f.keyframe = r.keyframe;
+        for (int kind = 0; kind < 2; ++kind)
+        {
+            const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
+            for (int track : kind == 0 ? r.rejectedPoints : r.rejectedLines)
+            {
+                const int row = store_.rowIn(k, track, frame);
+                const int newTrack = store_.split(k, frame, row);
+                // The caller's id now names the new track in the frames that follow.
+                if (byIds_)
+                    (kind == 0 ? pointIdTrack_ : lineIdTrack_)[(kind == 0 ? pointIdsOfFrame_
+                                                                          : lineIdsOfFrame_)[frame][row]] = newTrack;
+            }
+        }
+        if (options_.localAdjustment)
+        {
+            std::vector<int> free, fixed;
+            for (int j : window)
+                if (store_.frames[j].status == FrameStatus::Registered)
+                    free.push_back(j);
+            free.push_back(frame);
+            for (int j = 0; j < frame; ++j)
+                if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
+                    fixed.push_back(j);
+            try
+            {
+                adjustFrames(store_, free, fixed, options_);
+            }
+            catch (const Error& e)
+            {
+                if (e.code() == ErrorCode::Internal)
+                    throw;
+            }
+        }
+    }
+}
+
+void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result)
+{
+    bool closed = false;
+    if (options_.loopClosure && store_.frames[frame].status == FrameStatus::Registered &&
+        result.recognisedKeyframe < 0 && oldestRecent >= 0)
+    {
+        // The keyframes older than the window that look like the frame are places it may see
+        // again: one it registers against is linked to it (its tracks join theirs), and closes a
+        // loop when the frame's pose through it and its tracked pose disagree.
+        int keyframe = -1;
+        const Registration place = recognisePlace(
+            frame, features, [&](int k) { return k < oldestRecent; }, 2 * options_.minInliers, keyframe);
+        if (place.registered)
+        {
+            result.recognisedKeyframe = keyframe;
+            const CameraPose& tracked = store_.frames[frame].pose;
+            const double angle = Eigen::AngleAxisd(place.pose.R * tracked.R.transpose()).angle();
+            const double shift = (place.pose.centre() - tracked.centre()).norm();
+            const double reach = (store_.frames[keyframe].pose.centre() - tracked.centre()).norm();
+            if (angle > kLoopAngle || shift > kLoopShift * reach)
+            {
+                closeLoop(frame, keyframe, place.pose);
+                closed = true;
+            }
+        }
+    }
+    keyframeFeatures_[frame] = features;
+    retrieval_.add(frame, features);
+    ++keyframesSinceAdjustment_;
+    if (!closed && options_.globalAdjustmentInterval > 0 &&
+        keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
+        adjustEveryFrame();
 }
 
 Registration Tracker::recognisePlace(int frame, const FrameFeatures& features,

@@ -63,6 +63,15 @@ private:
     int startFrame(const std::vector<Eigen::Vector2d>& points, const std::vector<Eigen::Vector4d>& segments,
                    const CameraPose* pose, const Eigen::Matrix3d* K);
     FrameResult finishFrame(int frame, double startSeconds, const FrameFeatures* features);
+    /** Registers frame @p frame against the window of the latest keyframes (and, with loop closure,
+    the older keyframes that share its tracks), or, that failing and with @p features, against the
+    place of any keyframe it sees; @p oldestRecent receives the oldest of the latest keyframes. */
+    void registerFrame(int frame, const FrameFeatures* features, FrameResult& result, int& oldestRecent);
+    /** Keeps keyframe @p frame's features for recognising its place, first checking, with loop
+    closure, whether it sees a place of the keyframes older than @p oldestRecent (a loop when its
+    pose through the place disagrees with its tracked pose); adjusts every frame when
+    TrackerOptions::globalAdjustmentInterval keyframes have come since the last adjustment. */
+    void keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result);
     /** Registers the frame against the best of the keyframes for which @p eligible holds, as retrieved
     by descriptors, and their neighbours (registerAgainstPlace()); @p keyframe the one that did. */
     Registration recognisePlace(int frame, const FrameFeatures& features, const std::function<bool(int)>& eligible,
