@@ -558,19 +558,7 @@ def run_stereo(args) -> int:
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
               + (f"  {reason}" if reason else ""), flush=True)
 
-    poses = tracker.trajectory()
-    rows = [(f["timestamp"], R, t) for f, pose in zip(frames, poses) if pose is not None for R, t in [pose]]
-    texts = [(args.output, _tum_text(rows))]
-    if args.yaml is not None:
-        texts.append((args.yaml, _yaml_text(args, pixel_scale, options, frames, poses)))
-    for path, text in texts:
-        try:
-            _write_atomically(path, text)
-        except OSError as error:
-            raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
-    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
-    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
-          f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
+    _write_outputs(args, pixel_scale, options, frames, tracker.trajectory())
     return 0
 
 
@@ -730,19 +718,7 @@ def run(args) -> int:
     if args.poses is not None and len(given) > len(frames):
         print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
 
-    poses = tracker.trajectory()
-    rows = [(f["timestamp"], R, t) for f, pose in zip(frames, poses) if pose is not None for R, t in [pose]]
-    texts = [(args.output, _tum_text(rows))]
-    if args.yaml is not None:
-        texts.append((args.yaml, _yaml_text(args, pixel_scale, options, frames, poses)))
-    for path, text in texts:
-        try:
-            _write_atomically(path, text)
-        except OSError as error:
-            raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
-    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
-    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
-          f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
+    _write_outputs(args, pixel_scale, options, frames, tracker.trajectory())
     return 0
 
 
