@@ -30,7 +30,7 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "test" / "python"))
 import real_sequences as rs  # noqa: E402
 
-SEQUENCES = ["fountain_p11", "herz_jesus_p8", "temple_ring", "kitti_06_forward"]
+SEQUENCES = ["fountain_p11", "herz_jesus_p8", "temple_ring", "kitti_06_forward", "model_house", "merton_college_1"]
 METHODS = ["sequential", "exhaustive"]
 IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".pgm", ".ppm", ".bmp", ".tif", ".tiff"}
 # Sequential matching pairs each frame with this many following frames (no loop detection).
@@ -134,29 +134,57 @@ def colmap_pinhole_params(K):
     return [K[0, 0], K[1, 1], K[0, 2] + 0.5, K[1, 2] + 0.5]
 
 
+def _without_skew(K):
+    K = np.array(K, np.float64)
+    K[0, 1] = 0.0
+    return K
+
+
 def extract(pycolmap, seq, work, threads):
-    """A database with the frames' SIFT features (COLMAP's defaults on the CPU) and one fixed PINHOLE camera;
-    the images are linked as NNNN.ext in frame order (sequential matching orders images by name)."""
-    for k in range(1, len(seq)):
-        if not np.allclose(seq.K[k], seq.K[0], rtol=1e-9, atol=1e-9):
-            raise ValueError(f"{seq.name}: frame {k}'s K differs from frame 0's; the baseline is one camera")
+    """A database with the frames' SIFT features (COLMAP's defaults on the CPU) and fixed PINHOLE cameras: one
+    for the sequence when every frame has the same K, else one per frame; the images are linked as NNNN.ext
+    in frame order (sequential matching orders images by name). COLMAP's PINHOLE camera has no skew: a frame
+    whose K has one is written resampled by K' K^-1 (an affine map), K' being K without the skew, which is
+    the same camera at the same pose."""
+    import cv2
+
+    one_camera = all(np.allclose(K, seq.K[0], rtol=1e-9, atol=1e-9) for K in seq.K)
     images = work / "images"
     images.mkdir()
-    names = []
-    for k, path in enumerate(seq.image_paths):
-        name = f"{k:04d}{Path(path).suffix.lower()}"
-        (images / name).symlink_to(Path(path).resolve())
+    names, params = [], []
+    for k, (path, K) in enumerate(zip(seq.image_paths, seq.K)):
+        if abs(K[0, 1]) > 1e-9 * K[0, 0]:
+            name = f"{k:04d}.png"
+            image = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
+            if image is None:
+                raise ValueError(f"{seq.name}: {path} cannot be read")
+            A = _without_skew(K) @ np.linalg.inv(K)
+            cv2.imwrite(str(images / name), cv2.warpAffine(image, A[:2], (image.shape[1], image.shape[0]),
+                                                           flags=cv2.INTER_CUBIC, borderMode=cv2.BORDER_REPLICATE))
+        else:
+            name = f"{k:04d}{Path(path).suffix.lower()}"
+            (images / name).symlink_to(Path(path).resolve())
         names.append(name)
+        params.append(colmap_pinhole_params(_without_skew(K)))
     database = work / "features.db"
     reader = pycolmap.ImageReaderOptions()
     reader.camera_model = "PINHOLE"
-    reader.camera_params = ",".join(f"{v:.17g}" for v in colmap_pinhole_params(seq.K[0]))
+    reader.camera_params = ",".join(f"{v:.17g}" for v in params[0])
     extraction = pycolmap.FeatureExtractionOptions()
     extraction.num_threads = threads
     extraction.use_gpu = False
     start = time.perf_counter()
-    pycolmap.extract_features(database, images, image_names=names, camera_mode=pycolmap.CameraMode.SINGLE,
+    mode = pycolmap.CameraMode.SINGLE if one_camera else pycolmap.CameraMode.PER_IMAGE
+    pycolmap.extract_features(database, images, image_names=names, camera_mode=mode,
                               reader_options=reader, extraction_options=extraction, device=pycolmap.Device.cpu)
+    if not one_camera:
+        database_file = pycolmap.Database.open(database)
+        for image in database_file.read_all_images():
+            camera = database_file.read_camera(image.camera_id)
+            camera.params = params[names.index(image.name)]
+            camera.has_prior_focal_length = True
+            database_file.update_camera(camera)
+        database_file.close()
     return database, images, time.perf_counter() - start
 
 
@@ -344,7 +372,7 @@ def evaluate(pycolmap, label, seq, args):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sequences", nargs="*", default=None, choices=SEQUENCES,
-                        help="real sequences (default: all four unless --folders is given)")
+                        help="real sequences (default: the first four unless --folders is given)")
     parser.add_argument("--folders", nargs="+", type=Path, default=[], help="sequences in the tracker's layout")
     parser.add_argument("--methods", nargs="+", default=METHODS, choices=METHODS, help="matching (default both)")
     parser.add_argument("--output", type=Path, help="folder for the per-frame JSON files")
@@ -376,7 +404,7 @@ def main():
         parser.error(f"--threads must be at least 1, got {args.threads}")
     pycolmap = import_pycolmap()
     pycolmap.logging.minloglevel = 2
-    sequences = args.sequences if args.sequences is not None else ([] if args.folders else SEQUENCES)
+    sequences = args.sequences if args.sequences is not None else ([] if args.folders else SEQUENCES[:4])
     jobs = [(name, lambda name=name: rs.relative_to_first(getattr(rs, name)())) for name in sequences]
     jobs += [(folder.name, lambda folder=folder: folder_sequence(folder)) for folder in args.folders]
     rows = []

@@ -324,6 +324,99 @@ def kitti_06_stereo(frame=KITTI_STEREO_FRAME):
     return _kitti(f"kitti-06-stereo-{frame}", [(frame, 0), (frame, 1)])
 
 
+def vgg_dir():
+    """The folder of the VGG multi-view sequences: $TRIPOSE_VGG_MULTIVIEW, else ../shared/data/vgg-multiview
+    beside the repository."""
+    env = os.environ.get("TRIPOSE_VGG_MULTIVIEW")
+    folder = Path(env) if env else REPO.parent / "shared" / "data" / "vgg-multiview"
+    if not (folder / "PROVENANCE.txt").is_file():
+        raise DataMissing(f"the VGG multi-view data is not at {folder} (no PROVENANCE.txt there): put shared/ "
+                          "beside the checkout or set TRIPOSE_VGG_MULTIVIEW to the folder")
+    return folder
+
+
+def _vgg_table(folder, name):
+    """Rows of a VGG table named `name` or `<prefix>.name` in `folder`; '*' read as None."""
+    paths = [folder / name] + sorted(folder.glob(f"*.{name}"))
+    paths = [p for p in paths if p.is_file()]
+    if not paths:
+        raise DataMissing(f"{folder}: no {name} file")
+    return [[None if v == "*" else float(v) for v in row] for row in _numbers(paths[0])]
+
+
+def decompose_vgg_camera(P, points):
+    """K (K[2, 2] = 1, positive diagonal), R and t of a VGG camera matrix P = lambda K [R | t], and whether
+    its world frame is mirrored: P's sign is chosen so that most of `points` (the 3D points the view sees,
+    (N, 3)) are in front of it; a mirrored world (det P[:, :3] < 0 then) is read with its Z axis flipped, so
+    that R and t map Z-flipped world points."""
+    import cv2
+
+    P = np.asarray(P, np.float64).copy()
+    X = np.hstack([np.asarray(points, np.float64).reshape(-1, 3), np.ones((len(points), 1))])
+    if np.count_nonzero(X @ P[2] > 0) < np.count_nonzero(X @ P[2] < 0):
+        P = -P
+    mirrored = bool(np.linalg.det(P[:, :3]) < 0)
+    if mirrored:
+        P[:, 2] = -P[:, 2]
+    K, R, C = cv2.decomposeProjectionMatrix(P)[:3]
+    # The decomposition is unique up to the signs of K's diagonal: make them positive.
+    signs = np.diag(np.sign(np.diag(K)))
+    K, R = K @ signs, signs @ R
+    if np.linalg.det(R) < 0 or K[2, 2] <= 0:
+        raise ValueError(f"P: not a camera in front of its points ({P.tolist()})")
+    C = C[:3, 0] / C[3, 0]
+    R = nearest_rotation(R)
+    return K / K[2, 2], R, -R @ C, mirrored
+
+
+def vgg_sequence(name):
+    """A VGG multi-view sequence with images (Model-House: 10 views of 768 x 576; Merton-College-I: 3 of
+    1024 x 768), cameras from its .P files (each view its own K), in file order. A mirrored world frame
+    (Model House's) is read Z-flipped; units are the data set's."""
+    folder = vgg_dir() / name
+    cameras = sorted(folder.glob("*.P"))
+    if not cameras:
+        raise DataMissing(f"{folder}: no *.P camera files")
+    points = np.array(_vgg_table(folder, "p3d"))
+    seen = _vgg_table(folder, "nview-corners")
+    seq = Sequence(name, [], [], [], [], 0, 0, [])
+    handedness = set()
+    import cv2
+
+    for view, path in enumerate(cameras):
+        images = [path.with_suffix(s) for s in (".pgm", ".jpg", ".png") if path.with_suffix(s).is_file()]
+        if not images:
+            raise DataMissing(f"{path}: no image beside it (.pgm, .jpg or .png)")
+        P = np.array(_vgg_table(folder, path.name))
+        if P.shape != (3, 4):
+            raise ValueError(f"{path}: expected 3 rows of 4 numbers")
+        rows = [i for i, row in enumerate(seen) if row[view] is not None]
+        K, R, t, mirrored = decompose_vgg_camera(P, points[rows])
+        handedness.add(mirrored)
+        image = cv2.imread(str(images[0]), cv2.IMREAD_UNCHANGED)
+        if image is None:
+            raise ValueError(f"{images[0]}: cannot be read")
+        seq.image_paths.append(images[0])
+        seq.K.append(K)
+        seq.R.append(R)
+        seq.t.append(t)
+        seq.ids.append(path.stem)
+        seq.height, seq.width = image.shape[:2]
+    if len(handedness) > 1:
+        raise ValueError(f"{folder}: some cameras see a mirrored world frame and some do not")
+    return seq
+
+
+def model_house():
+    """VGG Model House from its 10 images (768 x 576)."""
+    return vgg_sequence("Model-House")
+
+
+def merton_college_1():
+    """VGG Merton College I from its 3 images (1024 x 768)."""
+    return vgg_sequence("Merton-College-I")
+
+
 # --- output ----------------------------------------------------------------------------------------
 
 def write_calibration_yaml(path, K, dist=None, **poses):

@@ -131,8 +131,20 @@ def test_kitti_06_stereo_agrees_with_its_images():
     check_ground_truth(seq, 0, 1, (forward.R[0], forward.t[0], forward.R[1], forward.t[1]))
 
 
+def test_model_house_agrees_with_its_images_and_camera_matrices():
+    seq = rs.model_house()
+    assert len(seq) == 10 and (seq.width, seq.height) == (768, 576)
+    # Each view's K [R | t] is its .P file's matrix up to scale, with the mirrored world's Z flipped.
+    for view, K in enumerate(seq.K):
+        P = np.loadtxt(rs.vgg_dir() / "Model-House" / f"house.{view:03d}.P") @ np.diag([1.0, 1, -1, 1])
+        M = K @ np.hstack([seq.R[view], seq.t[view].reshape(3, 1)])
+        np.testing.assert_allclose(M / np.linalg.norm(M), P / np.linalg.norm(P) * np.sign(P[2, 3] * M[2, 3]),
+                                   atol=1e-9)
+    check_ground_truth(seq, 0, 1, (seq.R[0], seq.t[0], seq.R[6], seq.t[6]))
+
+
 @pytest.mark.parametrize("reader", [rs.fountain_p11, rs.herz_jesus_p8, rs.temple_ring, rs.kitti_06_forward,
-                                    rs.kitti_06_stereo])
+                                    rs.kitti_06_stereo, rs.model_house, rs.merton_college_1])
 def test_readers_give_exact_rotations_and_consistent_views(reader):
     seq = reader()
     n = len(seq)
