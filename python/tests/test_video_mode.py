@@ -41,7 +41,7 @@ def track(frames, truth, options=None):
 
 
 def test_every_frame_registered_within_the_measured_bound(walk):
-    # Measured on these 40 frames: the last at 0.403 deg and 1.863 % of the path (the full mode, SIFT
+    # Measured on these 40 frames: the last at 0.450 deg and 2.170 % of the path (the full mode, SIFT
     # and EDLines matched in every frame, 0.607 deg and 8.196 %); bounds at 1.5 times the measured.
     frames, truth, _ = walk
     results, trajectory = track(frames, truth)
@@ -53,7 +53,7 @@ def test_every_frame_registered_within_the_measured_bound(walk):
     R, t = trajectory[-1]
     rotation = rs.rotation_error_deg(R, Rs[-1])
     position = 100 * rs.position_error(R, t, Rs[-1], ts[-1]) / rs.path_length(Rs, ts)
-    assert rotation < 0.6 and position < 2.75, (rotation, position)
+    assert rotation < 0.675 and position < 3.25, (rotation, position)
     _, again = track(frames, truth)
     for (R, t), (R2, t2) in zip(trajectory, again):
         np.testing.assert_array_equal(R, R2)

@@ -15,9 +15,9 @@ followed from frame to frame by optical flow and given to the tracker as linked 
 detected afresh only in the frame after a keyframe or when too few survive (no descriptors, no
 matching). On the rendered courtyard (640x480) it takes a fraction of the full mode's time per frame
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
-by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG); --window, --min-inliers,
---threshold, --local-adjustment and --loop-closure apply as in the full mode, --max-image-size and
---right do not (the points are followed in the full-size frames of one camera).
+by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG) and the local adjustment is always
+on; --window, --min-inliers, --threshold and --loop-closure apply as in the full mode,
+--max-image-size and --right do not (the points are followed in the full-size frames of one camera).
 
 calib.yml (OpenCV FileStorage YAML, JSON or XML) holds K (3x3), optionally dist (OpenCV's
 distortion coefficients), and the pose of frame 1 relative to frame 0 as R12 (3x3 rotation or
@@ -420,8 +420,8 @@ def tracker_options(args, pixel_scale: float = 1.0, options=None):
         options.min_inliers = args.min_inliers
     if args.threshold is not None:
         options.ransac.threshold = args.threshold
-    options.local_adjustment = bool(args.local_adjustment)
-    options.loop_closure = bool(args.loop_closure)
+    options.local_adjustment = options.local_adjustment or bool(args.local_adjustment)
+    options.loop_closure = options.loop_closure or bool(args.loop_closure)
     options.ransac.threshold *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
     return options

@@ -30,8 +30,7 @@ from .tracking import FrameResult, Tracker, TrackerOptions
 __all__ = ["VideoOptions", "VideoFrame", "VideoTracker", "video_tracker_options"]
 
 # A video's frames are close: keyframes are spaced by this parallax (deg) instead of the full mode's
-# 0.1 (a keyframe at nearly every frame); at 1 deg, points found after a turn wait too long for a
-# keyframe to be triangulated and the tracker starves.
+# 0.1 (a keyframe at nearly every frame, each triangulating from the narrow baselines of the last).
 VIDEO_KEYFRAME_PARALLAX_DEG = 0.5
 
 # The stages a VideoFrame times, in the order they run.
@@ -40,9 +39,12 @@ STAGES = ("flow", "detection", "registration")
 
 def video_tracker_options() -> TrackerOptions:
     """The TrackerOptions a VideoTracker uses unless given others: the defaults, with keyframes
-    spaced by VIDEO_KEYFRAME_PARALLAX_DEG."""
+    spaced by VIDEO_KEYFRAME_PARALLAX_DEG and the local adjustment on (the window's frames and
+    structure refined after each registration): followed points are seen from a few close keyframes
+    only, and without it the structure and the poses drift together, every feature agreeing."""
     options = TrackerOptions()
     options.keyframe_parallax_deg = VIDEO_KEYFRAME_PARALLAX_DEG
+    options.local_adjustment = True
     return options
 
 
