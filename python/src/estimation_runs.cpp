@@ -60,6 +60,31 @@ PoseResult robustResult(bool found, const tripose::RobustEstimate& estimate, con
     return out;
 }
 
+PoseResult candidatesResult(const std::vector<tripose::ScoredPose>& candidates)
+{
+    PoseResult out;
+    out.kind = PoseResult::Kind::Candidates;
+    out.candidates = candidateList(candidates);
+    nb::list rms;
+    for (const tripose::ScoredPose& candidate : candidates)
+        rms.append(candidate.rms);
+    out.candidate_rms = rms;
+    out.numCandidates = (int)candidates.size();
+    out.hasPose = !candidates.empty();
+    if (out.hasPose)
+    {
+        // The best candidate's arrays are the views that its (R, t) in candidates holds.
+        const nb::object best = out.candidates[nb::int_(0)];
+        out.R = best[nb::int_(0)];
+        out.t = best[nb::int_(1)];
+        out.rotation = candidates[0].pose.R;
+        out.translation = candidates[0].pose.t;
+        out.rmsValue = candidates[0].rms;
+        out.rms = nb::float_(out.rmsValue);
+    }
+    return out;
+}
+
 PoseResult refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
                          const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty)
 {

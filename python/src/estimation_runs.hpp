@@ -32,10 +32,14 @@ PoseResult robustResult(bool found, const tripose::RobustEstimate& estimate, con
 PoseResult refinedResult(const tripose::ViewSet& views, const tripose::CameraPose& pose, double rms,
                          const tripose::RefinedStructure& structure, const tripose::PoseCovariance& uncertainty);
 
+//! Ranked candidates as a PoseResult: the best one as R, t (None without any), all of them in
+//! candidates and candidate_rms.
+PoseResult candidatesResult(const std::vector<tripose::ScoredPose>& candidates);
+
 //! The candidates of a problem: @p build makes its ViewSet, Solver is its PoseSolver; the GIL is
 //! released while they run.
 template <class Solver, class Build>
-nb::list runCandidates(Build build, bool refine)
+PoseResult runCandidates(Build build, bool refine)
 {
     std::vector<tripose::ScoredPose> candidates;
     {
@@ -44,7 +48,7 @@ nb::list runCandidates(Build build, bool refine)
         const Solver solver(views);
         candidates = tripose::estimateCandidates(views, solver, refine);
     }
-    return array_conversions::candidateList(candidates);
+    return candidatesResult(candidates);
 }
 
 //! The robust estimate of a problem: @p estimate runs the estimator of its arrangement, with

@@ -31,7 +31,9 @@ struct Field
 // Every field once: its attribute, its dictionary key (the names of the dicts the functions
 // returned before) and its docstring.
 const Field kFields[] = {
-    { "R", &PoseResult::R, "Rotation (3, 3) of the pose, x_cam = R @ X + t; None when no pose was found.",
+    { "R", &PoseResult::R,
+      "Rotation (3, 3) of the pose, x_cam = R @ X + t (estimate_pose_*: the best candidate's); None when no "
+      "pose was found.",
       TRIPOSE_ARRAY " | None" },
     { "t", &PoseResult::t, "Translation (3,) of the pose; None when no pose was found.",
       TRIPOSE_ARRAY " | None" },
@@ -44,7 +46,7 @@ const Field kFields[] = {
       TRIPOSE_MASK " | None" },
     { "rms", &PoseResult::rms,
       "RMS reprojection error (px): over the inliers (robust functions; NaN without a pose), over every "
-      "observation (refiners).",
+      "observation (refiners), the best candidate's (estimate_pose_*: candidate_rms[0]; None without one).",
       "float | None" },
     { "covariance", &PoseResult::covariance,
       "(6, 6) covariance of the pose for 1 px image noise, [rotation; translation] (help(tripose)); None "
@@ -55,9 +57,12 @@ const Field kFields[] = {
       "float | None" },
     { "candidates", &PoseResult::candidates,
       "Robust functions: the minima of the final refinement that the data cannot tell apart, as (R, t), the "
-      "returned pose first; empty without refinement or without a pose.",
+      "returned pose first; empty without refinement or without a pose. estimate_pose_*: every candidate "
+      "as (R, t), best first (R, t the first); empty when the geometry determines no pose.",
       "list[tuple[" TRIPOSE_ARRAY ", " TRIPOSE_ARRAY "]] | None" },
-    { "candidate_rms", &PoseResult::candidate_rms, "Robust functions: the RMS (px) over the inliers of each candidate.",
+    { "candidate_rms", &PoseResult::candidate_rms,
+      "The RMS reprojection error (px) of each candidate: robust functions over the inliers; estimate_pose_* "
+      "in the estimated view(s), or with refine=True over every view.",
       "list[float] | None" },
     { "ambiguous", &PoseResult::ambiguous, "Robust functions: more than one candidate (the pose is a coin toss).",
       "bool | None" },
@@ -96,6 +101,8 @@ std::string repr(const PoseResult& r)
     std::string text = "PoseResult(";
     if (r.kind == PoseResult::Kind::Adjusted)
         text += tripose::formatString("Rs, ts: %d poses", r.numPoses);
+    else if (r.kind == PoseResult::Kind::Candidates && !r.hasPose)
+        return text + "no pose, candidates=0)";
     else if (!r.hasPose)
         return text + tripose::formatString("no pose, num_inliers=0 of %d points and %d lines)", r.numPoints, r.numLines);
     else
@@ -112,9 +119,33 @@ std::string repr(const PoseResult& r)
     if (r.kind == PoseResult::Kind::Robust)
         text += tripose::formatString(", candidates=%d, ambiguous=%s", r.numCandidates,
                                       r.numCandidates > 1 ? "True" : "False");
+    else if (r.kind == PoseResult::Kind::Candidates)
+        text += tripose::formatString(", candidates=%d", r.numCandidates);
     else
         text += ", points3d=" + shapeText(r.points3d) + ", lines3d=" + shapeText(r.lines3d);
     return text + ")";
+}
+
+/** The list of candidates that estimate_pose_* returned before, for the deprecated list-like use:
+warns (DeprecationWarning) naming the field to read instead; TypeError for the other results, which
+were never lists.
+*/
+const nb::object& deprecatedCandidates(const PoseResult& r, const char* use)
+{
+    if (r.kind != PoseResult::Kind::Candidates)
+        throw nb::type_error(tripose::formatString("PoseResult: %s applies only to the result of estimate_pose_* "
+                                                   "(read result.candidates)",
+                                                   use)
+                                 .c_str());
+    const std::string message = tripose::formatString(
+        "%s reads the candidates of estimate_pose_line_point, estimate_pose_line_point_stereo or "
+        "estimate_pose_multiview as the list they returned before and is deprecated: they return a "
+        "tripose.PoseResult; read result.candidates (every (R, t), best first) or result.R, result.t "
+        "(None without a candidate) (README.md, 'Changes')",
+        use);
+    if (PyErr_WarnEx(PyExc_DeprecationWarning, message.c_str(), 1) != 0)
+        throw nb::python_error();
+    return r.candidates;
 }
 
 const Field* findField(const std::string& name)
@@ -130,11 +161,14 @@ const Field* findField(const std::string& name)
 void bindPoseResult(nb::module_& m)
 {
     nb::class_<PoseResult> cls(m, "PoseResult",
-                               "The result of the robust functions (estimate_pose_*_ransac), the refiners "
-                               "(refine_pose_*) and adjust_poses_multiview: R, t, num_inliers, point_inliers, "
+                               "The result of the candidate estimators (estimate_pose_line_point, "
+                               "estimate_pose_line_point_stereo, estimate_pose_multiview), the robust functions "
+                               "(estimate_pose_*_ransac), the refiners (refine_pose_*) and adjust_poses_multiview: R, t, num_inliers, point_inliers, "
                                "line_inliers, rms, covariance, noise_variance, candidates, candidate_rms, ambiguous, "
                                "points3d, lines3d, Rs, ts; None where the function does not give one. "
-                               "result['R'] reads a field as result.R does (the dictionaries of earlier releases).");
+                               "result['R'] reads a field as result.R does (the dictionaries of earlier releases); "
+                               "len(result), iterating and result[0] read the candidates of estimate_pose_* as "
+                               "the list of earlier releases (deprecated: read result.candidates).");
     for (const Field& field : kFields)
     {
         nb::object PoseResult::*member = field.member;
@@ -151,6 +185,30 @@ void bindPoseResult(nb::module_& m)
                     throw nb::key_error(key.c_str());
                 return r.*(field->member);
             })
+        .def("__getitem__",
+             [](const PoseResult& r, Py_ssize_t index) -> nb::object {
+                 return deprecatedCandidates(r, "result[i]")[nb::int_(index)];
+             },
+             nb::arg("index"), "Deprecated: the candidate at index (result.candidates[index]).")
+        .def("__getitem__",
+             [](const PoseResult& r, nb::slice slice) -> nb::object {
+                 return deprecatedCandidates(r, "result[i:j]")[slice];
+             },
+             nb::arg("index"), "Deprecated: the candidates of the slice (result.candidates[i:j]).")
+        .def("__len__",
+             [](const PoseResult& r) { return nb::len(deprecatedCandidates(r, "len(result)")); },
+             "Deprecated: the number of candidates (len(result.candidates)).")
+        .def("__iter__",
+             [](const PoseResult& r) { return nb::iter(deprecatedCandidates(r, "iterating over the result")); },
+             "Deprecated: the candidates as (R, t) (iter(result.candidates)).")
+        .def("__bool__",
+             [](const PoseResult& r) {
+                 // Every other result was always true; the candidates' list was false when empty.
+                 if (r.kind != PoseResult::Kind::Candidates)
+                     return true;
+                 return nb::len(deprecatedCandidates(r, "bool(result)")) > 0;
+             },
+             "True, except the result of estimate_pose_* without a candidate (deprecated: read result.R is not None).")
         .def("__contains__", [](const PoseResult&, const std::string& key) { return findField(key) != nullptr; })
         .def("get",
              [](const PoseResult& r, const std::string& key, nb::object fallback) {

@@ -9,8 +9,8 @@
 
 #include <Eigen/Core>
 
-/** tripose.PoseResult: what every robust and refining function returns, one field per quantity,
-None where the function does not give it. The Python values are made once, when the result is;
+/** tripose.PoseResult: what every estimator, robust and refining function returns, one field per
+quantity, None where the function does not give it. The Python values are made once, when the result is;
 the rest is what its repr prints. */
 struct PoseResult
 {
@@ -19,6 +19,7 @@ struct PoseResult
         Robust,   //!< estimate_pose_*_ransac
         Refined,  //!< refine_pose_*
         Adjusted, //!< adjust_poses_multiview (Rs, ts; R and t None)
+        Candidates, //!< estimate_pose_* (the ranked candidates; for one release also read as their list)
     };
 
     nanobind::object R = nanobind::none(), t = nanobind::none(), num_inliers = nanobind::none(),

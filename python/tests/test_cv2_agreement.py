@@ -129,8 +129,8 @@ def solve_with_package(p: Dict[str, np.ndarray]) -> Dict[str, np.ndarray]:
                     [R for R, _ in result.candidates], [t for _, t in result.candidates], result.candidate_rms,
                     result.covariance, result.noise_variance)
 
-    def linear(family: str, candidates) -> None:
-        with_linear(out, family, [R for R, _ in candidates], [t for _, t in candidates])
+    def linear(family: str, result) -> None:
+        with_linear(out, family, [R for R, _ in result.candidates], [t for _, t in result.candidates])
 
     known = (p["three_K"], p["three_R12"], p["three_t12"])
     linear("three", tripose.estimate_pose_line_point(*three_view_args(p, False), *known))

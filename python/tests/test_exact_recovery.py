@@ -35,8 +35,8 @@ def check_fraction(hits, total, label):
         f"{label}: true pose not among the candidates in {len(misses)} of {total} scenes (seeds {misses[:20]})"
 
 
-def truth_found(candidates, R, t):
-    return any(pose_close(Rc, tc, R, t, TOL) for Rc, tc in candidates)
+def truth_found(result, R, t):
+    return any(pose_close(Rc, tc, R, t, TOL) for Rc, tc in result.candidates)
 
 
 @pytest.mark.parametrize("num_points,num_lines,num_scenes", THREE_VIEW_MIXES)
@@ -44,11 +44,11 @@ def test_three_view_exact(num_points, num_lines, num_scenes):
     hits = []
     for seed in range(num_scenes):
         s = three_view_scene(seed, num_points, num_lines)
-        candidates = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
-        for R, t in candidates:
+        result = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
+        for R, t in result.candidates:
             assert R.shape == (3, 3) and t.shape == (3,) and R.dtype == np.float64
             assert abs(np.linalg.det(R) - 1) < 1e-9
-        hits.append((seed, truth_found(candidates, s.R, s.t)))
+        hits.append((seed, truth_found(result, s.R, s.t)))
     check_fraction(hits, num_scenes, f"{num_points}P{num_lines}L")
 
 
@@ -57,18 +57,18 @@ def test_three_view_overdetermined_truth_is_best(num_points, num_lines):
     # More features than the minimum: one pose fits them all, and it is the first candidate.
     for seed in range(30):
         s = three_view_scene(1000 + seed, num_points, num_lines)
-        candidates = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
-        assert candidates, seed
-        assert pose_close(*candidates[0], s.R, s.t, TOL), seed
+        result = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
+        assert result.R is not None, seed
+        assert pose_close(result.R, result.t, s.R, s.t, TOL), seed
 
 
 def test_three_view_refine_keeps_exact_pose():
     hits = []
     for seed in range(100):
         s = three_view_scene(seed, 3, 2)
-        candidates = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12,
-                                                      refine=True)
-        hits.append((seed, truth_found(candidates, s.R, s.t)))
+        result = tripose.estimate_pose_line_point(*views(s.points), *views(s.lines), s.K, s.R12, s.t12,
+                                                  refine=True)
+        hits.append((seed, truth_found(result, s.R, s.t)))
     check_fraction(hits, 100, "3P2L refine=True")
 
 
@@ -77,8 +77,8 @@ def test_homogeneous_lines_equal_segments():
     for seed in range(20):
         s = three_view_scene(seed, 2, 3)
         homogeneous = [np.cross(np.c_[l[:, :2], np.ones(len(l))], np.c_[l[:, 2:], np.ones(len(l))]) for l in s.lines]
-        candidates = tripose.estimate_pose_line_point(*s.points, *homogeneous, s.K, s.R12, s.t12)
-        assert truth_found(candidates, s.R, s.t), seed
+        result = tripose.estimate_pose_line_point(*s.points, *homogeneous, s.K, s.R12, s.t12)
+        assert truth_found(result, s.R, s.t), seed
 
 
 def test_one_camera_matrix_per_view():
@@ -87,8 +87,8 @@ def test_one_camera_matrix_per_view():
     per_view = tripose.estimate_pose_line_point(*s.points, *s.lines, [s.K, s.K, s.K], s.R12, s.t12)
     stacked = tripose.estimate_pose_line_point(*s.points, *s.lines, np.stack([s.K] * 3), s.R12, s.t12)
     for other in (per_view, stacked):
-        assert len(other) == len(shared)
-        for (R0, t0), (R1, t1) in zip(shared, other):
+        assert len(other.candidates) == len(shared.candidates)
+        for (R0, t0), (R1, t1) in zip(shared.candidates, other.candidates):
             np.testing.assert_array_equal(R0, R1)
             np.testing.assert_array_equal(t0, t1)
 
@@ -107,8 +107,8 @@ def test_stereo_exact(num_points, num_lines, missing, num_scenes):
     for seed in range(num_scenes):
         s = stereo_scene(seed, num_points, num_lines, missing)
         nan_rows += sum(int(np.isnan(a).any(axis=1).sum()) for a in s.points[2:] + s.lines[2:])
-        candidates = tripose.estimate_pose_line_point_stereo(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
-        hits.append((seed, truth_found(candidates, s.R, s.t)))
+        result = tripose.estimate_pose_line_point_stereo(*views(s.points), *views(s.lines), s.K, s.R12, s.t12)
+        hits.append((seed, truth_found(result, s.R, s.t)))
     if missing > 0:
         assert nan_rows > 0.2 * num_scenes * (num_points + num_lines)  # the NaN rows are exercised
     check_fraction(hits, num_scenes, f"stereo {num_points}P{num_lines}L")
@@ -124,8 +124,8 @@ def test_multiview_exact(num_points, num_lines, num_scenes):
         s = multiview_scene(seed, num_points, num_lines, num_known=3)
         points = views(s.points) if num_points else None
         lines = views(s.lines) if num_lines else None
-        candidates = tripose.estimate_pose_multiview(points, lines, s.K, s.Rs, s.ts)
-        hits.append((seed, truth_found(candidates, s.R, s.t)))
+        result = tripose.estimate_pose_multiview(points, lines, s.K, s.Rs, s.ts)
+        hits.append((seed, truth_found(result, s.R, s.t)))
     check_fraction(hits, num_scenes, f"multi-view {num_points}P{num_lines}L")
 
 

@@ -113,9 +113,9 @@ def test_linear_matches_tool(tmp_path, seed, num_points, num_lines, dist, suffix
     problem = noisy_three_view_problem(tmp_path, seed, num_points, num_lines, dist=dist, suffix=suffix)
     tool = run_tool(tmp_path, problem, "--method", "linear", "--refine", refine)
     p = read_problem(problem)
-    candidates = tripose.estimate_pose_line_point(*three_view_args(p), dist=p["dist"], refine=bool(refine))
-    assert tool["num_solutions"] == len(candidates) > 0
-    assert_same_pose(tool, *candidates[0])
+    result = tripose.estimate_pose_line_point(*three_view_args(p), dist=p["dist"], refine=bool(refine))
+    assert tool["num_solutions"] == len(result.candidates) > 0
+    assert_same_pose(tool, result.R, result.t)
 
 
 @pytest.mark.parametrize("refine", [0, 1])
@@ -158,9 +158,9 @@ def test_stereo_linear_matches_tool(tmp_path, refine):
     # NaN rows (features unseen by view 3 or 4) survive the file.
     assert sum(int(np.isnan(p[key]).all(axis=1).sum()) for key in ("points3", "points4", "lines3", "lines4")) > 0
     tool = run_tool(tmp_path, problem, "--method", "linear", "--refine", refine)
-    candidates = tripose.estimate_pose_line_point_stereo(*stereo_args(p), refine=bool(refine))
-    assert tool["num_solutions"] == len(candidates) > 0
-    assert_same_pose(tool, *candidates[0])
+    result = tripose.estimate_pose_line_point_stereo(*stereo_args(p), refine=bool(refine))
+    assert tool["num_solutions"] == len(result.candidates) > 0
+    assert_same_pose(tool, result.R, result.t)
 
 
 def test_stereo_ransac_matches_tool(tmp_path):

@@ -45,7 +45,8 @@ def test_threads_share_one_input_without_copies(problem):
     with ThreadPoolExecutor(8) as pool:
         results = list(pool.map(lambda _: tripose.estimate_pose_line_point(*problem), range(8)))
     for r in results[1:]:
-        for (Ra, ta), (Rb, tb) in zip(results[0], r):
+        assert len(r.candidates) == len(results[0].candidates) > 0
+        for (Ra, ta), (Rb, tb) in zip(results[0].candidates, r.candidates):
             np.testing.assert_array_equal(Ra, Rb)
             np.testing.assert_array_equal(ta, tb)
 

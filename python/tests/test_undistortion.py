@@ -81,12 +81,12 @@ def compare(s, points, lines, dists, dist_argument):
 
     with_dist = tripose.estimate_pose_line_point(*points, *lines, s.K, s.R12, s.t12, dist=dist_argument)
     without = tripose.estimate_pose_line_point(*undistorted_points, *undistorted_lines, s.K, s.R12, s.t12)
-    assert len(with_dist) == len(without) > 0
-    for (Ra, ta), (Rb, tb) in zip(with_dist, without):
+    assert len(with_dist.candidates) == len(without.candidates) > 0
+    for (Ra, ta), (Rb, tb) in zip(with_dist.candidates, without.candidates):
         assert rotation_error(Ra, Rb) < LINEAR_POSE_TOL
         assert translation_error(ta, tb) < LINEAR_POSE_TOL
     # Both are close to the truth (0.5 px noise): the undistortion is right, not only the same.
-    assert rotation_error(with_dist[0][0], s.R) < np.deg2rad(1.0)
+    assert rotation_error(with_dist.R, s.R) < np.deg2rad(1.0)
 
     refined_with = tripose.refine_pose_line_point(*points, *lines, s.K, s.R12, s.t12, s.R, s.t, dist=dist_argument,
                                                   max_iterations=300)
@@ -119,12 +119,12 @@ def test_distortion_vector_layouts(shape):
     s, points, lines = distorted_scene(1, [dist] * 3)
     reference = tripose.estimate_pose_line_point(*points, *lines, s.K, s.R12, s.t12, dist=dist)
     other = tripose.estimate_pose_line_point(*points, *lines, s.K, s.R12, s.t12, dist=dist.reshape(shape))
-    np.testing.assert_array_equal(reference[0][0], other[0][0])
-    np.testing.assert_array_equal(reference[0][1], other[0][1])
+    np.testing.assert_array_equal(reference.R, other.R)
+    np.testing.assert_array_equal(reference.t, other.t)
 
 
 def test_zero_distortion_is_no_distortion():
     s = three_view_scene(2, 6, 6)
     none = tripose.estimate_pose_line_point(*s.points, *s.lines, s.K, s.R12, s.t12)
     zeros = tripose.estimate_pose_line_point(*s.points, *s.lines, s.K, s.R12, s.t12, dist=np.zeros(5))
-    assert rotation_error(none[0][0], zeros[0][0]) < 1e-12
+    assert rotation_error(none.R, zeros.R) < 1e-12

@@ -25,10 +25,13 @@ Conventions (the same as the C++ API, doc/conventions.md):
   tolerance); every options class takes any of its fields as a keyword, the rest keeping their
   defaults: RansacOptions(threshold=3, min_inliers=5). The keyword arguments of earlier releases (threshold=..., loss=...) still work for
   this release and warn (README.md, "Changes").
-* Results: the robust functions, the refiners and adjust_poses_multiview return a PoseResult (R, t,
-  num_inliers, point_inliers, line_inliers, rms, covariance, noise_variance, candidates,
-  candidate_rms, ambiguous, points3d, lines3d, Rs, ts; None where not given; result["R"] reads
-  result.R). The candidate functions (estimate_pose_*) return a list of (R, t), best first.
+* Results: every estimator returns a PoseResult (R, t, num_inliers, point_inliers, line_inliers,
+  rms, covariance, noise_variance, candidates, candidate_rms, ambiguous, points3d, lines3d, Rs, ts;
+  None where the function does not give it; result["R"] reads result.R). The candidate functions
+  (estimate_pose_line_point, estimate_pose_line_point_stereo, estimate_pose_multiview) fill R, t and
+  rms with the best candidate's, candidates with every candidate as (R, t), best first, and
+  candidate_rms; for this release len(result), iterating over it and result[0] still read
+  candidates as the list they returned before, and warn (README.md, "Changes").
 * Pose covariance (PoseResult.covariance of the refiners and the robust functions): covariance is the (6, 6)
   covariance of the pose for 1 px image noise, order [rotation; translation], the rotation error d
   with R_est = expm([d]x) @ R_true, the translation error t_est - t_true, the structure
@@ -41,7 +44,7 @@ Conventions (the same as the C++ API, doc/conventions.md):
 from __future__ import annotations
 
 import warnings
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -141,14 +144,20 @@ def _view_list(value: Any, name: str) -> Any:
 def estimate_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike,
                              lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike,
                              K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
-                             dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+                             dist: ArrayLike = None, refine: bool = False) -> PoseResult:
     """Pose of view 3 from points and lines seen in views 1, 2 (known) and 3, without outliers.
 
     The unified linear method on all features (at least four: points + lines); with refine=True
-    each candidate is then refined by maximum likelihood over the three views.
+    each candidate is then refined by maximum likelihood over the three views (the distinct minima
+    kept).
 
-    Returns the candidate poses as a list of (R, t), best first (lowest reprojection error in
-    view 3); empty when the geometry determines no pose.
+    Returns a PoseResult: candidates, the candidate poses as a list of (R, t), best first (lowest
+    reprojection error in view 3; with refine=True lowest RMS over the three views), empty when the
+    geometry determines no pose; candidate_rms their RMS reprojection errors (px); R, t and rms the
+    best candidate's (None without one). The other fields are None (no inliers, covariance or
+    structure: refine_pose_line_point gives the covariance and structure of a pose). Deprecated
+    for this release: len(result), iterating over it and result[i] read candidates as the list
+    returned before, and warn.
     """
     return _ext.estimate_pose_line_point(points1, points2, points3, lines1,
                                          lines2, lines3, K, R12, t12,
@@ -228,12 +237,13 @@ def refine_pose_line_point(points1: ArrayLike, points2: ArrayLike, points3: Arra
 def estimate_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points3: ArrayLike, points4: ArrayLike,
                                     lines1: ArrayLike, lines2: ArrayLike, lines3: ArrayLike, lines4: ArrayLike,
                                     K: ArrayLike, R12: ArrayLike, t12: ArrayLike, *,
-                                    dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+                                    dist: ArrayLike = None, refine: bool = False) -> PoseResult:
     """Motion of a calibrated stereo rig (the left camera's pose at time B), without outliers.
 
     Views 1, 2: left and right at time A; views 3, 4: left and right at time B (NaN rows where one
     of them does not see a feature; every feature must be seen in view 3 or 4). (R12, t12): the rig.
-    Returns the candidates as a list of (R, t), best first.
+    Returns a PoseResult as estimate_pose_line_point: candidates (R, t), best first, candidate_rms,
+    and R, t, rms of the best.
     """
     return _ext.estimate_pose_line_point_stereo(points1, points2, points3, points4,
                                                 lines1, lines2, lines3, lines4,
@@ -274,12 +284,13 @@ def refine_pose_line_point_stereo(points1: ArrayLike, points2: ArrayLike, points
 
 def estimate_pose_multiview(points: Optional[Sequence[ArrayLike]], lines: Optional[Sequence[ArrayLike]],
                             K: ArrayLike, Rs: Sequence[ArrayLike], ts: Sequence[ArrayLike], *,
-                            dist: ArrayLike = None, refine: bool = False) -> List[Pose]:
+                            dist: ArrayLike = None, refine: bool = False) -> PoseResult:
     """World pose of a new view from features seen by V >= 2 views of known world poses Rs, ts.
 
     points, lines: one array per view (the known views, then the new view), NaN rows where a view
     does not see a feature; every feature must be seen by the new view and two known views.
-    Returns the candidates as a list of (R, t), best first.
+    Returns a PoseResult as estimate_pose_line_point: candidates (R, t), best first, candidate_rms,
+    and R, t, rms of the best.
     """
     return _ext.estimate_pose_multiview(_view_list(points, "points"), _view_list(lines, "lines"), K, _view_list(Rs, "Rs"),
                                         _view_list(ts, "ts"), dist, bool(refine))

@@ -2,8 +2,9 @@
 tripose's extension; use the functions of the tripose package, which document them.
 """
 
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 import enum
+from typing import overload
 
 import numpy
 import numpy.typing
@@ -191,7 +192,7 @@ class TrackerOptions:
     Options of tripose.Tracker: the window of keyframes a frame is registered against, the support a pose needs (min_inliers), keyframes by parallax, the track checks, the local adjustment, and the RansacOptions (ransac) and MatchOptions (matching) it uses. Defaults are the library's.
     """
 
-    def __init__(self, *, window: int = 5, min_inliers: int = 15, keyframe_parallax_deg: float = 0.1, check_tracks: bool = True, local_adjustment: bool = False, robust: bool = True, ransac: RansacOptions = ..., matching: MatchOptions = ..., covariance: bool = False, max_frame_gap: int = 3) -> None:
+    def __init__(self, *, window: int = 5, min_inliers: int = 15, keyframe_parallax_deg: float = 0.1, check_tracks: bool = True, local_adjustment: bool = False, loop_closure: bool = False, global_adjustment_interval: int = 0, robust: bool = True, ransac: RansacOptions = ..., matching: MatchOptions = ..., covariance: bool = False, max_frame_gap: int = 3) -> None:
         """The defaults, with any field given as a keyword set to its value."""
 
     @property
@@ -236,6 +237,24 @@ class TrackerOptions:
 
     @local_adjustment.setter
     def local_adjustment(self, arg: bool, /) -> None: ...
+
+    @property
+    def loop_closure(self) -> bool:
+        """
+        After each new keyframe, look for a place seen before among the keyframes older than the window (by descriptors); registered against it, join the tracks, spread the correction and adjust every frame (frames given as features only).
+        """
+
+    @loop_closure.setter
+    def loop_closure(self, arg: bool, /) -> None: ...
+
+    @property
+    def global_adjustment_interval(self) -> int:
+        """
+        Every this many new keyframes, adjust every registered frame and the structure together, the given frames held, and split off the observations that disagree (0: only at a loop).
+        """
+
+    @global_adjustment_interval.setter
+    def global_adjustment_interval(self, arg: int, /) -> None: ...
 
     @property
     def robust(self) -> bool:
@@ -332,6 +351,12 @@ class FrameResult:
         """Later frames are registered against it."""
 
     @property
+    def recognised_keyframe(self) -> int:
+        """
+        The keyframe of a place seen before through which the frame was registered: a loop it closed, or where the lost camera was found again; -1 for neither.
+        """
+
+    @property
     def milliseconds(self) -> float:
         """Time of matching and registration."""
 
@@ -363,13 +388,13 @@ class FrameResult:
 
 class PoseResult:
     """
-    The result of the robust functions (estimate_pose_*_ransac), the refiners (refine_pose_*) and adjust_poses_multiview: R, t, num_inliers, point_inliers, line_inliers, rms, covariance, noise_variance, candidates, candidate_rms, ambiguous, points3d, lines3d, Rs, ts; None where the function does not give one. result['R'] reads a field as result.R does (the dictionaries of earlier releases).
+    The result of the candidate estimators (estimate_pose_line_point, estimate_pose_line_point_stereo, estimate_pose_multiview), the robust functions (estimate_pose_*_ransac), the refiners (refine_pose_*) and adjust_poses_multiview: R, t, num_inliers, point_inliers, line_inliers, rms, covariance, noise_variance, candidates, candidate_rms, ambiguous, points3d, lines3d, Rs, ts; None where the function does not give one. result['R'] reads a field as result.R does (the dictionaries of earlier releases); len(result), iterating and result[0] read the candidates of estimate_pose_* as the list of earlier releases (deprecated: read result.candidates).
     """
 
     @property
     def R(self, /) -> numpy.typing.NDArray[numpy.float64] | None:
         """
-        Rotation (3, 3) of the pose, x_cam = R @ X + t; None when no pose was found.
+        Rotation (3, 3) of the pose, x_cam = R @ X + t (estimate_pose_*: the best candidate's); None when no pose was found.
         """
 
     @property
@@ -393,7 +418,7 @@ class PoseResult:
     @property
     def rms(self, /) -> float | None:
         """
-        RMS reprojection error (px): over the inliers (robust functions; NaN without a pose), over every observation (refiners).
+        RMS reprojection error (px): over the inliers (robust functions; NaN without a pose), over every observation (refiners), the best candidate's (estimate_pose_*: candidate_rms[0]; None without one).
         """
 
     @property
@@ -411,12 +436,14 @@ class PoseResult:
     @property
     def candidates(self, /) -> list[tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]] | None:
         """
-        Robust functions: the minima of the final refinement that the data cannot tell apart, as (R, t), the returned pose first; empty without refinement or without a pose.
+        Robust functions: the minima of the final refinement that the data cannot tell apart, as (R, t), the returned pose first; empty without refinement or without a pose. estimate_pose_*: every candidate as (R, t), best first (R, t the first); empty when the geometry determines no pose.
         """
 
     @property
     def candidate_rms(self, /) -> list[float] | None:
-        """Robust functions: the RMS (px) over the inliers of each candidate."""
+        """
+        The RMS reprojection error (px) of each candidate: robust functions over the inliers; estimate_pose_* in the estimated view(s), or with refine=True over every view.
+        """
 
     @property
     def ambiguous(self, /) -> bool | None:
@@ -440,7 +467,27 @@ class PoseResult:
     def ts(self, /) -> list[numpy.typing.NDArray[numpy.float64]] | None:
         """adjust_poses_multiview: every view's translation."""
 
+    @overload
     def __getitem__(self, arg: str, /) -> object: ...
+
+    @overload
+    def __getitem__(self, index: int) -> object:
+        """Deprecated: the candidate at index (result.candidates[index])."""
+
+    @overload
+    def __getitem__(self, index: slice) -> object:
+        """Deprecated: the candidates of the slice (result.candidates[i:j])."""
+
+    def __len__(self) -> int:
+        """Deprecated: the number of candidates (len(result.candidates))."""
+
+    def __iter__(self) -> Iterator:
+        """Deprecated: the candidates as (R, t) (iter(result.candidates))."""
+
+    def __bool__(self) -> bool:
+        """
+        True, except the result of estimate_pose_* without a candidate (deprecated: read result.R is not None).
+        """
 
     def __contains__(self, arg: str, /) -> bool: ...
 
@@ -451,19 +498,19 @@ class PoseResult:
 
     def __repr__(self) -> str: ...
 
-def estimate_pose_line_point(points1: object | None, points2: object | None, points3: object | None, lines1: object | None, lines2: object | None, lines3: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, refine: bool) -> list: ...
+def estimate_pose_line_point(points1: object | None, points2: object | None, points3: object | None, lines1: object | None, lines2: object | None, lines3: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, refine: bool) -> PoseResult: ...
 
 def estimate_pose_line_point_ransac(points1: object | None, points2: object | None, points3: object | None, lines1: object | None, lines2: object | None, lines3: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, options: RansacOptions | None, options_name: str, covariance: bool) -> PoseResult: ...
 
 def refine_pose_line_point(points1: object | None, points2: object | None, points3: object | None, lines1: object | None, lines2: object | None, lines3: object | None, K: object | None, R12: object | None, t12: object | None, R: object | None, t: object | None, dist: object | None, options: RefineOptions | None, options_name: str) -> PoseResult: ...
 
-def estimate_pose_line_point_stereo(points1: object | None, points2: object | None, points3: object | None, points4: object | None, lines1: object | None, lines2: object | None, lines3: object | None, lines4: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, refine: bool) -> list: ...
+def estimate_pose_line_point_stereo(points1: object | None, points2: object | None, points3: object | None, points4: object | None, lines1: object | None, lines2: object | None, lines3: object | None, lines4: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, refine: bool) -> PoseResult: ...
 
 def estimate_pose_line_point_stereo_ransac(points1: object | None, points2: object | None, points3: object | None, points4: object | None, lines1: object | None, lines2: object | None, lines3: object | None, lines4: object | None, K: object | None, R12: object | None, t12: object | None, dist: object | None, options: RansacOptions | None, options_name: str, covariance: bool) -> PoseResult: ...
 
 def refine_pose_line_point_stereo(points1: object | None, points2: object | None, points3: object | None, points4: object | None, lines1: object | None, lines2: object | None, lines3: object | None, lines4: object | None, K: object | None, R12: object | None, t12: object | None, R: object | None, t: object | None, dist: object | None, options: RefineOptions | None, options_name: str) -> PoseResult: ...
 
-def estimate_pose_multiview(points: object | None, lines: object | None, K: object | None, Rs: object | None, ts: object | None, dist: object | None, refine: bool) -> list: ...
+def estimate_pose_multiview(points: object | None, lines: object | None, K: object | None, Rs: object | None, ts: object | None, dist: object | None, refine: bool) -> PoseResult: ...
 
 def estimate_pose_multiview_ransac(points: object | None, lines: object | None, K: object | None, Rs: object | None, ts: object | None, dist: object | None, options: RansacOptions | None, options_name: str, covariance: bool) -> PoseResult: ...
 

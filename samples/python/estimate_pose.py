@@ -52,9 +52,9 @@ def main():
           f"(direction {direction:.4f} deg)")
     # The linear estimate on every triplet, without RANSAC or refinement: what the C++ demo
     # tripose_demo_vgg prints for the same views.
-    candidates = tripose.estimate_pose_line_point(*triplet.points, *triplet.lines, triplet.K, triplet.R12, triplet.t12)
-    if candidates:
-        print(f"Linear estimate on all triplets: rotation error {rotation_error_deg(candidates[0][0], triplet.R):.4f} deg")
+    linear = tripose.estimate_pose_line_point(*triplet.points, *triplet.lines, triplet.K, triplet.R12, triplet.t12)
+    if linear.R is not None:
+        print(f"Linear estimate on all triplets: rotation error {rotation_error_deg(linear.R, triplet.R):.4f} deg")
 
 
 if __name__ == "__main__":

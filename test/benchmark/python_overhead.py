@@ -90,7 +90,7 @@ def compare_with_cpp(tool, problem, method, python_call, runs, rounds):
         seconds, R, t = cpp_median(tool, problem, method, runs)
         cpp.append(seconds)
         result = python_call()
-        R_py, t_py = (result[0] if isinstance(result, list) else (result["R"], result["t"]))
+        R_py, t_py = result.R, result.t
         difference = max(difference, float(np.abs(R - R_py).max()), float(np.abs(t - t_py).max()))
         py.append(interleaved({"py": python_call}, runs)["py"])
     if not difference <= MAX_POSE_DIFFERENCE:
@@ -130,8 +130,8 @@ def main():
         "4P+4L linear, tripose, Fortran order": lambda: tripose.estimate_pose_line_point(*small_f),
     }
     def linear_then_refine():
-        R, t = tripose.estimate_pose_line_point(*small)[0]
-        return tripose.refine_pose_line_point(*small, R, t)
+        linear = tripose.estimate_pose_line_point(*small)
+        return tripose.refine_pose_line_point(*small, linear.R, linear.t)
 
     variants["4P+4L linear, then refine the best, tripose"] = linear_then_refine
     refine_variants = {
@@ -148,13 +148,13 @@ def main():
     }
     # Same results both ways, and a correct pose, or the comparison means nothing.
     a, c = ext.estimate_pose_line_point(*small, None, False), tripose.estimate_pose_line_point(*small)
-    if not a or len(a) != len(c):
-        sys.exit(f"4P+4L: {len(a)} candidates from the extension, {len(c)} from the wrapper")
-    for x, y in zip(a, c):
+    if not a.candidates or len(a.candidates) != len(c.candidates):
+        sys.exit(f"4P+4L: {len(a.candidates)} candidates from the extension, {len(c.candidates)} from the wrapper")
+    for x, y in zip(a.candidates, c.candidates):
         if not (np.array_equal(x[0], y[0]) and np.array_equal(x[1], y[1])):
             sys.exit("4P+4L: the extension and the wrapper return different poses")
     ransac = tripose.estimate_pose_line_point_ransac(*big)
-    for name, R, R_true in (("4P+4L linear", c[0][0], s.R), ("100P+40L RANSAC", ransac["R"], b.R)):
+    for name, R, R_true in (("4P+4L linear", c.R, s.R), ("100P+40L RANSAC", ransac["R"], b.R)):
         if R is None or not rotation_error_deg(R, R_true) < MAX_ROTATION_ERROR_DEG:
             error = "no pose" if R is None else f"{rotation_error_deg(R, R_true):.2f} deg off the truth"
             sys.exit(f"{name}: {error}; not timing a solver that fails")
