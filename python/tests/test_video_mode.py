@@ -48,6 +48,7 @@ def test_every_frame_registered_within_the_measured_bound(walk):
     assert all(isinstance(f, VideoFrame) for f in results)
     assert [f.result.status for f in results] == [GIVEN, GIVEN] + [REGISTERED] * (FRAMES - 2)
     assert all(f.points >= VideoOptions().min_points for f in results)
+    assert results[0].detected and results[1].detected == bool(results[0].result.keyframe)
     assert all(set(f.milliseconds) == {"flow", "detection", "registration", "total"} for f in results)
     Rs, ts = zip(*truth)
     R, t = trajectory[-1]

@@ -110,11 +110,12 @@ class VideoFrame:
     """One frame's outcome: result, the tracker's FrameResult (status, R, t, keyframe, ...);
     milliseconds per stage (flow: following the points and segments from the frame before;
     detection: new points and segments; registration: the tracker) and their total; points and
-    segments: how many the frame gave the tracker."""
+    segments: how many the frame gave the tracker; detected: whether new ones were looked for in it."""
     result: FrameResult
     milliseconds: Dict[str, float]
     points: int
     segments: int
+    detected: bool
 
 
 def _cv2():
@@ -256,6 +257,7 @@ class VideoTracker:
         times = dict.fromkeys(STAGES, 0.0)
         grey = self._grey(image)
         clock = time.perf_counter()
+        detected = False
         if grey is None:
             self._previous, self._renew = None, True
             self._points, self._point_ids = self._points[:0], self._point_ids[:0]
@@ -265,7 +267,8 @@ class VideoTracker:
                 self._follow(grey)
             now = time.perf_counter()
             times["flow"], clock = 1e3 * (now - clock), now
-            if self._renew or len(self._points) < self._options.min_points:
+            detected = self._renew or len(self._points) < self._options.min_points
+            if detected:
                 self._detect(grey)
             now = time.perf_counter()
             times["detection"], clock = 1e3 * (now - clock), now
@@ -276,7 +279,7 @@ class VideoTracker:
         times["total"] = sum(times[s] for s in STAGES)
         # The tracker tells a keyframe only once it has the frame: the next frame is detected afresh.
         self._renew = bool(result.keyframe) or grey is None
-        return VideoFrame(result, times, len(self._points), len(self._segments))
+        return VideoFrame(result, times, len(self._points), len(self._segments), detected)
 
 
 def _near_followed(candidates: np.ndarray, followed: np.ndarray, distance: float) -> np.ndarray:

@@ -56,6 +56,7 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
     """Per frame wall and processor times (ms), keyframes and the trajectory of one mode."""
     given = truth[:2]
     times, cpu, keyframes = [], [], 0
+    stages = []
     if mode == "video":
         options = VideoOptions(segments=segments)
         if parallax is not None:
@@ -67,6 +68,7 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             frame = tracker.track(image, *(given[k] if k < 2 else (None, None)))
             cpu.append(1e3 * (time.process_time() - start))
             times.append(frame.milliseconds["total"])
+            stages.append(dict(frame.milliseconds, detected=frame.detected))
             keyframes += bool(frame.result.keyframe)
     else:
         tracker = tripose.Tracker(Ks[0])
@@ -78,6 +80,13 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             times.append(1e3 * (time.perf_counter() - start))
             cpu.append(1e3 * (time.process_time() - start_cpu))
             keyframes += bool(result.keyframe)
+    if stages:
+        detections = sum(m["detected"] for m in stages)
+        print(f"video stages, mean ms per frame: flow {np.mean([m['flow'] for m in stages]):.1f}, detection "
+              f"{np.mean([m['detection'] for m in stages]):.1f} (in {detections} frames, median "
+              f"{np.median([m['detection'] for m in stages if m['detected']]):.1f}), registration "
+              f"{np.mean([m['registration'] for m in stages]):.1f} (median {np.median([m['registration'] for m in stages]):.1f})",
+              file=sys.stderr)
     return times, cpu, keyframes, tracker.trajectory()
 
 
