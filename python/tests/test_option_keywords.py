@@ -23,7 +23,7 @@ def values(options):
 
 def test_every_class_has_fields():
     counts = {cls.__name__: len(fields(cls)) for cls in OPTION_CLASSES}
-    assert counts == {"RansacOptions": 8, "RefineOptions": 4, "MatchOptions": 7, "TrackerOptions": 10}
+    assert counts == {"RansacOptions": 8, "RefineOptions": 4, "MatchOptions": 7, "TrackerOptions": 12}
 
 
 @pytest.mark.parametrize("cls", OPTION_CLASSES, ids=lambda cls: cls.__name__)
