@@ -3,11 +3,13 @@
 method, and a top view of the trajectories with the ground truth.
 
     python test/evaluation/plot_trajectories.py --colmap DIR_OR_JSON ... [--tripose SEQUENCE=TUM ...]
-                                                --output DIR [--prefix against-colmap-]
+                                                [--fps F] --output DIR [--prefix against-colmap-]
 
 --colmap takes colmap_sequences.py's JSON files (or folders of them); each file's median run is drawn, its other
 runs faintly. --tripose takes a TUM trajectory of the tracker (track_real_sequences.py --trajectories), frames
-stamped by index, for the sequence named before the '=' (a name of the JSON files' "sequence"); it is aligned
+stamped by index (or, with --fps, by time: frame = stamp x fps; frames past the sequence's last one, as in a
+longer run of the same images, are left out), for the sequence named before the '=' (a name of the JSON files'
+"sequence"); it is aligned
 as COLMAP's is (frame 0 at the identity, the ground truth's 0-1 baseline), which leaves the tracker's own
 trajectory unchanged when frames 0-1 were given from the ground truth.
 """
@@ -50,12 +52,13 @@ def run_curves(run):
     return rot, pos, centres
 
 
-def tripose_curves(path, seq):
-    """The curves of a tracker's TUM trajectory against the ground truth `seq`."""
+def tripose_curves(path, seq, fps=1.0):
+    """The curves of a tracker's TUM trajectory against the ground truth `seq`, frame round(stamp x fps)."""
     stamps, Rs, ts = rs.read_tum(path)
-    poses = {int(round(s)): (R, t) for s, R, t in zip(stamps, Rs, ts)}
-    if any(k < 0 or k >= len(seq) for k in poses):
-        raise ValueError(f"tripose: {path}: frame stamps outside 0..{len(seq) - 1}")
+    poses = {int(round(s * fps)): (R, t) for s, R, t in zip(stamps, Rs, ts)}
+    if any(k < 0 for k in poses):
+        raise ValueError(f"tripose: {path}: negative frame stamps")
+    poses = {k: pose for k, pose in poses.items() if k < len(seq)}
     aligned = align_to_first(poses, seq)
     errors = frame_errors(aligned, seq)
     rot = np.array([np.nan if e is None else e[0] for e in errors])
@@ -101,7 +104,15 @@ def method_name(document):
     return f"COLMAP {base}" + (f" ({', '.join(changes)})" if changes else "")
 
 
-def plot_sequence(label, documents, tripose, output, prefix):
+def summary_line(name, rot, pos):
+    """A curve's last frame's and largest errors, as the study's table gives them (its name counts its frames)."""
+    found = np.isfinite(rot)
+    last = f"{rot[-1]:.3f} / {pos[-1]:.3f}" if found[-1] else "lost"
+    largest = f"{np.nanmax(rot):.3f} / {np.nanmax(pos):.3f}" if found.any() else "-"
+    return f"  {name}: last {last}, largest {largest} (deg / % path)"
+
+
+def plot_sequence(label, documents, tripose, output, prefix, fps=1.0):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -129,9 +140,11 @@ def plot_sequence(label, documents, tripose, output, prefix):
             else:
                 curves.append((None, colour, None, rot, pos, centres, 0.25))
     for (name, path), colour in zip(tripose, TRIPOSE_COLOURS):
-        rot, pos, centres = tripose_curves(path, seq)
+        rot, pos, centres = tripose_curves(path, seq, fps)
         curves.append((f"{name}: {int(np.sum(np.isfinite(rot)))}/{n}", colour, "o", rot, pos, centres, 1.0))
     for name, colour, marker, rot, pos, centres, alpha in curves:
+        if name:
+            print(summary_line(name, rot, pos))
         size = 4 if n > 20 else 5
         ax_r.plot(frames, rot, "-", color=colour, marker=marker, ms=size, alpha=alpha, label=name)
         ax_p.plot(frames, pos, "-", color=colour, marker=marker, ms=size, alpha=alpha, label=name)
@@ -173,9 +186,13 @@ def main():
                         help="the tracker's trajectory of a sequence; repeat a sequence for several programs")
     parser.add_argument("--label", nargs="*", default=None,
                         help="a legend label per --tripose file (default: from track_real_sequences.py's file names)")
+    parser.add_argument("--fps", type=float, default=1.0,
+                        help="--tripose stamps are times at this frame rate (default 1: frame indices)")
     parser.add_argument("--output", type=Path, required=True)
     parser.add_argument("--prefix", default="", help="prefix of the PNG file names")
     args = parser.parse_args()
+    if not args.fps > 0:
+        parser.error(f"--fps must be positive, got {args.fps}")
     files = []
     for path in args.colmap:
         files += sorted(path.glob("*.json")) if path.is_dir() else [path]
@@ -197,7 +214,7 @@ def main():
         tripose.setdefault(sequence, []).append((label, Path(path)))
     for label, documents in by_sequence.items():
         documents.sort(key=lambda d: d["method"], reverse=True)
-        print(plot_sequence(label, documents, tripose.get(label, []), args.output, args.prefix))
+        print(plot_sequence(label, documents, tripose.get(label, []), args.output, args.prefix, args.fps))
 
 
 if __name__ == "__main__":
