@@ -387,7 +387,7 @@ void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestR
     ++keyframesSinceAdjustment_;
     if (!closed && options_.globalAdjustmentInterval > 0 &&
         keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
-        adjustEveryFrame();
+        adjustFramesAfter(-1);
 }
 
 Registration Tracker::recognisePlace(int frame, const FrameFeatures& features,
@@ -435,16 +435,16 @@ void Tracker::closeLoop(int frame, int keyframe, const CameraPose& loopPose)
         f.pose.t = f.pose.t - f.pose.R * Ra.transpose() * ta;
         f.pose.R = f.pose.R * Ra.transpose();
     }
-    adjustEveryFrame();
+    adjustFramesAfter(keyframe);
 }
 
-void Tracker::adjustEveryFrame()
+void Tracker::adjustFramesAfter(int first)
 {
     keyframesSinceAdjustment_ = 0;
     std::vector<int> free, fixed;
     for (int k = 0; k < numFrames(); ++k)
     {
-        if (store_.frames[k].status == FrameStatus::Given)
+        if (store_.frames[k].status == FrameStatus::Given || (k <= first && store_.frames[k].hasPose()))
             fixed.push_back(k);
         else if (store_.frames[k].status == FrameStatus::Registered)
             free.push_back(k);

@@ -77,10 +77,12 @@ private:
     Registration recognisePlace(int frame, const FrameFeatures& features, const std::function<bool(int)>& eligible,
                                 int minInliers, int& keyframe);
     /** Moves the frames after @p keyframe towards the frame's pose @p loopPose through the place it
-    recognised, by a share of the correction growing along them, then adjusts every frame. */
+    recognised, by a share of the correction growing along them, then adjusts them (the loop's
+    frames), the frames up to the keyframe held. */
     void closeLoop(int frame, int keyframe, const CameraPose& loopPose);
-    //! Every registered frame and the structure adjusted together, the given frames held.
-    void adjustEveryFrame();
+    //! The registered frames after frame @p first and the structure adjusted together, the given
+    //! frames and the frames up to @p first held (-1: every registered frame).
+    void adjustFramesAfter(int first);
     void associateByMatching(int frame, const FrameFeatures& features);
     void link(FeatureKind kind, int from, int to, const Matches& matches);
 
