@@ -495,11 +495,7 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
             result.inliers = 0;
         }
     }
-    result.status = f.status;
-    result.pose = f.pose;
-    result.keyframe = f.keyframe;
-    result.pointTracks = f.pointTrack;
-    result.lineTracks = f.lineTrack;
+    describeFrame(f, result);
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
 }

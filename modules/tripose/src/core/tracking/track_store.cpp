@@ -11,6 +11,15 @@
 
 namespace tripose {
 
+void describeFrame(const StoredFrame& f, FrameResult& result)
+{
+    result.status = f.status;
+    result.pose = f.pose;
+    result.keyframe = f.keyframe;
+    result.pointTracks = f.pointTrack;
+    result.lineTracks = f.lineTrack;
+}
+
 int TrackStore::newTrack(FeatureKind kind)
 {
     tracks(kind).emplace_back();

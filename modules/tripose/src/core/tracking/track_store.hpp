@@ -30,6 +30,9 @@ struct StoredFrame
     bool hasPose() const { return status != FrameStatus::Lost; }
 };
 
+//! @p result's status, pose, keyframe flag and tracks from frame @p f as it stands.
+void describeFrame(const StoredFrame& f, FrameResult& result);
+
 enum class FeatureKind
 {
     Point = 0,

@@ -249,12 +249,7 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
         registerFrame(frame, features, result, oldestRecent);
     if (features && store_.frames[frame].keyframe)
         keepKeyframe(frame, *features, oldestRecent, result);
-    const StoredFrame& f = store_.frames[frame];
-    result.status = f.status;
-    result.pose = f.pose;
-    result.keyframe = f.keyframe;
-    result.pointTracks = f.pointTrack;
-    result.lineTracks = f.lineTrack;
+    describeFrame(store_.frames[frame], result);
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
 }
