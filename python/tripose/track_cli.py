@@ -2,7 +2,7 @@
 
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
-                  [--threshold PX] [--local-adjustment] [--loop-closure] [--max-image-size PX]
+                  [--threshold PX] [--local-adjustment [0|1]] [--loop-closure [0|1]] [--max-image-size PX]
                   [--mode full | video]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
@@ -109,6 +109,13 @@ def _whole_number(minimum):
     return parse
 
 
+def _switch(text):
+    """A switch's value, 0 or 1, as the C++ program takes it; the switch alone means 1."""
+    if text not in ("0", "1"):
+        raise argparse.ArgumentTypeError(f"expected 0 or 1, got {text!r}")
+    return text == "1"
+
+
 def _positive_number(text):
     try:
         value = float(text)
@@ -137,9 +144,9 @@ def _parser():
     p.add_argument("--threshold", type=_positive_number,
                    help="RANSAC inlier threshold in px of full-size detection (default 2; grows with the "
                         "reduction of --max-image-size)")
-    p.add_argument("--local-adjustment", action="store_true",
+    p.add_argument("--local-adjustment", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
                    help="refine the window's frames and structure after each registration")
-    p.add_argument("--loop-closure", action="store_true",
+    p.add_argument("--loop-closure", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
                    help="after each keyframe, look for a place seen before among the older keyframes and close "
                         "the loop through it (a place check per keyframe)")
     p.add_argument("--mode", choices=("full", "video"), default="full",
