@@ -23,6 +23,12 @@ namespace nb = nanobind;
 
 namespace {
 
+//! The Python name of a loss, as RefineOptions.loss takes and gives it.
+const char* lossName(tripose::Loss loss)
+{
+    return loss == tripose::Loss::Huber ? "huber" : loss == tripose::Loss::Cauchy ? "cauchy" : "squared";
+}
+
 /** The fields of a bound option class (its writable properties, in the order bound), their types
 and defaults, read once from the class and a default-constructed struct.
 */
@@ -181,8 +187,7 @@ void bindOptions(nb::module_& m)
         .def_rw("max_iterations", &tripose::RefineOptions::maxIterations, "Levenberg-Marquardt steps, accepted or rejected (> 0).")
         .def_prop_rw("loss",
                      [](const tripose::RefineOptions& o) {
-                         return std::string(o.loss == tripose::Loss::Huber ? "huber"
-                                            : o.loss == tripose::Loss::Cauchy ? "cauchy" : "squared");
+                         return std::string(lossName(o.loss));
                      },
                      [](tripose::RefineOptions& o, const std::string& loss) {
                          if (loss == "squared")
@@ -201,7 +206,7 @@ void bindOptions(nb::module_& m)
         .def("__repr__", [](const tripose::RefineOptions& o) {
             return tripose::formatString("RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, tolerance=%g)",
                                          o.maxIterations,
-                                         o.loss == tripose::Loss::Huber ? "huber" : o.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
+                                         lossName(o.loss),
                                          o.lossScale, o.tolerance);
         });
     defKeywordConstructor(refine);
@@ -234,7 +239,7 @@ void bindOptions(nb::module_& m)
                                          o.threshold, o.confidence, o.maxIterations,
                                          o.localOptimization ? "True" : "False", o.refine ? "True" : "False",
                                          (unsigned long long)o.seed, o.minInliers, r.maxIterations,
-                                         r.loss == tripose::Loss::Huber ? "huber" : r.loss == tripose::Loss::Cauchy ? "cauchy" : "squared",
+                                         lossName(r.loss),
                                          r.lossScale, r.tolerance);
         });
     defKeywordConstructor(ransac);
