@@ -29,6 +29,13 @@ const char* lossName(tripose::Loss loss)
     return loss == tripose::Loss::Huber ? "huber" : loss == tripose::Loss::Cauchy ? "cauchy" : "squared";
 }
 
+//! RefineOptions' repr, also the refine_options part of RansacOptions'.
+std::string refineRepr(const tripose::RefineOptions& o)
+{
+    return tripose::formatString("RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, tolerance=%g)",
+                                 o.maxIterations, lossName(o.loss), o.lossScale, o.tolerance);
+}
+
 /** The fields of a bound option class (its writable properties, in the order bound), their types
 and defaults, read once from the class and a default-constructed struct.
 */
@@ -203,12 +210,7 @@ void bindOptions(nb::module_& m)
         .def_rw("loss_scale", &tripose::RefineOptions::lossScale, "Scale of the robust loss in pixels (> 0).")
         .def_rw("tolerance", &tripose::RefineOptions::tolerance,
                 "Stop when an accepted step lowers the cost by less than this fraction (>= 0).")
-        .def("__repr__", [](const tripose::RefineOptions& o) {
-            return tripose::formatString("RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, tolerance=%g)",
-                                         o.maxIterations,
-                                         lossName(o.loss),
-                                         o.lossScale, o.tolerance);
-        });
+        .def("__repr__", &refineRepr);
     defKeywordConstructor(refine);
 
     auto ransac = optionsClass<tripose::RansacOptions>(
@@ -231,16 +233,12 @@ void bindOptions(nb::module_& m)
                 "Fewest inliers of a returned pose (>= 0); an estimate with fewer is no pose. Chance matches agree "
                 "with a pose in numbers up to about a dozen: lower it only where every feature is known to be right.")
         .def("__repr__", [](const tripose::RansacOptions& o) {
-            const tripose::RefineOptions& r = o.refineOptions;
             return tripose::formatString("RansacOptions(threshold=%g, confidence=%g, max_iterations=%d, "
                                          "local_optimization=%s, refine=%s, seed=%llu, min_inliers=%d, "
-                                         "refine_options=RefineOptions(max_iterations=%d, loss='%s', loss_scale=%g, "
-                                         "tolerance=%g))",
+                                         "refine_options=%s)",
                                          o.threshold, o.confidence, o.maxIterations,
                                          o.localOptimization ? "True" : "False", o.refine ? "True" : "False",
-                                         (unsigned long long)o.seed, o.minInliers, r.maxIterations,
-                                         lossName(r.loss),
-                                         r.lossScale, r.tolerance);
+                                         (unsigned long long)o.seed, o.minInliers, refineRepr(o.refineOptions).c_str());
         });
     defKeywordConstructor(ransac);
 

@@ -283,6 +283,9 @@ def test_bad_input_raises_naming_the_argument():
 # --- the program on rendered images --------------------------------------------------------------------
 
 REPO = Path(__file__).resolve().parents[2]
+sys.path.append(str(REPO / "test" / "python"))  # real_sequences.py: the TUM reader
+import real_sequences as rs  # noqa: E402
+
 TEXTURES = [REPO / "test" / "data" / "sequences" / "fountain-P11" / "images" / f"{k:04d}.jpg" for k in (0, 5)]
 RENDER_K = np.array([[400.0, 0, 240], [0, 400, 180], [0, 0, 1]])
 RENDER_SIZE = (480, 360)
@@ -357,20 +360,6 @@ def run_program(*arguments):
                           text=True, timeout=120)
 
 
-def read_tum(path):
-    """(R, t) per line of a TUM trajectory, in order."""
-    poses = []
-    for line in path.read_text().splitlines():
-        if line.strip() and not line.startswith("#"):
-            v = [float(x) for x in line.split()]
-            x, y, z, w = v[4:8]
-            R_world = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                                [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                                [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-            poses.append((R_world.T, -R_world.T @ np.array(v[1:4])))
-    return poses
-
-
 def test_program_tracks_a_rendered_rig_from_its_images(tmp_path, rendered_rig):
     folder, truth = rendered_rig
     out = tmp_path / "trajectory.txt"
@@ -378,7 +367,8 @@ def test_program_tracks_a_rendered_rig_from_its_images(tmp_path, rendered_rig):
                        "--output", out)
     assert proc.returncode == 0, proc.stderr
     assert "6 frames: 1 given, 5 registered, 0 lost" in proc.stdout
-    tracked = read_tum(out)
+    _, tracked_Rs, tracked_ts = rs.read_tum(out)
+    tracked = list(zip(tracked_Rs, tracked_ts))
     assert len(tracked) == 6
     centres = np.array([-R.T @ t for R, t in truth])
     path_length = np.sum(np.linalg.norm(np.diff(centres, axis=0), axis=1))

@@ -2,6 +2,7 @@
 every registered frame's pose comes with a symmetric positive definite (6, 6) covariance and a
 noise variance; the first registered frame, whose window holds the two given (exact) poses, lies
 within a few standard deviations of the ground truth; without the option there is none."""
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -14,19 +15,14 @@ import tripose.images  # noqa: E402  (needs cv2)
 
 REPO = Path(__file__).resolve().parents[2]
 SEQUENCE = REPO / "test" / "data" / "sequences" / "fountain-P11"
+sys.path.append(str(REPO / "test" / "python"))  # real_sequences.py: the TUM reader
+import real_sequences as rs  # noqa: E402
 
 
 def ground_truth():
-    poses = []
-    for line in (SEQUENCE / "groundtruth.txt").read_text().splitlines():
-        if line.strip() and not line.startswith("#"):
-            v = [float(x) for x in line.split()]
-            x, y, z, w = v[4:8]
-            C = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                          [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                          [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-            poses.append((C.T, -C.T @ np.array(v[1:4])))
-    return poses
+    """The bundled sequence's poses (R, t), x_cam = R X + t."""
+    _, Rs, ts = rs.read_tum(SEQUENCE / "groundtruth.txt")
+    return list(zip(Rs, ts))
 
 
 def track(frames, covariance):

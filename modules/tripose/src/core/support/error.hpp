@@ -45,6 +45,27 @@ std::string formatString(const char* format, ...)
 #endif
     ;
 
+/** Runs @p step, whose input the caller built from its own state: an Error about that input (a
+degenerate geometry) is caught and its message put in @p reason, while an ErrorCode::Internal one,
+a bug, propagates. True when @p step returned. */
+template <typename Step>
+bool runCatchingInputErrors(Step&& step, std::string* reason = nullptr)
+{
+    try
+    {
+        step();
+        return true;
+    }
+    catch (const Error& e)
+    {
+        if (e.code() == ErrorCode::Internal)
+            throw;
+        if (reason)
+            *reason = e.what();
+        return false;
+    }
+}
+
 namespace support_detail {
 [[noreturn]] void failAssertion(const char* expression, const char* file, int line);
 } // namespace support_detail

@@ -89,17 +89,7 @@ Registration registerAgainstPlace(TrackStore& store, int frame, const FrameFeatu
         join(store, FeatureKind::Line, keyframe, m.first, frame, m.second);
     TrackerOptions placeOptions = options;
     placeOptions.minInliers = minInliers;
-    try
-    {
-        out = registerAgainstWindow(store, frame, neighbours, placeOptions);
-    }
-    catch (const Error& e)
-    {
-        if (e.code() == ErrorCode::Internal)
-            throw;
-        out = Registration();
-        out.reason = e.what();
-    }
+    runCatchingInputErrors([&] { out = registerAgainstWindow(store, frame, neighbours, placeOptions); }, &out.reason);
     // Matches to a place are checked by no earlier frame: a pose most of them contradict is a
     // coincidence of repeated texture, not the place.
     if (out.registered && 2 * out.inliers < out.features)

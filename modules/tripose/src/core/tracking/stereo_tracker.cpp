@@ -429,18 +429,8 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
         for (int k : keyframes)
         {
             Attempt attempt;
-            try
-            {
-                attempt = registerAgainst(k, frame);
-            }
-            catch (const Error& e)
-            {
-                // Degenerate input of one registration loses the frame, not the tracker.
-                if (e.code() == ErrorCode::Internal)
-                    throw;
-                attempt = Attempt();
-                attempt.reason = e.what();
-            }
+            // Degenerate input of one registration loses the frame, not the tracker.
+            runCatchingInputErrors([&] { attempt = registerAgainst(k, frame); }, &attempt.reason);
             if (attempt.registered)
             {
                 chosen = attempt;

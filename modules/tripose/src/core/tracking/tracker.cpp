@@ -272,24 +272,12 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
     std::sort(window.begin(), window.end());
     result.knownViews = (int)window.size();
     Registration r;
+    // The window's own geometry can be degenerate (keyframes at one centre): the frame is lost,
+    // not the tracker.
     if (window.size() < 2)
         r.reason = "fewer than two keyframes to register against";
     else
-    {
-        try
-        {
-            r = registerAgainstWindow(store_, frame, window, options_);
-        }
-        catch (const Error& e)
-        {
-            // The window's own geometry can be degenerate (keyframes at one centre): the frame is
-            // lost, not the tracker.
-            if (e.code() == ErrorCode::Internal)
-                throw;
-            r = Registration();
-            r.reason = e.what();
-        }
-    }
+        runCatchingInputErrors([&] { r = registerAgainstWindow(store_, frame, window, options_); }, &r.reason);
     if (!r.registered && features && !keyframeFeatures_.empty())
     {
         // Lost against the window: any keyframe whose place the frame sees can take it back.
@@ -338,15 +326,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
             for (int j = 0; j < frame; ++j)
                 if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
                     fixed.push_back(j);
-            try
-            {
-                adjustFrames(store_, free, fixed, options_);
-            }
-            catch (const Error& e)
-            {
-                if (e.code() == ErrorCode::Internal)
-                    throw;
-            }
+            runCatchingInputErrors([&] { adjustFrames(store_, free, fixed, options_); });
         }
     }
 }
@@ -446,17 +426,9 @@ void Tracker::adjustFramesAfter(int first)
     }
     if (fixed.size() < 2 || free.empty())
         return;
-    // Two rounds of splitting wrong links off leave the few that the first adjustment hid.
+    // Rounds after the first split off the wrong links that the first adjustment hid.
     const int rounds = 3;
-    try
-    {
-        adjustAndSplitOutliers(store_, free, fixed, options_, rounds);
-    }
-    catch (const Error& e)
-    {
-        if (e.code() == ErrorCode::Internal)
-            throw;
-    }
+    runCatchingInputErrors([&] { adjustAndSplitOutliers(store_, free, fixed, options_, rounds); });
 }
 
 } // namespace tripose
