@@ -227,6 +227,38 @@ def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small
     assert_same_poses(trajectory, Rs, ts, range(count))
 
 
+def test_program_contrast_threshold_detects_as_the_api(tmp_path, fountain, small_fountain):
+    # --contrast-threshold reaches SIFT: the program's feature counts and poses are the API's with
+    # FeatureOptions(contrast_threshold=...), and the lower threshold finds more in every tracked frame
+    # (the given frames' features are not counted).
+    folder, calib = small_fountain
+    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
+    K = fs.getNode("K").mat()
+    fs.release()
+    paths = sorted(folder.iterdir())[:5]
+    listing = tmp_path / "frames.txt"
+    listing.write_text("".join(f"{p}\n" for p in paths))
+    counts = {}
+    for threshold in (None, 0.01):
+        output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
+        extra = [] if threshold is None else ["--contrast-threshold", threshold]
+        proc = run_cli("--images", listing, "--calib", calib, "--output", output, "--yaml", result_yaml, *extra,
+                       cwd=tmp_path)
+        assert proc.returncode == 0, proc.stderr
+        feature_options = images.FeatureOptions() if threshold is None else \
+            images.FeatureOptions(contrast_threshold=threshold)
+        features = [images.extract_features(images.read_image(p), K, options=feature_options) for p in paths]
+        results, trajectory = track(K, features, given_poses(fountain), cli_options(1.0))
+        fs = cv2.FileStorage(str(result_yaml), cv2.FILE_STORAGE_READ)
+        node = fs.getNode("frames")
+        counts[threshold] = [int(node.at(i).getNode("features").real()) for i in range(node.size())]
+        fs.release()
+        assert counts[threshold] == [r.features for r in results]
+        _, Rs, ts = rs.read_tum(output)
+        assert_same_poses(trajectory, Rs, ts, range(len(paths)))
+    assert all(low > default for low, default in zip(counts[0.01][2:], counts[None][2:])), counts
+
+
 def test_program_closes_loops_and_writes_the_recognised_keyframes(tmp_path, fountain, small_fountain):
     # --loop-closure on the reduced images: the program's poses and recognised keyframes are the API's
     # with loop_closure; without it no keyframe older than the window is looked for.
@@ -602,6 +634,9 @@ def test_program_bad_input_exits_1_naming_it(tmp_path, small_fountain):
 
     proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--window", "1", cwd=tmp_path)
     _fails(tmp_path, proc, "--window")
+    proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--contrast-threshold", "0",
+                   cwd=tmp_path)
+    _fails(tmp_path, proc, "--contrast-threshold")
     proc = run_cli("--images", folder, "--right", folder, "--calib", calib, "--output", output, "--loop-closure",
                    cwd=tmp_path)
     _fails(tmp_path, proc, "--loop-closure", "--right")

@@ -92,7 +92,8 @@ def test_program_video_mode_gives_the_api_poses(walk, tmp_path, capsys):
     for (R, t), R2, t2 in zip(trajectory, Rs, ts):
         np.testing.assert_allclose(R2, R, atol=1e-9)
         np.testing.assert_allclose(t2, t, atol=1e-9)
-    for extra, named in ((["--max-image-size", "800"], "--max-image-size"), (["--right", str(folder / "left.txt")], "--right")):
+    for extra, named in ((["--max-image-size", "800"], "--max-image-size"), (["--right", str(folder / "left.txt")], "--right"),
+                         (["--contrast-threshold", "0.01"], "--contrast-threshold")):
         assert track_cli.main(arguments + ["--mode", "video"] + extra) == 1
         assert named in capsys.readouterr().err
 

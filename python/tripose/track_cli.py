@@ -3,7 +3,7 @@
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
                   [--threshold PX] [--local-adjustment [0|1]] [--loop-closure [0|1]] [--max-image-size PX]
-                  [--mode full | video]
+                  [--contrast-threshold C] [--mode full | video]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
@@ -17,7 +17,8 @@ matching). On the rendered courtyard (640x480) it takes a fraction of the full m
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
 by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG) and the local adjustment is always
 on; --window, --min-inliers, --threshold and --loop-closure apply as in the full mode,
---max-image-size and --right do not (the points are followed in the full-size frames of one camera).
+--max-image-size, --contrast-threshold and --right do not (the points are followed in the full-size
+frames of one camera).
 
 calib.yml (OpenCV FileStorage YAML, JSON or XML) holds K (3x3), optionally dist (OpenCV's
 distortion coefficients), and the pose of frame 1 relative to frame 0 as R12 (3x3 rotation or
@@ -116,14 +117,16 @@ def _switch(text):
     return text == "1"
 
 
-def _positive_number(text):
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of pixels > 0, got {text!r}") from None
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"expected a finite number of pixels > 0, got {text!r}")
-    return value
+def _positive_number(what):
+    def parse(text):
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected {what} > 0, got {text!r}") from None
+        if not (math.isfinite(value) and value > 0):
+            raise argparse.ArgumentTypeError(f"expected a finite {what} > 0, got {text!r}")
+        return value
+    return parse
 
 
 def _parser():
@@ -141,7 +144,7 @@ def _parser():
     p.add_argument("--window", type=_whole_number(2), help="keyframes a frame is registered against (default 5)")
     p.add_argument("--min-inliers", type=_whole_number(1),
                    help="features that must agree with a frame's pose for it to be registered (default 15)")
-    p.add_argument("--threshold", type=_positive_number,
+    p.add_argument("--threshold", type=_positive_number("number of pixels"),
                    help="RANSAC inlier threshold in px of full-size detection (default 2; grows with the "
                         "reduction of --max-image-size)")
     p.add_argument("--local-adjustment", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
@@ -154,7 +157,21 @@ def _parser():
                         "by optical flow, detected afresh after keyframes (real time, monocular)")
     p.add_argument("--max-image-size", type=_whole_number(0),
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
+    p.add_argument("--contrast-threshold", type=_positive_number("number"),
+                   help="SIFT's contrast threshold (default 0.04; lower finds more points in low-contrast images)")
     return p
+
+
+def _feature_options(args):
+    """The detection options that --max-image-size and --contrast-threshold set."""
+    from . import images
+
+    options = images.FeatureOptions()
+    if args.max_image_size is not None:
+        options.max_image_size = args.max_image_size
+    if args.contrast_threshold is not None:
+        options.contrast_threshold = args.contrast_threshold
+    return options
 
 
 # --- outputs -----------------------------------------------------------------------------------------
@@ -524,9 +541,7 @@ def run_stereo(args) -> int:
             sources.append(images.open_frames(source))
         except ValueError as error:
             raise InputError(f"{option} {error}") from None
-    feature_options = images.FeatureOptions()
-    if args.max_image_size is not None:
-        feature_options.max_image_size = args.max_image_size
+    feature_options = _feature_options(args)
 
     tracker, pixel_scale, options = None, 1.0, None
     frames = []
@@ -641,6 +656,8 @@ def run(args) -> int:
     if args.mode == "video" and args.max_image_size is not None:
         raise InputError("--max-image-size: not used by --mode video (the points are followed in the full-size "
                          "frames)")
+    if args.mode == "video" and args.contrast_threshold is not None:
+        raise InputError("--contrast-threshold: not used by --mode video (its points are corners, not SIFT's)")
     K, dist, relative = read_calibration(args.calib)
     if args.poses is not None:
         given = read_initial_poses(args.poses)
@@ -651,9 +668,7 @@ def run(args) -> int:
     else:
         raise InputError(f"--calib {args.calib}: no key R12 (with t12), the pose of frame 1 relative to frame 0; "
                          "give them there or the first frames' poses with --poses")
-    feature_options = images.FeatureOptions()
-    if args.max_image_size is not None:
-        feature_options.max_image_size = args.max_image_size
+    feature_options = _feature_options(args)
     try:
         tripose.Tracker(K, dist, tracker_options(args))  # K and dist as the tracker checks them
     except (ValueError, TypeError) as error:
