@@ -26,12 +26,47 @@ using AnyArray = nb::ndarray<nb::ro, nb::device::cpu>;
     throw nb::value_error(message.c_str());
 }
 
+/** The fields at the start of every numpy array object (numpy's PyArrayObject_fields, the same in
+numpy 1 and 2): read directly, an exact ndarray of a builtin dtype gives its data pointer, shape and
+strides without exporting a buffer, which numpy does by building and looking up a format string per
+call. */
+struct NumpyArrayHead
+{
+    PyObject_HEAD
+    char* data;
+    int nd;
+    const Py_ssize_t* dimensions;
+    const Py_ssize_t* strides;
+    PyObject* base;
+    PyObject* descr;
+};
+
+//! numpy's ndarray type and its builtin float64 and float32 dtypes, looked up once for the process.
+struct NumpyTypes
+{
+    PyTypeObject* ndarray;
+    PyObject* float64;
+    PyObject* float32;
+};
+
+const NumpyTypes& numpyTypes()
+{
+    // Never released: the interpreter may be finalised before static destructors run.
+    static const NumpyTypes types = [] {
+        const nb::module_ numpy = nb::module_::import_("numpy");
+        return NumpyTypes{ (PyTypeObject*)nb::object(numpy.attr("ndarray")).release().ptr(),
+                           nb::object(numpy.attr("dtype")("float64")).release().ptr(),
+                           nb::object(numpy.attr("dtype")("float32")).release().ptr() };
+    }();
+    return types;
+}
+
 /** A read-only float32 or float64 array of the caller's, in any memory layout, or nested lists of
-numbers (read as float64). Objects that export
-the buffer protocol (numpy arrays) are read through it directly; nanobind's ndarray caster imports
-numpy arrays through DLPack, a Python method call and a capsule per array, which costs more than
-the rest of a small estimate's conversions. Other array types (DLPack producers) go through
-nanobind. TypeError naming the argument for anything else.
+numbers (read as float64). A numpy array of numpy's own float64 or float32 dtype is read from its
+fields (NumpyArrayHead); other objects that export the buffer protocol through it; nanobind's
+ndarray caster imports arrays through DLPack, a Python method call and a capsule per array, so only
+other array types (DLPack producers) go through nanobind. TypeError naming the argument for
+anything else.
 */
 class ArrayView
 {
@@ -54,6 +89,20 @@ public:
             }
             object = converted_;
         }
+        const NumpyTypes& numpy = numpyTypes();
+        if (Py_TYPE(object.ptr()) == numpy.ndarray)
+        {
+            const NumpyArrayHead* head = reinterpret_cast<const NumpyArrayHead*>(object.ptr());
+            if (head->descr == numpy.float64 || head->descr == numpy.float32)
+            {
+                single_ = head->descr == numpy.float32;
+                data_ = head->data;
+                ndim_ = (size_t)head->nd;
+                shape_ = head->dimensions;
+                strideBytes_ = head->strides;
+                return;
+            }
+        }
         if (PyObject_CheckBuffer(object.ptr()) && PyObject_GetBuffer(object.ptr(), &buffer_, PyBUF_RECORDS_RO) == 0)
         {
             hasBuffer_ = true;
@@ -62,11 +111,9 @@ public:
                 raiseType(name + " must be float32 or float64");
             single_ = format[0] == 'f';
             data_ = static_cast<const char*>(buffer_.buf);
-            for (int d = 0; d < buffer_.ndim; ++d)
-            {
-                shape_.push_back((size_t)buffer_.shape[d]);
-                strideBytes_.push_back((int64_t)buffer_.strides[d]);
-            }
+            ndim_ = (size_t)buffer_.ndim;
+            shape_ = buffer_.shape;
+            strideBytes_ = buffer_.strides;
             return;
         }
         PyErr_Clear(); // an exporter that refused: judged by nanobind's caster below
@@ -77,11 +124,14 @@ public:
         single_ = fallback_.dtype() == nb::dtype<float>();
         data_ = static_cast<const char*>(fallback_.data());
         const int64_t itemSize = single_ ? (int64_t)sizeof(float) : (int64_t)sizeof(double);
-        for (size_t d = 0; d < fallback_.ndim(); ++d)
+        ndim_ = fallback_.ndim();
+        for (size_t d = 0; d < ndim_; ++d)
         {
-            shape_.push_back(fallback_.shape(d));
-            strideBytes_.push_back(fallback_.stride(d) * itemSize); // nanobind's strides count elements
+            fallbackShape_.push_back((Py_ssize_t)fallback_.shape(d));
+            fallbackStrides_.push_back((Py_ssize_t)(fallback_.stride(d) * itemSize)); // nanobind's count elements
         }
+        shape_ = fallbackShape_.data();
+        strideBytes_ = fallbackStrides_.data();
     }
     ~ArrayView()
     {
@@ -91,13 +141,13 @@ public:
     ArrayView(const ArrayView&) = delete;
     ArrayView& operator=(const ArrayView&) = delete;
 
-    size_t ndim() const { return shape_.size(); }
-    size_t shape(size_t d) const { return shape_[d]; }
+    size_t ndim() const { return ndim_; }
+    size_t shape(size_t d) const { return (size_t)shape_[d]; }
     size_t size() const
     {
         size_t n = 1;
-        for (size_t s : shape_)
-            n *= s;
+        for (size_t d = 0; d < ndim_; ++d)
+            n *= shape(d);
         return n;
     }
     //! Element (r, c) of a two-dimensional array.
@@ -108,8 +158,8 @@ public:
         int64_t offset = 0;
         for (size_t d = ndim(); d-- > 0;)
         {
-            offset += (int64_t)(i % shape_[d]) * strideBytes_[d];
-            i /= shape_[d];
+            offset += (int64_t)(i % shape(d)) * strideBytes_[d];
+            i /= shape(d);
         }
         return value(offset);
     }
@@ -125,18 +175,28 @@ public:
 private:
     double value(int64_t offsetBytes) const
     {
-        return single_ ? (double)*reinterpret_cast<const float*>(data_ + offsetBytes)
-                       : *reinterpret_cast<const double*>(data_ + offsetBytes);
+        // Copied, not dereferenced: an array's data need not be aligned.
+        if (single_)
+        {
+            float v;
+            std::memcpy(&v, data_ + offsetBytes, sizeof v);
+            return v;
+        }
+        double v;
+        std::memcpy(&v, data_ + offsetBytes, sizeof v);
+        return v;
     }
 
     nb::object converted_; // a list's values as an array
     Py_buffer buffer_{};
     bool hasBuffer_ = false;
     AnyArray fallback_;
+    std::vector<Py_ssize_t> fallbackShape_, fallbackStrides_;
     const char* data_ = nullptr;
     bool single_ = false;
-    std::vector<size_t> shape_;
-    std::vector<int64_t> strideBytes_;
+    size_t ndim_ = 0;
+    const Py_ssize_t* shape_ = nullptr;
+    const Py_ssize_t* strideBytes_ = nullptr;
 };
 
 //! The values of @p a (any strides) in row-major order as a @p rows x @p cols matrix named @p name,
@@ -181,12 +241,16 @@ tripose::ArgumentMatrix readFeatures(nb::handle object, const std::string& name,
 }
 
 //! A camera matrix, 3x3.
-tripose::ArgumentMatrix readCameraMatrix(nb::handle object, const std::string& name)
+tripose::ArgumentMatrix readCameraMatrix(const ArrayView& a, const std::string& name)
 {
-    const ArrayView a(object, name);
     if (a.ndim() != 2 || a.shape(0) != 3 || a.shape(1) != 3)
         raiseValue(name + " must have shape (3, 3), got " + a.shapeText());
     return copyMatrix(a, name, 3, 3);
+}
+
+tripose::ArgumentMatrix readCameraMatrix(nb::handle object, const std::string& name)
+{
+    return readCameraMatrix(ArrayView(object, name), name);
 }
 
 //! Distortion coefficients: a vector (OpenCV's 4, 5, 8, 12 or 14, checked by the core).
@@ -236,7 +300,7 @@ void readCalibration(nb::handle K, nb::handle dist, tripose::ProblemArguments& a
                 args.cameraMatrices.push_back(readCameraMatrix(array[nb::int_(v)], "K[" + std::to_string(v) + "]"));
         }
         else
-            args.cameraMatrices.push_back(readCameraMatrix(K, "K"));
+            args.cameraMatrices.push_back(readCameraMatrix(a, "K"));
     }
     if (dist.is_none())
         return;
@@ -307,9 +371,9 @@ std::vector<tripose::ArgumentMatrix> readPoseList(nb::handle object, const char*
     return out;
 }
 
-/** Made by numpy.empty and filled through the buffer protocol: exporting a C++ buffer as an ndarray
+/** Made by numpy.empty and filled through the array's fields: exporting a C++ buffer as an ndarray
 through nanobind costs several times as much, which a small estimate's result (a few 3x3 and
-3-vectors) notices.
+3-vectors) notices (doc/studies/speed.md, "The Python package beside the C++ API").
 */
 nb::object newArray(std::initializer_list<size_t> shape, const double* values)
 {
@@ -317,18 +381,18 @@ nb::object newArray(std::initializer_list<size_t> shape, const double* values)
     // finalised before static destructors run).
     static const nb::handle numpyEmpty = nb::object(nb::module_::import_("numpy").attr("empty")).release();
     size_t n = 1;
-    nb::list dims;
+    nb::object dims = nb::steal(PyTuple_New((Py_ssize_t)shape.size()));
+    if (!dims.is_valid())
+        throw nb::python_error();
+    Py_ssize_t d = 0;
     for (size_t s : shape)
     {
-        dims.append(s);
+        PyTuple_SET_ITEM(dims.ptr(), d++, PyLong_FromSize_t(s));
         n *= s;
     }
-    nb::object array = numpyEmpty(nb::tuple(dims));
-    Py_buffer view;
-    if (PyObject_GetBuffer(array.ptr(), &view, PyBUF_WRITABLE | PyBUF_C_CONTIGUOUS) != 0)
-        throw nb::python_error();
-    std::memcpy(view.buf, values, n * sizeof(double));
-    PyBuffer_Release(&view);
+    nb::object array = numpyEmpty(dims);
+    // numpy.empty gives a new C-contiguous float64 array: its data is written through its fields.
+    std::memcpy(reinterpret_cast<NumpyArrayHead*>(array.ptr())->data, values, n * sizeof(double));
     return array;
 }
 

@@ -464,3 +464,32 @@ def test_empty_arrays_equal_none():
     reference = tripose.estimate_pose_line_point(None, None, None, *s.lines, s.K, s.R12, s.t12)
     empty = [np.zeros((0, 2))] * 3
     assert_same_candidates(reference, tripose.estimate_pose_line_point(*empty, *s.lines, s.K, s.R12, s.t12))
+
+
+def test_array_kinds_read_alike():
+    # A numpy array of numpy's own float dtype is read from its fields; a subclass, a dtype object of
+    # its own, a memoryview and an unaligned array take the other paths or offsets, and read the same.
+    args, s = noisy_args()
+    reference = tripose.estimate_pose_line_point(**args)
+
+    class Subclass(np.ndarray):
+        pass
+
+    def unaligned(a):
+        raw = np.zeros(a.size * 8 + 1, np.uint8)[1:].view(np.float64).reshape(a.shape)
+        raw[...] = a
+        assert not raw.flags.aligned
+        return raw
+
+    with_metadata = np.dtype(np.float64, metadata={"unit": "px"})
+    kinds = {
+        "subclass": lambda a: a.view(Subclass),
+        "dtype with metadata": lambda a: a.astype(with_metadata),
+        "memoryview": lambda a: memoryview(np.ascontiguousarray(a)),
+        "unaligned": unaligned,
+    }
+    for kind, make in kinds.items():
+        other = {k: make(v) for k, v in args.items()}
+        assert_same_candidates(reference, tripose.estimate_pose_line_point(**other))
+    with pytest.raises(TypeError, match="points2"):
+        tripose.estimate_pose_line_point(**dict(args, points2=args["points2"].astype(">f8")))
