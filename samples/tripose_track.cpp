@@ -51,10 +51,11 @@ const char* kUsage =
     "  --poses        a TUM trajectory (timestamp tx ty tz qx qy qz qw, camera to world) whose lines are\n"
     "                 the poses of the first frames, in order (at least two)\n"
     "  --output       the trajectory (TUM), one line per frame with a pose; lost frames are left out\n"
-    "  --yaml         also every frame's status (0 given, 1 registered, 2 lost), keyframe, features,\n"
-    "                 inliers, pose (R row-major, t; NaN when lost) and recognised_keyframe: the keyframe\n"
-    "                 of a place seen before through which the frame was registered (a loop closed, a\n"
-    "                 link to an older place, or a lost camera found again), -1 for none\n"
+    "  --yaml         also every frame's status (0 given, 1 registered, 2 lost, 3 restarted: a new map),\n"
+    "                 keyframe, features, inliers, pose (R row-major, t; NaN when lost), recognised_keyframe:\n"
+    "                 the keyframe of a place seen before through which the frame was registered (a loop\n"
+    "                 closed, a link to an older place, a lost camera found again or two maps joined), -1\n"
+    "                 for none, and map: the map its pose is in at the end (0 the first; -1 lost)\n"
     "  --window N     register each frame against the last N keyframes (default 5, at least 2)\n"
     "  --min-inliers  a frame is lost when fewer features agree with its pose (default 15)\n"
     "  --threshold    the registration's inlier threshold (px, default 2)\n"
@@ -241,7 +242,7 @@ int main(int argc, char** argv)
     std::vector<cv::tripose::TrackedFrame> results;
     std::vector<double> timestamps;
     StageTimes times;
-    int givenFrames = 0, registered = 0, lost = 0;
+    int givenFrames = 0, registered = 0, lost = 0, restarted = 0;
     std::cout << "frame  status       inliers/features  ms    name\n";
     try
     {
@@ -300,13 +301,15 @@ int main(int argc, char** argv)
                 result = tracker->addFeatures(found.points, found.pointDescriptors, found.segments,
                                               found.lineDescriptors, givenR, givenT);
             }
-            const char* status = result.status == cv::tripose::FRAME_GIVEN ? "given" :
-                                 result.status == cv::tripose::FRAME_LOST  ? "LOST" :
-                                 result.keyframe                           ? "registered" :
-                                                                             "registered*";
+            const char* status = result.status == cv::tripose::FRAME_GIVEN     ? "given" :
+                                 result.status == cv::tripose::FRAME_LOST      ? "LOST" :
+                                 result.status == cv::tripose::FRAME_RESTARTED ? "restarted" :
+                                 result.keyframe                               ? "registered" :
+                                                                                 "registered*";
             givenFrames += result.status == cv::tripose::FRAME_GIVEN;
             registered += result.status == cv::tripose::FRAME_REGISTERED;
             lost += result.status == cv::tripose::FRAME_LOST;
+            restarted += result.status == cv::tripose::FRAME_RESTARTED;
             std::cout << cv::format("%5d  %-11s  %7d/%-8d  %4.0f  %s", result.frame, status, result.inliers,
                                     result.features, result.milliseconds, frame.name.c_str());
             if (!result.reason.empty())
@@ -338,9 +341,10 @@ int main(int argc, char** argv)
         std::cerr << "tripose_track: " << e.what() << "\n";
         return 1;
     }
-    std::cout << cv::format("%zu frames: %d given, %d registered, %d lost; ms per frame: points (SIFT) %.0f, "
+    const std::string restarts = restarted ? cv::format(", %d restarted", restarted) : std::string();
+    std::cout << cv::format("%zu frames: %d given, %d registered, %d lost%s; ms per frame: points (SIFT) %.0f, "
                             "segments (EDLines, LBD) %.0f, tracking %.0f\n",
-                            results.size(), givenFrames, registered, lost,
+                            results.size(), givenFrames, registered, lost, restarts.c_str(),
                             times.points / std::max<size_t>(1, results.size()),
                             (times.segmentDetection + times.segmentDescription) / std::max<size_t>(1, results.size()),
                             [&] {
@@ -355,7 +359,7 @@ int main(int argc, char** argv)
         std::string text;
         const int F = (int)results.size();
         cv::Mat poses(F, 12, CV_64F, cv::Scalar::all(std::nan(""))), status(F, 1, CV_32S), keyframes(F, 1, CV_32S),
-            featureCounts(F, 1, CV_32S), inliers(F, 1, CV_32S), recognised(F, 1, CV_32S);
+            featureCounts(F, 1, CV_32S), inliers(F, 1, CV_32S), recognised(F, 1, CV_32S), maps(F, 1, CV_32S);
         for (int k = 0; k < F; ++k)
         {
             cv::tripose::TrackedFrame& r = results[k];
@@ -364,6 +368,7 @@ int main(int argc, char** argv)
             featureCounts.at<int>(k) = r.features;
             inliers.at<int>(k) = r.inliers;
             recognised.at<int>(k) = r.recognisedKeyframe;
+            maps.at<int>(k) = stereo ? stereoTracker->getMap(k) : (r.status == cv::tripose::FRAME_LOST ? -1 : 0);
             // The current poses: a local adjustment moves frames after their own result.
             if (r.status == cv::tripose::FRAME_LOST ||
                 !(stereo ? stereoTracker->getPose(k, r.R, r.t) : tracker->getPose(k, r.R, r.t)))
@@ -386,7 +391,7 @@ int main(int argc, char** argv)
                     fs << "right" << options.right;
                 fs << "window" << options.track.window << "poses" << poses
                    << "status" << status << "keyframe" << keyframes << "features" << featureCounts << "inliers"
-                   << inliers << "recognised_keyframe" << recognised;
+                   << inliers << "recognised_keyframe" << recognised << "map" << maps;
             });
     }
     catch (const std::exception& e)

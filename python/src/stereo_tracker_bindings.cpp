@@ -93,6 +93,10 @@ void bindStereoTracker(nb::module_& m)
                 return nb::none();
             return nb::make_tuple(rotation(f.pose.R), array(f.pose.t.data(), { 3 }));
         })
+        .def("map_of", [](const tripose::StereoTracker& self, int frame) -> int {
+            checkFrame(self, frame);
+            return self.frame(frame).hasPose() ? self.frame(frame).map : -1;
+        }, nb::arg("frame"))
         .def("tracks", [](const tripose::StereoTracker& self, int frame) {
             checkFrame(self, frame);
             return nb::make_tuple(intArray(self.frame(frame).pointTrack), intArray(self.frame(frame).lineTrack));

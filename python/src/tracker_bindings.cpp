@@ -61,6 +61,7 @@ const char* statusName(tripose::FrameStatus status)
     {
     case tripose::FrameStatus::Given: return "GIVEN";
     case tripose::FrameStatus::Registered: return "REGISTERED";
+    case tripose::FrameStatus::Restarted: return "RESTARTED";
     default: return "LOST";
     }
 }
@@ -71,18 +72,22 @@ void bindTracker(nb::module_& m)
 {
     nb::enum_<tripose::FrameStatus>(m, "FrameStatus",
                                       "What the tracker made of a frame: GIVEN (its pose came with it), REGISTERED "
-                                      "(registered against the window of keyframes) or LOST (no pose: too little "
-                                      "support; FrameResult.reason says why).")
+                                      "(registered against the window of keyframes), LOST (no pose: too little "
+                                      "support; FrameResult.reason says why) or RESTARTED (a stereo tracker lost "
+                                      "for longer began a new map here; FrameResult.map).")
         .value("GIVEN", tripose::FrameStatus::Given, "The pose came with the frame.")
         .value("REGISTERED", tripose::FrameStatus::Registered, "Registered against the window of keyframes.")
-        .value("LOST", tripose::FrameStatus::Lost, "No pose: too little support (see FrameResult.reason).");
+        .value("LOST", tripose::FrameStatus::Lost, "No pose: too little support (see FrameResult.reason).")
+        .value("RESTARTED", tripose::FrameStatus::Restarted,
+               "A stereo tracker lost for more than max_frame_gap frames began a new map at this frame, placed at the "
+               "last pose known until a place of an earlier map joins them (FrameResult.map).");
 
     nb::class_<tripose::FrameResult>(m, "FrameResult",
                                       "What the tracker made of one frame: status, the pose R, t (x_cam = R @ X + t; "
                                       "None when lost), features and inliers, keyframe, the time, why it was lost, "
                                       "and each feature's track.")
         .def_ro("frame", &tripose::FrameResult::frame, "The frame's index, in the order given.")
-        .def_ro("status", &tripose::FrameResult::status, "FrameStatus.GIVEN, REGISTERED or LOST.")
+        .def_ro("status", &tripose::FrameResult::status, "FrameStatus.GIVEN, REGISTERED, LOST or RESTARTED.")
         .def_prop_ro("R", [](const tripose::FrameResult& r) -> nb::object {
             return r.status == tripose::FrameStatus::Lost ? nb::none() : rotation(r.pose.R);
         }, "The rotation (3, 3) of x_cam = R @ X + t; None when lost.")
@@ -97,6 +102,10 @@ void bindTracker(nb::module_& m)
         .def_ro("recognised_keyframe", &tripose::FrameResult::recognisedKeyframe,
                 "The keyframe of a place seen before through which the frame was registered: a loop it "
                 "closed, or where the lost camera was found again; -1 for neither.")
+        .def_ro("map", &tripose::FrameResult::map,
+                "The map the pose is in: 0 (the world of the given poses) unless a stereo tracker restarted and "
+                "has not yet joined its new map to an earlier one; then the new map's poses move into the earlier "
+                "map (StereoTracker.pose and map_of give them as they are now).")
         .def_ro("milliseconds", &tripose::FrameResult::milliseconds, "Time of matching and registration.")
         .def_ro("reason", &tripose::FrameResult::reason, "Why the frame is lost; empty otherwise.")
         .def_prop_ro("covariance", [](const tripose::FrameResult& r) -> nb::object {

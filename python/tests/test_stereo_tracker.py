@@ -416,3 +416,87 @@ def test_covariance_on_request_covers_the_first_registered_frame():
         t_sigma = np.sqrt(result.noise_variance * np.trace(C[3:, 3:]))
         assert np.linalg.norm(result.t - t_true) < 4 * t_sigma, seed
     assert make_tracker(StereoSequence(2, seed=0)).track(*StereoSequence(2, seed=0).frame(0)).covariance is None
+
+
+# --- restarting after a long loss, and joining the maps --------------------------------------------------
+
+class SurroundingScene(StereoSequence):
+    """Points and segments on a cylinder 8-16 m around the origin, all round: a rig facing one way
+    sees nothing of what it sees facing the other way. Each frame's rig is given by its yaw (about
+    the vertical) and its centre."""
+
+    def __init__(self, seed):
+        rng = np.random.default_rng(seed)
+        self.rng = rng
+        self.binary = False
+        self.rig_R = rotation([0, 0.01, 0])
+        self.rig_t = -self.rig_R @ np.array([0.3, 0, 0])
+        self.poses = []
+
+        def around(n):
+            azimuth = rng.uniform(0, 2 * np.pi, n)
+            radius = rng.uniform(8, 16, n)
+            return np.column_stack([radius * np.sin(azimuth), rng.uniform(-3, 3, n), radius * np.cos(azimuth)])
+
+        self.points = around(1500)
+        starts = around(300)
+        directions = rng.normal(size=(300, 3))
+        directions *= (rng.uniform(0.8, 2.0, 300) / np.linalg.norm(directions, axis=1))[:, None]
+        self.segments = np.hstack([starts, starts + directions])
+        self.point_descriptors = rng.uniform(0, 1, (1500, 128)).astype(np.float32)
+        self.line_descriptors = rng.uniform(0, 1, (300, 128)).astype(np.float32)
+
+    def add(self, yaw_deg, centre):
+        R = rotation([0, np.radians(yaw_deg), 0]).T  # the camera looks along azimuth yaw_deg
+        self.poses.append((R, -R @ np.asarray(centre, np.float64)))
+        return len(self.poses) - 1
+
+
+def test_a_rig_lost_for_long_restarts_and_joins_its_maps():
+    """Eight frames facing north, five of noise, then the rig faces south, where no keyframe looks:
+    it restarts a map there (at the last pose known, on the second frame facing south), turns back
+    north in steps of 8 deg, and on seeing the first frames' place joins the new map to the first:
+    every pose then matches the truth."""
+    scene = SurroundingScene(seed=11)
+    tracker = make_tracker(scene)
+    rng = np.random.default_rng(12)
+    plan = [("scene", 3.0 * k, [0.05 * k, 0, 0.1 * k]) for k in range(8)]
+    plan += [("noise", None, None)] * 5
+    plan += [("scene", 180.0 + 8.0 * k, [0.35 + 0.02 * k, 0, 0.7 - 0.02 * k]) for k in range(26)]
+    results, truth = [], {}
+    for kind, yaw, centre in plan:
+        if kind == "noise":
+            results.append(tracker.track(noise_features(rng), noise_features(rng)))
+            continue
+        k = scene.add(yaw, centre)
+        truth[len(results)] = scene.poses[k]
+        results.append(tracker.track(scene.observe(*scene.poses[k]), scene.observe(*scene.right_pose(k))))
+
+    statuses = [r.status for r in results]
+    assert statuses[:8] == [GIVEN] + [REGISTERED] * 7
+    # The first frame facing south is lost too: a new map needs the frame before it to register
+    # against it.
+    assert statuses[8:14] == [LOST] * 6
+    restart = results[14]
+    assert restart.status == tripose.FrameStatus.RESTARTED and restart.map == 1 and restart.keyframe
+    np.testing.assert_allclose(restart.R, results[7].R)  # placed at the last pose known
+    np.testing.assert_allclose(restart.t, results[7].t)
+    joins = [r for r in results[15:] if r.recognised_keyframe >= 0]
+    assert joins, [r.status for r in results]
+    join = joins[0]
+    assert results[join.recognised_keyframe].map == 0 and join.map == 0
+    before_join = results[15:join.frame]
+    assert before_join and all(r.status == REGISTERED and r.map == 1 for r in before_join)
+    assert all(r.status == REGISTERED for r in results[15:]), [r.reason for r in results[15:]]
+    # At the end every pose is in map 0, the first frame's world, and matches the truth.
+    centres = np.array([-R.T @ t for R, t in truth.values()])
+    path_length = float(np.sum(np.linalg.norm(np.diff(centres, axis=0), axis=1)))
+    for frame, true_pose in truth.items():
+        if frame == 13:
+            continue  # lost
+        assert tracker.map_of(frame) == 0, frame
+        rotation_error, position_error = errors(tracker.pose(frame), true_pose)
+        assert rotation_error < ROTATION_BOUND_DEG, (frame, rotation_error)
+        assert position_error < POSITION_BOUND * path_length, (frame, position_error)
+    for frame in range(8, 14):
+        assert tracker.map_of(frame) == -1 and tracker.pose(frame) is None

@@ -301,7 +301,7 @@ class TrackerOptions:
 
 class FrameStatus(enum.Enum):
     """
-    What the tracker made of a frame: GIVEN (its pose came with it), REGISTERED (registered against the window of keyframes) or LOST (no pose: too little support; FrameResult.reason says why).
+    What the tracker made of a frame: GIVEN (its pose came with it), REGISTERED (registered against the window of keyframes), LOST (no pose: too little support; FrameResult.reason says why) or RESTARTED (a stereo tracker lost for longer began a new map here; FrameResult.map).
     """
 
     GIVEN = 0
@@ -312,6 +312,11 @@ class FrameStatus(enum.Enum):
 
     LOST = 2
     """No pose: too little support (see FrameResult.reason)."""
+
+    RESTARTED = 3
+    """
+    A stereo tracker lost for more than max_frame_gap frames began a new map at this frame, placed at the last pose known until a place of an earlier map joins them (FrameResult.map).
+    """
 
 class FrameResult:
     """
@@ -324,7 +329,7 @@ class FrameResult:
 
     @property
     def status(self) -> FrameStatus:
-        """FrameStatus.GIVEN, REGISTERED or LOST."""
+        """FrameStatus.GIVEN, REGISTERED, LOST or RESTARTED."""
 
     @property
     def R(self) -> object:
@@ -354,6 +359,12 @@ class FrameResult:
     def recognised_keyframe(self) -> int:
         """
         The keyframe of a place seen before through which the frame was registered: a loop it closed, or where the lost camera was found again; -1 for neither.
+        """
+
+    @property
+    def map(self) -> int:
+        """
+        The map the pose is in: 0 (the world of the given poses) unless a stereo tracker restarted and has not yet joined its new map to an earlier one; then the new map's poses move into the earlier map (StereoTracker.pose and map_of give them as they are now).
         """
 
     @property

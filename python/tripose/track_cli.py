@@ -28,10 +28,12 @@ qw per line: the camera's position and orientation in the world) whose lines are
 first frames, in order (at least two; its timestamps are not used); --poses takes precedence.
 
 The output is a TUM trajectory of every frame with a pose (lost frames are left out), stamped with
-the frames' timestamps; --yaml writes per frame its status (0 given, 1 registered, 2 lost), keyframe,
-features, inliers, R and t (x_cam = R X + t; absent for a lost frame), the reason it is lost and
-recognised_keyframe: the keyframe of a place seen before through which the frame was registered (a
-loop it closed, a link to an older place, or a lost camera found again), -1 for none.
+the frames' timestamps; --yaml writes per frame its status (0 given, 1 registered, 2 lost, 3
+restarted: a stereo rig lost for longer began a new map), keyframe, features, inliers, R and t
+(x_cam = R X + t; absent for a lost frame), the reason it is lost, recognised_keyframe: the keyframe
+of a place seen before through which the frame was registered (a loop it closed, a link to an older
+place, a lost camera found again, or two maps joined), -1 for none, and map: the map its pose is in
+at the end (0 the first; -1 lost). Poses of a map never joined to map 0 are in that map's own frame.
 
 --loop-closure (tripose.TrackerOptions.loop_closure) looks, after each new keyframe, for a place seen
 before among the keyframes older than the window, and closes the loop through it: the correction is
@@ -83,7 +85,7 @@ _ROTATION_TOLERANCE = 1e-6
 _AGREEMENT_MIN_MATCHES = 20
 _AGREEMENT_MIN_FRACTION = 0.3
 
-STATUS_CODES = {"GIVEN": 0, "REGISTERED": 1, "LOST": 2}
+STATUS_CODES = {"GIVEN": 0, "REGISTERED": 1, "LOST": 2, "RESTARTED": 3}
 
 
 class InputError(Exception):
@@ -468,11 +470,12 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
     fs.write("calib", str(args.calib))
     if args.poses is not None:
         fs.write("poses", str(args.poses))
-    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2, 3)]
     fs.write("num_frames", len(frames))
     fs.write("given", counts[0])
     fs.write("registered", counts[1])
     fs.write("lost", counts[2])
+    fs.write("restarted", counts[3])
     fs.write("window", options.window)
     fs.write("min_inliers", options.min_inliers)
     fs.write("threshold", options.ransac.threshold)
@@ -494,6 +497,7 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
             fs.write("t", np.ascontiguousarray(pose[1]).reshape(3, 1))
         fs.write("reason", f["reason"])
         fs.write("recognised_keyframe", f["recognised_keyframe"])
+        fs.write("map", f.get("map", -1 if pose is None else 0))
         fs.endWriteStruct()
     fs.endWriteStruct()
     return fs.releaseAndGetString()
@@ -580,6 +584,8 @@ def run_stereo(args) -> int:
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
               + (f"  {reason}" if reason else ""), flush=True)
 
+    for f in frames:
+        f["map"] = tracker.map_of(f["frame"])  # as the maps stand at the end
     _write_outputs(args, pixel_scale, options, frames, tracker.trajectory())
     return 0
 
@@ -596,8 +602,9 @@ def _write_outputs(args, pixel_scale, options, frames, poses):
             _write_atomically(path, text)
         except OSError as error:
             raise InputError(f"{path}: cannot be written ({error.strerror or error})") from None
-    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2)]
-    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost; "
+    counts = [sum(1 for f in frames if f["status"] == code) for code in (0, 1, 2, 3)]
+    restarts = f", {counts[3]} restarted" if counts[3] else ""
+    print(f"{len(frames)} frames: {counts[0]} given, {counts[1]} registered, {counts[2]} lost{restarts}; "
           f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
 
 
@@ -740,6 +747,8 @@ def run(args) -> int:
     if args.poses is not None and len(given) > len(frames):
         print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
 
+    for f in frames:
+        f["map"] = tracker.map_of(f["frame"])  # as the maps stand at the end
     _write_outputs(args, pixel_scale, options, frames, tracker.trajectory())
     return 0
 

@@ -288,7 +288,16 @@ class StereoTracker:
     stereo matches (a rig turning on the spot). options.local_adjustment is not used. In a
     FrameResult, features counts the features the frame shares with its keyframe's stereo pair
     (those with the newest keyframe when lost), and known_views is 1 (one stereo keyframe) for a
-    registered frame. Bad input raises ValueError or TypeError naming the argument.
+    registered frame.
+
+    A frame no window keyframe registers is looked for among the older keyframes' places (FrameResult.
+    recognised_keyframe). Lost for more than options.max_frame_gap frames in a row at a place no
+    keyframe shows, the rig starts again: the next frame with twice options.min_inliers stereo matches,
+    against whose stereo pair the frame before it registers, begins a new map (FrameStatus.RESTARTED, FrameResult.map), placed at the last pose known, and the
+    frames after it are tracked in that map. When a later keyframe recognises a place of an earlier
+    map, the two are joined: the newer map's poses move by one rigid motion into the earlier map,
+    and pose(), map_of() and trajectory() give them as they are now. Bad input raises ValueError or
+    TypeError naming the argument.
     """
 
     def __init__(self, K_left: Any, K_right: Any, R: Any, t: Any, dist_left: Any = None, dist_right: Any = None,
@@ -323,6 +332,11 @@ class StereoTracker:
     def pose(self, frame: int) -> Optional[Tuple[np.ndarray, np.ndarray]]:
         """The (R, t) of frame `frame`'s left camera; None when the frame is lost."""
         return self._tracker.pose(int(frame))
+
+    def map_of(self, frame: int) -> int:
+        """The map frame `frame`'s pose is in now (FrameResult.map; maps joined since take the earlier
+        map's index); -1 when the frame is lost."""
+        return self._tracker.map_of(int(frame))
 
     def tracks(self, frame: int) -> Tuple[np.ndarray, np.ndarray]:
         """(point_tracks, line_tracks) of frame `frame`'s left image as they are now: the track of

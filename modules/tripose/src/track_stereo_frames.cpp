@@ -63,6 +63,13 @@ public:
         return detail::writeFramePose(tracker_.frame(frame), R, t);
     }
 
+    int getMap(int frame) const CV_OVERRIDE
+    {
+        detail::checkFrameIndex(frame, tracker_.numFrames());
+        const core::StoredFrame& f = tracker_.frame(frame);
+        return f.hasPose() ? f.map : -1;
+    }
+
     void getTracks(int frame, OutputArray pointTracks, OutputArray lineTracks, OutputArray pointStereoMatches,
                    OutputArray lineStereoMatches) const CV_OVERRIDE
     {

@@ -233,9 +233,13 @@ TEST(Tripose_StereoTracker, frames_of_noise_are_lost_and_the_next_ones_register)
             EXPECT_TRUE(r.R.empty());
             Mat R, t;
             EXPECT_FALSE(tracker->getPose(k, R, t));
+            EXPECT_EQ(tracker->getMap(k), -1);
             continue;
         }
         ASSERT_EQ(r.status, cv::tripose::FRAME_REGISTERED) << "frame " << k << ": " << r.reason;
+        // The noise shows no place: the rig never restarts, and stays in the first map.
+        EXPECT_EQ(r.map, 0);
+        EXPECT_EQ(tracker->getMap(k), 0);
         const Errors e = poseErrors(r, seq.poses[k]);
         EXPECT_LT(e.rotationDeg, kRotationBoundDeg) << "frame " << k;
         EXPECT_LT(e.position, kPositionBound * seq.pathLength) << "frame " << k;

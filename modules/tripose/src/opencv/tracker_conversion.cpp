@@ -106,6 +106,7 @@ TrackedFrame toTrackedFrame(const ::tripose::FrameResult& r)
     out.inliers = r.inliers;
     out.knownViews = r.knownViews;
     out.recognisedKeyframe = r.recognisedKeyframe;
+    out.map = r.map;
     out.keyframe = r.keyframe;
     out.milliseconds = r.milliseconds;
     out.reason = r.reason;

@@ -64,7 +64,10 @@ enum TrackedFrameStatus
 {
     FRAME_GIVEN = 0,      //!< The pose came with the frame.
     FRAME_REGISTERED = 1, //!< Registered against the window of keyframes.
-    FRAME_LOST = 2        //!< No pose: too little support (TrackedFrame::reason says which).
+    FRAME_LOST = 2,       //!< No pose: too little support (TrackedFrame::reason says which).
+    //! A StereoTracker lost for longer than TrackerParams::maxFrameGap began a new map at this frame
+    //! (TrackedFrame::map), placed at the last pose known until a place of an earlier map joins them.
+    FRAME_RESTARTED = 3
 };
 
 //! The result of one frame.
@@ -81,6 +84,10 @@ struct CV_EXPORTS TrackedFrame
     //! The keyframe of a place seen before through which the frame was registered: a loop it closed
     //! or a link to an older place, or where a lost camera was found again; -1 for neither.
     int recognisedKeyframe = -1;
+    //! The map the pose is in: 0 (the world of the given poses) unless a StereoTracker restarted and has
+    //! not yet joined its new map to an earlier one; then the new map's poses move into the earlier one
+    //! (StereoTracker::getPose() and getMap() give them as they are now).
+    int map = 0;
     std::string reason;          //!< Why the frame is lost; empty otherwise.
     std::vector<int> pointTracks, lineTracks; //!< Per point and segment of the frame: its track, -1 for none.
     /** With TrackerParams::covariance, for a registered frame whose pose is determined: 6x6 CV_64F, the
@@ -191,6 +198,15 @@ is not used. TrackedFrame::features counts the features the frame shares with it
 stereo pair (with the newest keyframe's when lost), and TrackedFrame::knownViews is 1 (one stereo
 keyframe) for a registered frame.
 
+A frame that no window keyframe registers is looked for among the older keyframes' places, those
+whose descriptors look most like its own (TrackedFrame::recognisedKeyframe). A rig lost for more than
+TrackerParams::maxFrameGap frames in a row, at a place no keyframe shows, starts again: the next
+frame with twice TrackerParams::minInliers stereo matches, against whose stereo pair the frame before
+it registers, begins a new map (FRAME_RESTARTED,
+TrackedFrame::map), placed at the last pose known, and the frames after it are tracked in that map.
+When a later keyframe recognises a place of an earlier map, the two maps are joined: the newer map's
+poses move by one rigid motion into the earlier one.
+
 Poses follow the module: a frame's pose is its left camera's, x ~ K_left (R X + t), X in the world
 frame; the right camera is at the rig composed with it. Bad input throws cv::Exception naming the
 argument.
@@ -224,6 +240,9 @@ public:
 
     //! The pose of frame @p frame's left camera; false, outputs untouched, when the frame is lost.
     virtual bool getPose(int frame, OutputArray R, OutputArray t) const = 0;
+
+    //! The map frame @p frame's pose is in now (TrackedFrame::map, maps joined since included); -1 when lost.
+    virtual int getMap(int frame) const = 0;
 
     /** The track of each point and segment of frame @p frame's left image (CV_32S columns, -1: in
     no track), and the row of each one's stereo match in the right image (-1: none). */

@@ -30,6 +30,15 @@ inline CameraPose composePose(const CameraPose& mount, const CameraPose& pose)
     return p;
 }
 
+//! The pose that undoes @p pose: world from camera, X = R^T (x - t).
+inline CameraPose inversePose(const CameraPose& pose)
+{
+    CameraPose p;
+    p.R = pose.R.transpose();
+    p.t = -(p.R * pose.t);
+    return p;
+}
+
 //! [v]x, the matrix of the cross product v x (.).
 inline Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 {

@@ -39,6 +39,14 @@ void join(TrackStore& store, FeatureKind kind, int keyframe, int keyRow, int fra
 
 } // namespace
 
+void joinToKeyframeTracks(TrackStore& store, int keyframe, int frame, const Matches& points, const Matches& segments)
+{
+    for (const auto& m : points)
+        join(store, FeatureKind::Point, keyframe, m.first, frame, m.second);
+    for (const auto& m : segments)
+        join(store, FeatureKind::Line, keyframe, m.first, frame, m.second);
+}
+
 std::vector<std::pair<int, int>> keyframesSharingTracks(const TrackStore& store, int frame, int minShared)
 {
     std::map<int, int> shared;
@@ -83,10 +91,7 @@ Registration registerAgainstPlace(TrackStore& store, int frame, const FrameFeatu
         return out;
     }
     TrackStore before = store;
-    for (const auto& m : points)
-        join(store, FeatureKind::Point, keyframe, m.first, frame, m.second);
-    for (const auto& m : segments)
-        join(store, FeatureKind::Line, keyframe, m.first, frame, m.second);
+    joinToKeyframeTracks(store, keyframe, frame, points, segments);
     TrackerOptions placeOptions = options;
     placeOptions.minInliers = minInliers;
     runCatchingInputErrors([&] { out = registerAgainstWindow(store, frame, neighbours, placeOptions); }, &out.reason);

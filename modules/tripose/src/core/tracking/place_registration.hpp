@@ -9,11 +9,17 @@
 #include <vector>
 
 #include "frame_features.hpp"
+#include "frame_matching.hpp"
 #include "track_store.hpp"
 #include "tracker_options.hpp"
 #include "window_registration.hpp"
 
 namespace tripose {
+
+/** Joins each matched feature of frame @p frame to the track of its match in keyframe @p keyframe
+(@p points and @p segments: (keyframe row, frame row)), merging the two tracks where the frame's
+feature already had one and they share no frame. */
+void joinToKeyframeTracks(TrackStore& store, int keyframe, int frame, const Matches& points, const Matches& segments);
 
 /** The posed keyframes other than @p frame that observe at least @p minShared of the tracks frame
 @p frame observes, as (keyframe, shared tracks), most shared first. */

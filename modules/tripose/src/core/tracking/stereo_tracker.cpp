@@ -18,6 +18,7 @@
 #include "epipolar_matching.hpp"
 #include "frame_arguments.hpp"
 #include "frame_matching.hpp"
+#include "place_registration.hpp"
 
 namespace tripose {
 
@@ -28,6 +29,11 @@ const int kMinFeatures = 3;
 
 // A frame whose stereo matches the keyframe's pair sees less than this fraction of is a keyframe.
 const double kMinOverlap = 0.5;
+
+// A place is worth its geometric check when this many of the retrieval sample's descriptors match;
+// the best few are checked.
+const int kMinPlaceMatches = 20;
+const int kPlacesChecked = 3;
 
 const FeatureKind kKinds[2] = { FeatureKind::Point, FeatureKind::Line };
 
@@ -113,7 +119,7 @@ struct StereoTracker::Attempt
 StereoTracker::StereoTracker(const Eigen::Matrix3d& KLeft, const std::vector<double>& distortionLeft,
                              const Eigen::Matrix3d& KRight, const std::vector<double>& distortionRight,
                              const CameraPose& rig, const TrackerOptions& options)
-    : options_(options)
+    : options_(options), retrieval_(options.matching)
 {
     checkCameraMatrix(KLeft, "K_left");
     checkCameraMatrix(KRight, "K_right");
@@ -239,12 +245,14 @@ FrameResult StereoTracker::addFrame(const FrameFeatures& left, const FrameFeatur
     recent_.emplace_back(index, std::move(undistorted[0]));
     while ((int)recent_.size() > options_.maxFrameGap)
         recent_.pop_front();
-    FrameResult result = finishFrame(index, start);
+    FrameResult result = finishFrame(index, recent_.back().second, start);
     if (result.keyframe)
     {
         keyframeFeatures_.emplace_back(index, recent_.back().second);
         while ((int)keyframeFeatures_.size() > options_.window)
             keyframeFeatures_.pop_front();
+        placeFeatures_[index] = recent_.back().second;
+        retrieval_.add(index, recent_.back().second);
     }
     return result;
 }
@@ -413,7 +421,80 @@ StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) c
     return out;
 }
 
-FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
+StereoTracker::Attempt StereoTracker::registerAtPlace(int frame, const FrameFeatures& left,
+                                                      const std::function<bool(int)>& eligible, int& keyframe)
+{
+    Attempt out;
+    out.reason = "no keyframe looks like it";
+    for (const auto& candidate : retrieval_.rank(
+             left, [&](int k) { return eligible(k) && store_.frames[k].hasPose(); }, kMinPlaceMatches,
+             kPlacesChecked))
+    {
+        const int k = candidate.first;
+        Matches points, segments;
+        if (!matchUnknownPose(placeFeatures_.at(k), left, options_.matching, points, segments))
+        {
+            out.reason = formatString("too few matches with keyframe %d for their epipolar geometry", k);
+            continue;
+        }
+        TrackStore before = store_;
+        joinToKeyframeTracks(store_, k, frame, points, segments);
+        Attempt attempt;
+        runCatchingInputErrors([&] { attempt = registerAgainst(k, frame); }, &attempt.reason);
+        // Matches to a place are checked by no earlier frame: a pose few of them support, or most of
+        // them contradict, is a coincidence of repeated texture, not the place.
+        if (attempt.registered && (attempt.inliers < 2 * options_.minInliers || 2 * attempt.inliers < attempt.features))
+        {
+            attempt.registered = false;
+            attempt.reason = formatString("%d of the %d features shared with the place of keyframe %d agree with its "
+                                          "pose; at least %d and half must", attempt.inliers, attempt.features, k,
+                                          2 * options_.minInliers);
+        }
+        if (attempt.registered)
+        {
+            keyframe = k;
+            return attempt;
+        }
+        store_ = std::move(before);
+        out = attempt;
+    }
+    return out;
+}
+
+void StereoTracker::restart(int frame)
+{
+    StoredFrame& f = store_.frames[frame];
+    for (int j = frame - 1; j >= 0; --j)
+        if (store_.frames[j].hasPose())
+        {
+            f.pose = store_.frames[j].pose;
+            break;
+        }
+    f.status = FrameStatus::Restarted;
+    f.keyframe = true;
+    f.map = numMaps_++;
+    liveMaps_.insert(f.map);
+}
+
+void StereoTracker::joinMaps(int frame, int keyframe, const CameraPose& placePose)
+{
+    const StoredFrame& f = store_.frames[frame];
+    const int own = f.map, place = store_.frames[keyframe].map;
+    const int keep = std::min(own, place), drop = std::max(own, place);
+    // The frame's pose in each map: a pose T in the map dropped is T * G in the map kept.
+    const CameraPose inKeep = keep == place ? placePose : f.pose;
+    const CameraPose inDrop = keep == place ? f.pose : placePose;
+    const CameraPose G = composePose(inversePose(inDrop), inKeep);
+    for (StoredFrame& other : store_.frames)
+        if (other.hasPose() && other.map == drop)
+        {
+            other.pose = composePose(other.pose, G);
+            other.map = keep;
+        }
+    liveMaps_.erase(drop);
+}
+
+FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, double startSeconds)
 {
     StoredFrame& f = store_.frames[frame];
     FrameResult result;
@@ -441,10 +522,24 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
             if (used < 0 && chosen.reason.empty())
                 chosen = attempt;
         }
-        result.features = chosen.features;
-        result.inliers = chosen.inliers;
         if (keyframes.empty())
             chosen.reason = "no keyframe to register against";
+        if (used < 0)
+        {
+            // Lost against the window: the older keyframes' places.
+            int place = -1;
+            Attempt found = registerAtPlace(
+                frame, left, [&](int k) { return std::find(keyframes.begin(), keyframes.end(), k) == keyframes.end(); },
+                place);
+            if (found.registered)
+            {
+                chosen = found;
+                used = place;
+                result.recognisedKeyframe = place;
+            }
+        }
+        result.features = chosen.features;
+        result.inliers = chosen.inliers;
         if (used >= 0)
         {
             result.knownViews = 1;
@@ -455,6 +550,7 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
                 f.pose = CameraPose();
                 result.reason = "the registration gave no finite pose";
                 result.features = result.inliers = 0;
+                result.recognisedKeyframe = -1;
             }
             else
             {
@@ -473,16 +569,51 @@ FrameResult StereoTracker::finishFrame(int frame, double startSeconds)
                     result.noiseVariance = chosen.covariance.noiseVariance;
                 }
                 f.status = FrameStatus::Registered;
-                f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap;
+                f.map = store_.frames[used].map;
+                f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap ||
+                             result.recognisedKeyframe >= 0;
                 for (int kind = 0; kind < 2; ++kind)
                     for (int track : chosen.rejected[kind])
                         store_.split(kKinds[kind], frame, store_.rowIn(kKinds[kind], track, frame));
             }
         }
-        else
+        if (!f.hasPose())
         {
             result.reason = chosen.reason;
             result.inliers = 0;
+            result.recognisedKeyframe = -1;
+            int stereoMatches = 0;
+            for (int right : stereo_[frame].pointRight)
+                stereoMatches += right >= 0 ? 1 : 0;
+            for (int right : stereo_[frame].lineRight)
+                stereoMatches += right >= 0 ? 1 : 0;
+            // A new map needs a place that holds together: the frame before, lost too, registers
+            // against this frame's stereo pair, which chance matches of unrelated images do not.
+            if (++lostRun_ > options_.maxFrameGap && stereoMatches >= 2 * options_.minInliers)
+            {
+                Attempt confirmation;
+                runCatchingInputErrors([&] { confirmation = registerAgainst(frame, frame - 1); }, &confirmation.reason);
+                if (confirmation.registered)
+                {
+                    restart(frame);
+                    result.features = stereoMatches;
+                    result.reason.clear();
+                }
+            }
+        }
+        if (f.hasPose())
+            lostRun_ = 0;
+        // While another map holds frames, each new keyframe looks for its places.
+        if (f.hasPose() && f.keyframe && liveMaps_.size() > 1)
+        {
+            int place = -1;
+            const int own = f.map;
+            Attempt found = registerAtPlace(frame, left, [&](int k) { return store_.frames[k].map != own; }, place);
+            if (found.registered)
+            {
+                joinMaps(frame, place, composePose(found.relative, store_.frames[place].pose));
+                result.recognisedKeyframe = place;
+            }
         }
     }
     describeFrame(f, result);

@@ -6,6 +6,9 @@
 #define TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP
 
 #include <deque>
+#include <functional>
+#include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -13,6 +16,7 @@
 
 #include "../geometry/distortion.hpp"
 #include "frame_features.hpp"
+#include "keyframe_retrieval.hpp"
 #include "track_store.hpp"
 #include "tracker_options.hpp"
 
@@ -39,6 +43,20 @@ Each frame:
   TrackerOptions::window keyframes that shares at least TrackerOptions::minInliers such features
   and gives a pose with that many inliers; a frame that none gives a pose to is lost, and the next
   frame looks back over the same keyframes.
+
+A frame that no window keyframe registers is tried against the places of the older keyframes: the
+keyframes whose descriptors look most like the frame's (KeyframeRetrieval) are matched to it under
+their fundamental matrix, and a keyframe registers it with twice TrackerOptions::minInliers inliers,
+at least half of the features it shares agreeing (FrameResult::recognisedKeyframe).
+
+A rig lost for more than TrackerOptions::maxFrameGap frames in a row, at a place no keyframe shows,
+starts again: the next such frame with twice TrackerOptions::minInliers stereo matches, against whose
+stereo pair the frame before it registers (chance matches of unrelated images do not), begins a new
+map (FrameStatus::Restarted), placed at the last pose known, and the frames after it are tracked in
+that map. While more than one map holds frames, each new keyframe looks for a place of another map;
+when one registers it, the two maps are joined: the newer map's poses are moved by the rigid motion
+that takes the frame's pose in it to its pose through the place, and its frames take the older
+map's index (FrameResult::map).
 
 A registered frame becomes a keyframe when the median angle its inlier structure (triangulated from
 A's stereo pair) subtends between A's left camera and its own is at least
@@ -86,7 +104,15 @@ private:
     void link(FeatureKind kind, int from, int to, const std::vector<std::pair<int, int>>& matches);
     void linkToRecent(int frame, const FrameFeatures& left);
     Attempt registerAgainst(int keyframe, int frame) const;
-    FrameResult finishFrame(int frame, double startSeconds);
+    //! The registration of @p frame through the place of a keyframe for which @p eligible holds;
+    //! @p keyframe is set to that keyframe. The store keeps the links of a registration only.
+    Attempt registerAtPlace(int frame, const FrameFeatures& left, const std::function<bool(int)>& eligible,
+                            int& keyframe);
+    //! Frame @p frame begins a new map at the last pose known.
+    void restart(int frame);
+    //! Joins the map of frame @p frame and the map of @p keyframe, whose place gave the frame @p placePose.
+    void joinMaps(int frame, int keyframe, const CameraPose& placePose);
+    FrameResult finishFrame(int frame, const FrameFeatures& left, double startSeconds);
 
     TrackerOptions options_;
     Eigen::Matrix3d K_[2];
@@ -100,6 +126,12 @@ private:
     std::deque<std::pair<int, FrameFeatures>> recent_;
     //! The left features of the last keyframes (at most window), linked to past a longer gap.
     std::deque<std::pair<int, FrameFeatures>> keyframeFeatures_;
+    //! Every keyframe's left features and their retrieval sample, for finding its place again.
+    std::map<int, FrameFeatures> placeFeatures_;
+    KeyframeRetrieval retrieval_;
+    int lostRun_ = 0;            //!< Frames lost in a row up to the newest.
+    int numMaps_ = 1;            //!< Maps begun, the first included.
+    std::set<int> liveMaps_{ 0 }; //!< Maps that hold frames (not joined into another).
 };
 
 } // namespace tripose

@@ -16,6 +16,7 @@ void describeFrame(const StoredFrame& f, FrameResult& result)
     result.status = f.status;
     result.pose = f.pose;
     result.keyframe = f.keyframe;
+    result.map = f.map;
     result.pointTracks = f.pointTrack;
     result.lineTracks = f.lineTrack;
 }

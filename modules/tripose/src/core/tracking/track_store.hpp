@@ -23,6 +23,7 @@ struct StoredFrame
     FrameStatus status = FrameStatus::Lost;
     CameraPose pose; //!< Meaningful unless lost.
     bool keyframe = false;
+    int map = 0; //!< The map the pose is in (FrameResult::map).
     std::vector<Eigen::Vector2d> points;
     std::vector<Eigen::Vector4d> segments;
     std::vector<int> pointTrack, lineTrack; //!< Per feature, its track (-1: none).

@@ -69,6 +69,10 @@ enum class FrameStatus
     Given = 0,      //!< The pose came with the frame.
     Registered = 1, //!< Registered against the window of keyframes.
     Lost = 2,       //!< No pose: too few features shared with the window, or too few agree with a pose.
+    /** The stereo tracker, lost for more than TrackerOptions::maxFrameGap frames and finding no
+    keyframe's place in the frame, started a new map here: the frame is that map's first keyframe,
+    placed at the last pose known until a place of an earlier map joins them. */
+    Restarted = 3,
 };
 
 //! What the tracker made of one frame.
@@ -85,6 +89,11 @@ struct FrameResult
     //! The keyframe of a place seen before through which the frame was registered: a loop it closed,
     //! or where a lost camera was found again; -1 for neither.
     int recognisedKeyframe = -1;
+    /** The map the pose is in: 0, the world of the given poses, unless a stereo tracker restarted
+    (FrameStatus::Restarted) and has not yet joined the new map to an earlier one; when it does, the
+    new map's poses move into the earlier map (StereoTracker::frame() holds a frame's poses as they
+    are now). */
+    int map = 0;
     std::string reason;     //!< Why the frame is lost; empty otherwise.
     //! Per point and per segment of the frame, in the order given: its track (-1: matched to none).
     std::vector<int> pointTracks, lineTracks;
