@@ -8,6 +8,7 @@
 #include "stereo_tracker_bindings.hpp"
 #include "tracking_conversions.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,25 @@ void bindStereoTracker(nb::module_& m)
              nb::arg("right_point_descriptors"), nb::arg("right_point_width"), nb::arg("right_point_binary"),
              nb::arg("right_segments"), nb::arg("right_num_segments"), nb::arg("right_line_descriptors"),
              nb::arg("right_line_width"), nb::arg("right_line_binary"), nb::arg("R").none(), nb::arg("t").none())
+        .def("add_observations",
+             [](tripose::StereoTracker& self, const nb::bytes& points, const std::vector<int64_t>& pointIds,
+                const nb::bytes& rightPoints, const nb::bytes& segments, const std::vector<int64_t>& lineIds,
+                const nb::bytes& rightSegments, nb::handle R, nb::handle t) {
+                 tripose::StereoObservations o;
+                 o.points = vectors<2>(points, pointIds.size());
+                 o.pointIds = pointIds;
+                 o.rightPoints = vectors<2>(rightPoints, pointIds.size());
+                 o.segments = vectors<4>(segments, lineIds.size());
+                 o.lineIds = lineIds;
+                 o.rightSegments = vectors<4>(rightSegments, lineIds.size());
+                 const bool hasPose = !R.is_none();
+                 const tripose::CameraPose given =
+                     hasPose ? pose(nb::cast<nb::bytes>(R), nb::cast<nb::bytes>(t)) : tripose::CameraPose();
+                 nb::gil_scoped_release release;
+                 return self.addObservations(o, hasPose ? &given : nullptr);
+             },
+             nb::arg("points"), nb::arg("point_ids"), nb::arg("right_points"), nb::arg("segments"),
+             nb::arg("line_ids"), nb::arg("right_segments"), nb::arg("R").none(), nb::arg("t").none())
         .def_prop_ro("num_frames", &tripose::StereoTracker::numFrames)
         .def("pose", [](const tripose::StereoTracker& self, int frame) -> nb::object {
             checkFrame(self, frame);

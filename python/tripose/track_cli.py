@@ -17,8 +17,9 @@ matching). On the rendered courtyard (640x480) it takes a fraction of the full m
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
 by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG) and the local adjustment is always
 on; --window, --min-inliers, --threshold and --loop-closure apply as in the full mode,
---max-image-size, --contrast-threshold and --right do not (the points are followed in the full-size
-frames of one camera).
+--max-image-size and --contrast-threshold do not (the points are followed in the full-size frames).
+With --right it tracks the rig with tripose.video.StereoVideoTracker: each followed point is found
+in the right image by the same flow, and no pose is needed.
 
 calib.yml (OpenCV FileStorage YAML, JSON or XML) holds K (3x3), optionally dist (OpenCV's
 distortion coefficients), and the pose of frame 1 relative to frame 0 as R12 (3x3 rotation or
@@ -156,7 +157,7 @@ def _parser():
                         "the loop through it (a place check per keyframe)")
     p.add_argument("--mode", choices=("full", "video"), default="full",
                    help="full: features detected and matched in every frame (default); video: points followed "
-                        "by optical flow, detected afresh after keyframes (real time, monocular)")
+                        "by optical flow, detected afresh after keyframes (real time; with --right, a stereo rig)")
     p.add_argument("--max-image-size", type=_whole_number(0),
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
     p.add_argument("--contrast-threshold", type=_positive_number("number"),
@@ -545,6 +546,8 @@ def run_stereo(args) -> int:
             sources.append(images.open_frames(source))
         except ValueError as error:
             raise InputError(f"{option} {error}") from None
+    if args.mode == "video":
+        return run_stereo_video(args, (K, K_right), (dist, dist_right), (R12, t12), given, sources)
     feature_options = _feature_options(args)
 
     tracker, pixel_scale, options = None, 1.0, None
@@ -582,7 +585,7 @@ def run_stereo(args) -> int:
                        "reason": reason, "recognised_keyframe": result.recognised_keyframe})
         share = f"{result.inliers}/{result.features}"
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
-              + (f"  {reason}" if reason else ""), flush=True)
+              + (f"  {reason}" if reason else "") + _place_note(result), flush=True)
 
     for f in frames:
         f["map"] = tracker.map_of(f["frame"])  # as the maps stand at the end
@@ -608,6 +611,63 @@ def _write_outputs(args, pixel_scale, options, frames, poses):
           f"{len(rows)} poses written to {args.output}" + (f", the results to {args.yaml}" if args.yaml else ""))
 
 
+def _place_note(result) -> str:
+    """A frame line's note of the place seen before that registered the frame, if any."""
+    place = result.recognised_keyframe
+    return f"  (place of keyframe {place})" if place >= 0 else ""
+
+
+def _record_video_frame(frames, index, stamp, name, frame, unread: bool):
+    """Appends a video frame's outcome to frames and prints its line (times per stage)."""
+    result = frame.result
+    status, reason = result.status.name, result.reason
+    if unread and status == "LOST":
+        reason = "the image cannot be read or decoded"
+    frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
+                   "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
+                   "reason": reason, "recognised_keyframe": result.recognised_keyframe})
+    ms = frame.milliseconds
+    stages = " / ".join(f"{ms[stage]:.1f}" for stage in ms if stage != "total")
+    print(f"{index:>5}  {name:<28} {status:<10} {f'{result.inliers}/{result.features}':>16} {ms['total']:>7.1f}  "
+          f"{stages}" + (f"  {reason}" if reason else "") + _place_note(result), flush=True)
+
+
+def run_stereo_video(args, cameras, distortions, rig, given, sources) -> int:
+    """run_stereo() with --mode video: tripose.video.StereoVideoTracker on both sources in lockstep."""
+    import itertools
+
+    from . import video
+
+    options = video.VideoOptions(tracker=tracker_options(args, options=video.video_tracker_options()))
+    tracker = video.StereoVideoTracker(cameras[0], cameras[1], *rig, *distortions, options)
+    frames = []
+    print(f"{'frame':>5}  {'name':<28} {'status':<10} {'inliers/features':>16} {'ms':>7}  flow / detection / "
+          "stereo / registration ms")
+    ended = object()
+    for index, (left, right) in enumerate(itertools.zip_longest(*sources, fillvalue=ended)):
+        if left is ended or right is ended:
+            raise InputError(f"--images {args.images} and --right {args.right} hold different numbers of frames: "
+                             "a rig's two sources must hold the same number")
+        stamp, name, image = left
+        for (_, frame_name, frame_image), camera, option in ((left, cameras[0], "--images"),
+                                                             (right, cameras[1], "--right")):
+            if frame_image is None:
+                print(f"{PROGRAM}: frame {index} ({frame_name}, {option}): cannot be read or decoded", file=sys.stderr)
+            else:
+                check_image_fits(camera, frame_image.shape, index, frame_name, args.calib)
+        try:
+            frame = tracker.track(image, right[2], *(given[0] if index < len(given) else (None, None)))
+        except ValueError as error:
+            raise InputError(f"frame {index} ({name}): {error}") from None
+        _record_video_frame(frames, index, stamp, name, frame, image is None or right[2] is None)
+    if not frames:
+        raise InputError(f"--images {args.images}: holds no frames")
+    for f in frames:
+        f["map"] = tracker.tracker.map_of(f["frame"])  # as the maps stand at the end
+    _write_outputs(args, 1.0, options.tracker, frames, tracker.trajectory())
+    return 0
+
+
 def run_video(args, K, dist, given, source) -> int:
     """run() with --mode video: tripose.video.VideoTracker on the frames of one camera."""
     from . import video
@@ -627,17 +687,7 @@ def run_video(args, K, dist, given, source) -> int:
             frame = tracker.track(image, *(given[index] if index < len(given) else (None, None)))
         except ValueError as error:
             raise InputError(f"frame {index} ({name}): {error}") from None
-        result = frame.result
-        status, reason = result.status.name, result.reason
-        if image is None and status == "LOST":
-            reason = "the image cannot be read or decoded"
-        frames.append({"frame": index, "name": name, "timestamp": stamp, "status": STATUS_CODES[status],
-                       "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
-                       "reason": reason, "recognised_keyframe": result.recognised_keyframe})
-        ms = frame.milliseconds
-        print(f"{index:>5}  {name:<28} {status:<10} {f'{result.inliers}/{result.features}':>16} {ms['total']:>7.1f}  "
-              f"{ms['flow']:.1f} / {ms['detection']:.1f} / {ms['registration']:.1f}" + (f"  {reason}" if reason else ""),
-              flush=True)
+        _record_video_frame(frames, index, stamp, name, frame, image is None)
         index += 1
     if index == 0:
         raise InputError(f"--images {args.images}: holds no frames")
@@ -656,15 +706,13 @@ def run(args) -> int:
         _check_writable(args.yaml, "--yaml")
         if args.yaml.resolve() == args.output.resolve():
             raise InputError(f"--yaml {args.yaml}: the same file as --output")
-    if args.right is not None:
-        if args.mode == "video":
-            raise InputError("--mode video: not available with --right (the video mode tracks one camera)")
-        return run_stereo(args)
     if args.mode == "video" and args.max_image_size is not None:
         raise InputError("--max-image-size: not used by --mode video (the points are followed in the full-size "
                          "frames)")
     if args.mode == "video" and args.contrast_threshold is not None:
         raise InputError("--contrast-threshold: not used by --mode video (its points are corners, not SIFT's)")
+    if args.right is not None:
+        return run_stereo(args)
     K, dist, relative = read_calibration(args.calib)
     if args.poses is not None:
         given = read_initial_poses(args.poses)
@@ -711,10 +759,8 @@ def run(args) -> int:
                        "keyframe": bool(result.keyframe), "features": result.features, "inliers": result.inliers,
                        "reason": reason, "recognised_keyframe": result.recognised_keyframe})
         share = f"{result.inliers}/{result.features}"
-        place = frames[-1]["recognised_keyframe"]
         print(f"{index:>5}  {name:<28} {status:<10} {share:>16} {result.milliseconds:>7.0f}"
-              + (f"  {reason}" if reason else "") + (f"  (place of keyframe {place})" if place >= 0 else ""),
-              flush=True)
+              + (f"  {reason}" if reason else "") + _place_note(result), flush=True)
         if index == 1 and features is not None:
             matches, agreeing = tracker.given_pair_agreement
             if matches >= _AGREEMENT_MIN_MATCHES and agreeing < _AGREEMENT_MIN_FRACTION * matches:
@@ -747,8 +793,6 @@ def run(args) -> int:
     if args.poses is not None and len(given) > len(frames):
         print(f"{args.poses}: {len(given)} poses for {len(frames)} frames; the rest are not used.")
 
-    for f in frames:
-        f["map"] = tracker.map_of(f["frame"])  # as the maps stand at the end
     _write_outputs(args, pixel_scale, options, frames, tracker.trajectory())
     return 0
 

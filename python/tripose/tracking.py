@@ -324,6 +324,40 @@ class StereoTracker:
         R, t = _pose(R, t)
         return self._tracker.add_frame(*_feature_bytes(left), *_feature_bytes(right), *_pose_bytes(R, t))
 
+    def track_observations(self, points: Any, point_ids: Any, right_points: Any, segments: Any = None,
+                           line_ids: Any = None, right_segments: Any = None, R: Any = None,
+                           t: Any = None) -> FrameResult:
+        """The next frame from observations of tracks the caller linked (a video's points followed
+        by optical flow): the left image's points (N, 2) with point_ids (N integers) and
+        right_points (N, 2), each point's position in the right image (a NaN row where the right
+        camera does not see it); segments (M, 4) with line_ids and right_segments (M, 4, the same
+        line's end points in the right image, any pair; NaN rows for none). An id names the same
+        feature in every frame. No descriptors, so no place is recognised: a tracker fed this way
+        restarts after a long loss without joining its maps. A tracker takes either features
+        (track) or observations."""
+        points = _rows(points, "points", 2)
+        segments = _rows(segments, "segments", 4)
+        right_points = _rows(right_points, "right_points", 2)
+        right_segments = _rows(right_segments, "right_segments", 4)
+        ids = []
+        for value, name, n in ((point_ids, "point_ids", len(points)), (line_ids, "line_ids", len(segments))):
+            a = np.zeros(0, np.int64) if value is None else np.asarray(value)
+            if a.size and not np.issubdtype(a.dtype, np.integer):
+                raise TypeError(f"{name} must be integers, got {a.dtype}")
+            a = np.ascontiguousarray(a.reshape(-1), dtype=np.int64)
+            if len(a) != n:
+                raise ValueError(f"{name} must hold one id per feature: {len(a)} ids for {n} features")
+            ids.append(a)
+        for rows, name, n in ((right_points, "right_points", len(points)),
+                              (right_segments, "right_segments", len(segments))):
+            if len(rows) != n:
+                raise ValueError(f"{name} must hold one row per left feature (NaN: not seen): {len(rows)} rows "
+                                 f"for {n}")
+        R, t = _pose(R, t)
+        return self._tracker.add_observations(points.tobytes(), ids[0].tolist(), right_points.tobytes(),
+                                              segments.tobytes(), ids[1].tolist(), right_segments.tobytes(),
+                                              *_pose_bytes(R, t))
+
     @property
     def num_frames(self) -> int:
         """Frames given so far."""

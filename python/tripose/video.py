@@ -25,16 +25,21 @@ from typing import Any, Dict, Optional
 
 import numpy as np
 
-from .tracking import FrameResult, Tracker, TrackerOptions
+from .tracking import FrameResult, StereoTracker, Tracker, TrackerOptions
 
-__all__ = ["VideoOptions", "VideoFrame", "VideoTracker", "video_tracker_options"]
+__all__ = ["VideoOptions", "VideoFrame", "VideoTracker", "StereoVideoTracker", "video_tracker_options"]
 
 # A video's frames are close: keyframes are spaced by this parallax (deg) instead of the full mode's
 # 0.1 (a keyframe at nearly every frame, each triangulating from the narrow baselines of the last).
 VIDEO_KEYFRAME_PARALLAX_DEG = 0.5
 
-# The stages a VideoFrame times, in the order they run.
+# The stages a VideoFrame times, in the order they run (a stereo rig's adds the right image's).
 STAGES = ("flow", "detection", "registration")
+STEREO_STAGES = ("flow", "detection", "stereo", "registration")
+
+# A point found in the right image farther than this (px) from its epipolar line is not the left
+# point: the flow slid along an edge or onto a repeated texture.
+EPIPOLAR_TOLERANCE_PX = 2.0
 
 
 def video_tracker_options() -> TrackerOptions:
@@ -133,6 +138,11 @@ class VideoTracker:
     """
 
     def __init__(self, K: Any, dist: Any = None, options: Optional[VideoOptions] = None):
+        options = self._start(options)
+        self._tracker = Tracker(K, dist, options.tracker)
+
+    def _start(self, options: Optional[VideoOptions]) -> VideoOptions:
+        """The checked options, OpenCV, and no feature followed yet."""
         if options is None:
             options = VideoOptions()
         if not isinstance(options, VideoOptions):
@@ -140,7 +150,6 @@ class VideoTracker:
         options.check()
         self._cv2 = _cv2()
         self._options = options
-        self._tracker = Tracker(K, dist, options.tracker)
         self._previous: Optional[np.ndarray] = None
         self._points = np.zeros((0, 2), np.float32)
         self._point_ids = np.zeros(0, np.int64)
@@ -151,6 +160,7 @@ class VideoTracker:
         cv2 = self._cv2
         self._flow_arguments = dict(winSize=(options.window_size, options.window_size), maxLevel=options.pyramid_levels,
                                     criteria=(cv2.TERM_CRITERIA_EPS | cv2.TERM_CRITERIA_COUNT, 30, 0.01))
+        return options
 
     @property
     def options(self) -> VideoOptions:
@@ -169,20 +179,20 @@ class VideoTracker:
         """Every frame's current pose, in order: a list of (R, t), None for a lost frame."""
         return self._tracker.trajectory()
 
-    def _grey(self, image: Any) -> Optional[np.ndarray]:
+    def _grey(self, image: Any, name: str = "image") -> Optional[np.ndarray]:
         if image is None:
             return None
         a = np.asarray(image)
         if a.dtype != np.uint8:
-            raise TypeError(f"image: expected 8-bit pixels (uint8), got {a.dtype}")
+            raise TypeError(f"{name}: expected 8-bit pixels (uint8), got {a.dtype}")
         if a.ndim == 3 and a.shape[2] in (3, 4):
             a = self._cv2.cvtColor(a, self._cv2.COLOR_BGR2GRAY if a.shape[2] == 3 else self._cv2.COLOR_BGRA2GRAY)
         elif a.ndim == 3 and a.shape[2] == 1:
             a = a[:, :, 0]
         if a.ndim != 2 or min(a.shape) < 2:
-            raise ValueError(f"image: expected a grey (H, W) or colour (H, W, 3) image, got shape {np.shape(image)}")
+            raise ValueError(f"{name}: expected a grey (H, W) or colour (H, W, 3) image, got shape {np.shape(image)}")
         if self._previous is not None and a.shape != self._previous.shape:
-            raise ValueError(f"image: shape {a.shape} differs from the frames before ({self._previous.shape})")
+            raise ValueError(f"{name}: shape {a.shape} differs from the frames before ({self._previous.shape})")
         return np.ascontiguousarray(a)
 
     def _follow(self, grey: np.ndarray):
@@ -250,36 +260,138 @@ class VideoTracker:
                 self._segments = np.vstack([self._segments, found])
                 self._line_ids = np.concatenate([self._line_ids, self._new_ids(len(found))])
 
-    def track(self, image: Any, R: Any = None, t: Any = None) -> VideoFrame:
-        """The next frame: an 8-bit grey or colour (BGR) image, None for a frame that could not be
-        read (it is lost, and the features are detected afresh in the next one). R, t: the frame's
-        pose when known (needed for the first two frames)."""
-        times = dict.fromkeys(STAGES, 0.0)
-        grey = self._grey(image)
+    def _advance(self, grey: Optional[np.ndarray], times: Dict[str, float]) -> bool:
+        """The followed features moved into grey (None: all dropped), topped up by a detection when
+        due; times gets the flow's and the detection's milliseconds. True when it detected."""
         clock = time.perf_counter()
         detected = False
         if grey is None:
-            self._previous, self._renew = None, True
-            self._points, self._point_ids = self._points[:0], self._point_ids[:0]
-            self._segments, self._line_ids = self._segments[:0], self._line_ids[:0]
-        else:
-            if self._previous is not None:
-                self._follow(grey)
-            now = time.perf_counter()
-            times["flow"], clock = 1e3 * (now - clock), now
-            detected = self._renew or len(self._points) < self._options.min_points
-            if detected:
-                self._detect(grey)
-            now = time.perf_counter()
-            times["detection"], clock = 1e3 * (now - clock), now
-            self._previous = grey
-        result = self._tracker.track_observations(self._points.astype(np.float64), self._point_ids,
-                                                  self._segments.astype(np.float64), self._line_ids, R, t)
-        times["registration"] = 1e3 * (time.perf_counter() - clock)
-        times["total"] = sum(times[s] for s in STAGES)
+            return detected  # the features are followed on from the last image read
+        if self._previous is not None:
+            self._follow(grey)
+        now = time.perf_counter()
+        times["flow"], clock = 1e3 * (now - clock), now
+        detected = self._renew or len(self._points) < self._options.min_points
+        if detected:
+            self._detect(grey)
+        times["detection"] = 1e3 * (time.perf_counter() - clock)
+        self._previous = grey
+        return detected
+
+    def _finish(self, result: FrameResult, unread: bool, times: Dict[str, float], detected: bool) -> VideoFrame:
+        times["total"] = sum(times.values())
         # The tracker tells a keyframe only once it has the frame: the next frame is detected afresh.
-        self._renew = bool(result.keyframe) or grey is None
+        self._renew = self._renew if unread else bool(result.keyframe)
+        if unread:
+            return VideoFrame(result, times, 0, 0, detected)
         return VideoFrame(result, times, len(self._points), len(self._segments), detected)
+
+    def _given(self, grey: Optional[np.ndarray]):
+        """The points, their ids, the segments and their ids a frame gives the tracker: none for an
+        image not read."""
+        if grey is None:
+            return np.zeros((0, 2)), np.zeros(0, np.int64), np.zeros((0, 4)), np.zeros(0, np.int64)
+        return (self._points.astype(np.float64), self._point_ids, self._segments.astype(np.float64),
+                self._line_ids)
+
+    def track(self, image: Any, R: Any = None, t: Any = None) -> VideoFrame:
+        """The next frame: an 8-bit grey or colour (BGR) image, None for a frame that could not be
+        read (it is lost, and the points followed before it are followed on into the next image).
+        R, t: the frame's pose when known (needed for the first two frames)."""
+        times = dict.fromkeys(STAGES, 0.0)
+        grey = self._grey(image)
+        detected = self._advance(grey, times)
+        clock = time.perf_counter()
+        result = self._tracker.track_observations(*self._given(grey), R, t)
+        times["registration"] = 1e3 * (time.perf_counter() - clock)
+        return self._finish(result, grey is None, times, detected)
+
+
+class StereoVideoTracker(VideoTracker):
+    """A stereo rig's video tracked in real time: the left camera's points (and optionally
+    segments) followed by optical flow as VideoTracker follows them, each found in the right image
+    by the same flow from the left image (kept when the flow back returns within
+    options.max_flow_error px and the point lies within 2 px of its epipolar line), and given with
+    their ids to a tripose.StereoTracker as observations. No pose is needed; the rig's baseline
+    gives the scale.
+
+    StereoVideoTracker(K_left, K_right, R, t, dist_left=None, dist_right=None, options=None): the
+    cameras' matrices, the rig (the right camera's pose relative to the left: x_right = R @ x_left
+    + t, t non-zero) and each camera's distortion coefficients, as tripose.StereoTracker takes
+    them; options a VideoOptions (its tracker options go to the StereoTracker). Each call of
+    track(left, right) returns a VideoFrame whose milliseconds add a "stereo" stage. Bad input
+    raises ValueError or TypeError naming the argument.
+    """
+
+    def __init__(self, K_left: Any, K_right: Any, R: Any, t: Any, dist_left: Any = None, dist_right: Any = None,
+                 options: Optional[VideoOptions] = None):
+        options = self._start(options)
+        self._tracker = StereoTracker(K_left, K_right, R, t, dist_left, dist_right, options.tracker)
+        rig_R, rig_t = self._tracker.rig
+        self._K = (np.asarray(K_left, np.float64), np.asarray(K_right, np.float64))
+        self._dist = tuple(None if d is None else np.asarray(d, np.float64).reshape(-1) for d in (dist_left, dist_right))
+        tx = np.array([[0, -rig_t[2], rig_t[1]], [rig_t[2], 0, -rig_t[0]], [-rig_t[1], rig_t[0], 0]])
+        self._F = np.linalg.inv(self._K[1]).T @ tx @ rig_R @ np.linalg.inv(self._K[0])
+
+    @property
+    def tracker(self) -> StereoTracker:
+        """The tripose.StereoTracker the observations go to (its pose(), map_of(), trajectory())."""
+        return self._tracker
+
+    def _undistorted(self, pixels: np.ndarray, camera: int) -> np.ndarray:
+        if self._dist[camera] is None or not np.any(self._dist[camera]):
+            return pixels.astype(np.float64)
+        return self._cv2.undistortPoints(pixels.reshape(-1, 1, 2).astype(np.float64), self._K[camera],
+                                         self._dist[camera], P=self._K[camera]).reshape(-1, 2)
+
+    def _in_right(self, grey: np.ndarray, right: np.ndarray, pixels: np.ndarray) -> np.ndarray:
+        """Each left pixel's position in the right image by the flow there and back; NaN where it
+        is not found, does not come back, or lies off its epipolar line."""
+        cv2, o = self._cv2, self._options
+        out = np.full((len(pixels), 2), np.nan)
+        if len(pixels) == 0:
+            return out
+        start = pixels.astype(np.float32).reshape(-1, 1, 2)
+        moved, found, _ = cv2.calcOpticalFlowPyrLK(grey, right, start, None, **self._flow_arguments)
+        back, returned, _ = cv2.calcOpticalFlowPyrLK(right, grey, moved, None, **self._flow_arguments)
+        moved, start = moved.reshape(-1, 2), start.reshape(-1, 2)
+        h, w = right.shape
+        kept = ((found.ravel() == 1) & (returned.ravel() == 1)
+                & (np.linalg.norm(back.reshape(-1, 2) - start, axis=1) <= o.max_flow_error)
+                & (moved[:, 0] >= 0) & (moved[:, 1] >= 0) & (moved[:, 0] <= w - 1) & (moved[:, 1] <= h - 1))
+        left_h = np.hstack([self._undistorted(start, 0), np.ones((len(start), 1))])
+        right_h = np.hstack([self._undistorted(moved, 1), np.ones((len(moved), 1))])
+        lines = left_h @ self._F.T
+        distance = np.abs(np.sum(lines * right_h, axis=1)) / np.maximum(np.hypot(lines[:, 0], lines[:, 1]), 1e-12)
+        kept &= distance <= EPIPOLAR_TOLERANCE_PX
+        out[kept] = moved[kept]
+        return out
+
+    def track(self, left: Any, right: Any, R: Any = None, t: Any = None) -> VideoFrame:
+        """The next stereo frame: the left and right 8-bit images (grey or BGR, the same size), None
+        for an image that could not be read: without the left one the frame is lost and the points
+        are followed on into the next image; without the right one they are registered as the left
+        camera sees them. R, t: the left camera's pose when known."""
+        times = dict.fromkeys(STEREO_STAGES, 0.0)
+        grey = self._grey(left, "left")
+        right_grey = self._grey(right, "right")
+        if grey is not None and right_grey is not None and right_grey.shape != grey.shape:
+            raise ValueError(f"right: shape {right_grey.shape} differs from the left image's ({grey.shape})")
+        detected = self._advance(grey, times)
+        clock = time.perf_counter()
+        points, point_ids, segments, line_ids = self._given(grey)
+        # Without the right image the frame's points are seen by the left camera only.
+        right_points = np.full((len(points), 2), np.nan)
+        right_segments = np.full((len(segments), 4), np.nan)
+        if grey is not None and right_grey is not None:
+            right_points = self._in_right(grey, right_grey, self._points)
+            right_segments = self._in_right(grey, right_grey, self._segments.reshape(-1, 2)).reshape(-1, 4)
+        times["stereo"] = 1e3 * (time.perf_counter() - clock)
+        clock = time.perf_counter()
+        result = self._tracker.track_observations(points, point_ids, right_points, segments, line_ids,
+                                                  right_segments, R, t)
+        times["registration"] = 1e3 * (time.perf_counter() - clock)
+        return self._finish(result, grey is None, times, detected)
 
 
 def _near_followed(candidates: np.ndarray, followed: np.ndarray, distance: float) -> np.ndarray:

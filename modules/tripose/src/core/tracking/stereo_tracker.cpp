@@ -188,10 +188,32 @@ void StereoTracker::linkToRecent(int frame, const FrameFeatures& left)
     link(FeatureKind::Line, from, frame, segments);
 }
 
+StoredFrame StereoTracker::newFrame(const CameraPose* pose) const
+{
+    StoredFrame frame;
+    frame.K = K_[0];
+    if (pose)
+    {
+        frame.pose = checkedPose(*pose, "R", "t");
+        frame.status = FrameStatus::Given;
+        frame.keyframe = true;
+    }
+    else if (numFrames() == 0)
+    {
+        // The first frame's left camera is the world's origin.
+        frame.status = FrameStatus::Given;
+        frame.keyframe = true;
+    }
+    return frame;
+}
+
 FrameResult StereoTracker::addFrame(const FrameFeatures& left, const FrameFeatures& right, const CameraPose* pose)
 {
     const double start = nowSeconds();
     const int index = numFrames();
+    if (byIds_)
+        fail(ErrorCode::BadArgument, "left: this tracker was given observations; a tracker takes either features or "
+             "observations");
     checkFeatures(left, "left", index);
     checkFeatures(right, "right", index);
     checkSameKind(left.pointDescriptors, right.pointDescriptors, "right.point_descriptors", "the left image");
@@ -205,20 +227,8 @@ FrameResult StereoTracker::addFrame(const FrameFeatures& left, const FrameFeatur
             checkSameKind(r.second.lineDescriptors, f->lineDescriptors, name + ".line_descriptors",
                           "an earlier frame");
         }
-    StoredFrame frame;
-    frame.K = K_[0];
-    if (pose)
-    {
-        frame.pose = checkedPose(*pose, "R", "t");
-        frame.status = FrameStatus::Given;
-        frame.keyframe = true;
-    }
-    else if (index == 0)
-    {
-        // The first frame's left camera is the world's origin.
-        frame.status = FrameStatus::Given;
-        frame.keyframe = true;
-    }
+    StoredFrame frame = newFrame(pose);
+    byFeatures_ = true;
 
     FrameFeatures undistorted[2] = { left, right };
     for (int c = 0; c < 2; ++c)
@@ -255,6 +265,87 @@ FrameResult StereoTracker::addFrame(const FrameFeatures& left, const FrameFeatur
         retrieval_.add(index, recent_.back().second);
     }
     return result;
+}
+
+FrameResult StereoTracker::addObservations(const StereoObservations& observations, const CameraPose* pose)
+{
+    const double start = nowSeconds();
+    const int index = numFrames();
+    if (byFeatures_)
+        fail(ErrorCode::BadArgument, "point_ids: this tracker was given features; a tracker takes either features or "
+             "observations");
+    const StereoObservations& o = observations;
+    if (o.pointIds.size() != o.points.size())
+        fail(ErrorCode::BadSize, "point_ids must hold one id per point: %d ids for %d points", (int)o.pointIds.size(),
+             (int)o.points.size());
+    if (o.lineIds.size() != o.segments.size())
+        fail(ErrorCode::BadSize, "line_ids must hold one id per segment: %d ids for %d segments", (int)o.lineIds.size(),
+             (int)o.segments.size());
+    if (o.rightPoints.size() != o.points.size())
+        fail(ErrorCode::BadSize, "right_points must hold one row per point (NaN: not seen): %d rows for %d points",
+             (int)o.rightPoints.size(), (int)o.points.size());
+    if (o.rightSegments.size() != o.segments.size())
+        fail(ErrorCode::BadSize, "right_segments must hold one row per segment (NaN: not seen): %d rows for %d "
+             "segments", (int)o.rightSegments.size(), (int)o.segments.size());
+    for (size_t i = 0; i < o.points.size(); ++i)
+        if (!o.points[i].allFinite())
+            fail(ErrorCode::BadArgument, "points[%d] of frame %d is not finite", (int)i, index);
+    for (size_t i = 0; i < o.segments.size(); ++i)
+        if (!o.segments[i].allFinite())
+            fail(ErrorCode::BadArgument, "segments[%d] of frame %d is not finite", (int)i, index);
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const std::vector<int64_t>& ids = kind == 0 ? o.pointIds : o.lineIds;
+        if (std::set<int64_t>(ids.begin(), ids.end()).size() != ids.size())
+            fail(ErrorCode::BadArgument, "%s: an id appears twice in one frame", kind == 0 ? "point_ids" : "line_ids");
+    }
+    StoredFrame frame = newFrame(pose);
+    byIds_ = true;
+
+    FrameFeatures left, right;
+    left.points = o.points;
+    left.segments = o.segments;
+    StereoFrame stereo;
+    stereo.pointRight.assign(o.points.size(), -1);
+    stereo.lineRight.assign(o.segments.size(), -1);
+    for (size_t i = 0; i < o.points.size(); ++i)
+        if (o.rightPoints[i].allFinite())
+        {
+            stereo.pointRight[i] = (int)right.points.size();
+            right.points.push_back(o.rightPoints[i]);
+        }
+    for (size_t i = 0; i < o.segments.size(); ++i)
+        if (o.rightSegments[i].allFinite())
+        {
+            stereo.lineRight[i] = (int)right.segments.size();
+            right.segments.push_back(o.rightSegments[i]);
+        }
+    if (distorted_[0])
+        undistort(distortion_[0], K_[0], left);
+    if (distorted_[1])
+        undistort(distortion_[1], K_[1], right);
+    stereo.points = right.points;
+    stereo.segments = right.segments;
+    frame.points = left.points;
+    frame.segments = left.segments;
+    frame.pointTrack.assign(o.points.size(), -1);
+    frame.lineTrack.assign(o.segments.size(), -1);
+    store_.frames.push_back(frame);
+    stereo_.push_back(std::move(stereo));
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const FeatureKind k = kKinds[kind];
+        const std::vector<int64_t>& ids = kind == 0 ? o.pointIds : o.lineIds;
+        std::map<int64_t, int>& idTrack = kind == 0 ? pointIdTrack_ : lineIdTrack_;
+        for (size_t i = 0; i < ids.size(); ++i)
+        {
+            auto it = idTrack.find(ids[i]);
+            const int track = it != idTrack.end() ? it->second : (idTrack[ids[i]] = store_.newTrack(k));
+            store_.observe(k, track, index, (int)i);
+        }
+    }
+    // Without descriptors no place is recognised: the frame is registered against the window only.
+    return finishFrame(index, FrameFeatures(), start);
 }
 
 StereoTracker::Attempt StereoTracker::registerAgainst(int keyframe, int frame) const

@@ -5,6 +5,7 @@
 #ifndef TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP
 #define TRIPOSE_CORE_TRACKING_STEREO_TRACKER_HPP
 
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <map>
@@ -68,6 +69,19 @@ registration rejects start new tracks. TrackerOptions::localAdjustment is not us
 Poses follow the library: x_cam = R X + t, X in the world frame; the pose of a frame is its left
 camera's, the right camera is at the rig composed with it.
 */
+/** One stereo frame's observations of tracks the caller linked: the left image's points and segments
+with their ids (an id seen in several frames is one feature of the scene), and per point and segment
+its position in the right image, NaN where the right camera does not see it. */
+struct StereoObservations
+{
+    std::vector<Eigen::Vector2d> points;
+    std::vector<int64_t> pointIds;
+    std::vector<Eigen::Vector4d> segments; //!< x0 y0 x1 y1.
+    std::vector<int64_t> lineIds;
+    std::vector<Eigen::Vector2d> rightPoints;   //!< One per point.
+    std::vector<Eigen::Vector4d> rightSegments; //!< One per segment: the same line's end points, any pair.
+};
+
 class StereoTracker
 {
 public:
@@ -81,6 +95,13 @@ public:
     /** The next stereo frame from the features of its left and right images. @p pose, when given,
     is the left camera's pose (status Given). */
     FrameResult addFrame(const FrameFeatures& left, const FrameFeatures& right, const CameraPose* pose = nullptr);
+
+    /** The next stereo frame from observations of tracks the caller linked (a video's points
+    followed by optical flow): no matching and no descriptors, so no place is recognised and a rig
+    lost for longer than TrackerOptions::maxFrameGap restarts without joining its maps. A tracker
+    takes either features or observations. Throws Error naming "point_ids", "line_ids",
+    "right_points", "right_segments", "points" or "segments". */
+    FrameResult addObservations(const StereoObservations& observations, const CameraPose* pose = nullptr);
 
     int numFrames() const { return (int)store_.frames.size(); }
     //! Frame @p frame's left camera: its pose, status, features and their tracks.
@@ -100,6 +121,9 @@ private:
         std::vector<int> pointRight, lineRight;
     };
     struct Attempt;
+
+    //! A frame's status and pose before registration: given (@p pose, or the first frame) or not.
+    StoredFrame newFrame(const CameraPose* pose) const;
 
     void link(FeatureKind kind, int from, int to, const std::vector<std::pair<int, int>>& matches);
     void linkToRecent(int frame, const FrameFeatures& left);
@@ -129,6 +153,9 @@ private:
     //! Every keyframe's left features and their retrieval sample, for finding its place again.
     std::map<int, FrameFeatures> placeFeatures_;
     KeyframeRetrieval retrieval_;
+    //! The tracks of the caller's ids (addObservations()), and which kind of input the tracker takes.
+    std::map<int64_t, int> pointIdTrack_, lineIdTrack_;
+    bool byFeatures_ = false, byIds_ = false;
     int lostRun_ = 0;            //!< Frames lost in a row up to the newest.
     int numMaps_ = 1;            //!< Maps begun, the first included.
     std::set<int> liveMaps_{ 0 }; //!< Maps that hold frames (not joined into another).
