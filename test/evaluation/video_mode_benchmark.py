@@ -9,9 +9,10 @@ errors (degrees, % of the ground-truth path), as a markdown table (doc/studies/f
 
 Sequences: the rendered courtyard (render_sequence.py; --folder holds one, or it is rendered into a
 temporary folder with --frames) and, with --temple-ring, Middlebury's templeRing in ring order (47
-views around an object, not a video: the flow between its views is large).
+views around an object, not a video: the flow between its views is large). With --stereo the
+rendered rig: tripose.video.StereoVideoTracker against tripose.StereoTracker, no pose given.
 
-    python test/evaluation/video_mode_benchmark.py [--folder DIR | --frames 300] [--temple-ring]
+    python test/evaluation/video_mode_benchmark.py [--folder DIR | --frames 300] [--stereo] [--temple-ring]
         [--modes video,full] [--segments] [--parallax DEG] [--no-local-adjustment]
 """
 import argparse
@@ -31,19 +32,27 @@ rs = render.rs
 
 import tripose  # noqa: E402
 from tripose import images  # noqa: E402
-from tripose.video import VideoOptions, VideoTracker  # noqa: E402
+from tripose.video import StereoVideoTracker, VideoOptions, VideoTracker  # noqa: E402
 
 
-def rendered(folder):
-    """(name, K, frames, ground truth [(R, t)], given poses of frames 0-1) of a rendered sequence."""
+def read_frames(folder, side):
+    names = [line.split()[1] for line in (folder / f"{side}.txt").read_text().splitlines() if line.strip()]
+    return [cv2.imread(str(folder / n), cv2.IMREAD_GRAYSCALE) for n in names]
+
+
+def rendered(folder, stereo=False):
+    """(name, K per frame, frames, ground truth [(R, t)]) of a rendered sequence; with @p stereo the
+    frames are (left, right) pairs."""
     fs = cv2.FileStorage(str(folder / "calib.yml"), cv2.FILE_STORAGE_READ)
     K = fs.getNode("K").mat()
     fs.release()
-    names = [line.split()[1] for line in (folder / "left.txt").read_text().splitlines() if line.strip()]
-    frames = [cv2.imread(str(folder / n), cv2.IMREAD_GRAYSCALE) for n in names]
+    frames = read_frames(folder, "left")
+    if stereo:
+        frames = list(zip(frames, read_frames(folder, "right")))
     _, Rs, ts = rs.read_tum(folder / "groundtruth.txt")
     truth = list(zip(Rs, ts))[:len(frames)]
-    return f"rendered courtyard, {len(frames)} frames", [K] * len(frames), frames, truth
+    kind = "rendered courtyard, stereo" if stereo else "rendered courtyard"
+    return f"{kind}, {len(frames)} frames", [K] * len(frames), frames, truth
 
 
 def temple_ring():
@@ -57,7 +66,28 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
     given = truth[:2]
     times, cpu, keyframes = [], [], 0
     stages = []
-    if mode == "video":
+    stereo = isinstance(frames[0], tuple)
+    if stereo:
+        # No pose given: the rig's baseline fixes the scale, frame 0's left camera the world.
+        R12, t12 = render.rig()
+        if mode == "video":
+            tracker = StereoVideoTracker(Ks[0], Ks[0], R12, t12, options=VideoOptions(segments=segments))
+        else:
+            tracker = tripose.StereoTracker(Ks[0], Ks[0], R12, t12)
+            options = images.FeatureOptions()
+        for k, (left, right) in enumerate(frames):
+            start, start_cpu = time.perf_counter(), time.process_time()
+            if mode == "video":
+                frame = tracker.track(left, right)
+                result = frame.result
+                stages.append(dict(frame.milliseconds, detected=frame.detected))
+            else:
+                result = tracker.track(images.extract_features(left, Ks[k], options=options),
+                                       images.extract_features(right, Ks[k], options=options))
+            times.append(1e3 * (time.perf_counter() - start))
+            cpu.append(1e3 * (time.process_time() - start_cpu))
+            keyframes += bool(result.keyframe)
+    elif mode == "video":
         options = VideoOptions(segments=segments)
         if parallax is not None:
             options.tracker.keyframe_parallax_deg = parallax
@@ -70,7 +100,7 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             times.append(frame.milliseconds["total"])
             stages.append(dict(frame.milliseconds, detected=frame.detected))
             keyframes += bool(frame.result.keyframe)
-    else:
+    if not stereo and mode != "video":
         tracker = tripose.Tracker(Ks[0])
         options = images.FeatureOptions()
         for k, image in enumerate(frames):
@@ -82,9 +112,10 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             keyframes += bool(result.keyframe)
     if stages:
         detections = sum(m["detected"] for m in stages)
+        stereo_stage = f", stereo {np.mean([m['stereo'] for m in stages]):.1f}" if "stereo" in stages[0] else ""
         print(f"video stages, mean ms per frame: flow {np.mean([m['flow'] for m in stages]):.1f}, detection "
               f"{np.mean([m['detection'] for m in stages]):.1f} (in {detections} frames, median "
-              f"{np.median([m['detection'] for m in stages if m['detected']]):.1f}), registration "
+              f"{np.median([m['detection'] for m in stages if m['detected']]):.1f}){stereo_stage}, registration "
               f"{np.mean([m['registration'] for m in stages]):.1f} (median {np.median([m['registration'] for m in stages]):.1f})",
               file=sys.stderr)
     return times, cpu, keyframes, tracker.trajectory()
@@ -107,6 +138,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--folder", type=Path, help="a rendered sequence (render_sequence.py --output)")
     parser.add_argument("--frames", type=int, default=render.LOOP_FRAMES, help="frames rendered without --folder")
+    parser.add_argument("--stereo", action="store_true", help="the rendered rig (a folder rendered with --stereo)")
     parser.add_argument("--temple-ring", action="store_true", help="also templeRing in ring order")
     parser.add_argument("--modes", default="video,full", help="comma-separated: video, full")
     parser.add_argument("--segments", action="store_true", help="the video mode follows segments too")
@@ -120,9 +152,9 @@ def main():
     with tempfile.TemporaryDirectory() as temporary:
         folder = args.folder or Path(temporary)
         if not (folder / "groundtruth.txt").is_file():
-            seconds = render.write_sequence(folder, args.frames, False)
+            seconds = render.write_sequence(folder, args.frames, args.stereo)
             print(f"rendered {args.frames} frames in {seconds:.0f} s", flush=True)
-        sequences = [rendered(folder)]
+        sequences = [rendered(folder, args.stereo)]
     if args.temple_ring:
         sequences.append(temple_ring())
     print("| sequence | mode | median ms (fps) | 90th percentile ms (fps) | median processor ms | keyframes | "
