@@ -34,6 +34,20 @@ def walk(tmp_path_factory):
     return frames, list(zip(Rs, ts)), folder
 
 
+def last_frame_errors(trajectory, truth):
+    """The last frame's rotation error (deg) and position error (% of the true path)."""
+    Rs, ts = zip(*truth)
+    R, t = trajectory[-1]
+    return (rs.rotation_error_deg(R, Rs[-1]),
+            100 * rs.position_error(R, t, Rs[-1], ts[-1]) / rs.path_length(Rs, ts))
+
+
+def assert_same_trajectory(trajectory, again):
+    for (R, t), (R2, t2) in zip(trajectory, again):
+        np.testing.assert_array_equal(R, R2)
+        np.testing.assert_array_equal(t, t2)
+
+
 def track(frames, truth, options=None):
     tracker = VideoTracker(render.K, options=options)
     results = [tracker.track(image, *(truth[k] if k < 2 else (None, None))) for k, image in enumerate(frames)]
@@ -50,15 +64,9 @@ def test_every_frame_registered_within_the_measured_bound(walk):
     assert all(f.points >= VideoOptions().min_points for f in results)
     assert results[0].detected and results[1].detected == bool(results[0].result.keyframe)
     assert all(set(f.milliseconds) == {"flow", "detection", "registration", "total"} for f in results)
-    Rs, ts = zip(*truth)
-    R, t = trajectory[-1]
-    rotation = rs.rotation_error_deg(R, Rs[-1])
-    position = 100 * rs.position_error(R, t, Rs[-1], ts[-1]) / rs.path_length(Rs, ts)
+    rotation, position = last_frame_errors(trajectory, truth)
     assert rotation < 0.675 and position < 3.25, (rotation, position)
-    _, again = track(frames, truth)
-    for (R, t), (R2, t2) in zip(trajectory, again):
-        np.testing.assert_array_equal(R, R2)
-        np.testing.assert_array_equal(t, t2)
+    assert_same_trajectory(trajectory, track(frames, truth)[1])
 
 
 def test_segments_followed_too(walk):
@@ -162,15 +170,9 @@ def test_stereo_every_frame_registered_within_the_measured_bound(stereo_walk):
     results, trajectory = track_stereo(left, right)
     assert [f.result.status for f in results] == [GIVEN] + [REGISTERED] * (FRAMES - 1)
     assert all(set(f.milliseconds) == {"flow", "detection", "stereo", "registration", "total"} for f in results)
-    Rs, ts = zip(*truth)
-    R, t = trajectory[-1]
-    rotation = rs.rotation_error_deg(R, Rs[-1])
-    position = 100 * rs.position_error(R, t, Rs[-1], ts[-1]) / rs.path_length(Rs, ts)
+    rotation, position = last_frame_errors(trajectory, truth)
     assert rotation < 0.12 and position < 0.58, (rotation, position)
-    _, again = track_stereo(left, right)
-    for (R, t), (R2, t2) in zip(trajectory, again):
-        np.testing.assert_array_equal(R, R2)
-        np.testing.assert_array_equal(t, t2)
+    assert_same_trajectory(trajectory, track_stereo(left, right)[1])
 
 
 def test_stereo_bad_images_raise_naming_the_camera(stereo_walk):

@@ -44,6 +44,20 @@ def _rows(value: Any, name: str, width: int) -> np.ndarray:
     return np.ascontiguousarray(a)
 
 
+def _ids(point_ids: Any, line_ids: Any, num_points: int, num_segments: int):
+    """The point and line ids as int64 arrays, one per point and per segment."""
+    ids = []
+    for value, name, n in ((point_ids, "point_ids", num_points), (line_ids, "line_ids", num_segments)):
+        a = np.zeros(0, np.int64) if value is None else np.asarray(value)
+        if a.size and not np.issubdtype(a.dtype, np.integer):
+            raise TypeError(f"{name} must be integers, got {a.dtype}")
+        a = np.ascontiguousarray(a.reshape(-1), dtype=np.int64)
+        if len(a) != n:
+            raise ValueError(f"{name} must hold one id per feature: {len(a)} ids for {n} features")
+        ids.append(a)
+    return ids
+
+
 def _descriptors(value: Any, name: str, rows: int) -> np.ndarray:
     """float32 rows (L2) or uint8 rows (Hamming), one per feature."""
     if value is None:
@@ -208,15 +222,7 @@ class Tracker:
         feature in every frame."""
         points = _rows(points, "points", 2)
         segments = _rows(segments, "segments", 4)
-        ids = []
-        for value, name, n in ((point_ids, "point_ids", len(points)), (line_ids, "line_ids", len(segments))):
-            a = np.zeros(0, np.int64) if value is None else np.asarray(value)
-            if a.size and not np.issubdtype(a.dtype, np.integer):
-                raise TypeError(f"{name} must be integers, got {a.dtype}")
-            a = np.ascontiguousarray(a.reshape(-1), dtype=np.int64)
-            if len(a) != n:
-                raise ValueError(f"{name} must hold one id per feature: {len(a)} ids for {n} features")
-            ids.append(a)
+        ids = _ids(point_ids, line_ids, len(points), len(segments))
         R, t = _pose(R, t)
         return self._tracker.add_observations(points.tobytes(), ids[0].tolist(), segments.tobytes(), ids[1].tolist(),
                                               *_pose_bytes(R, t), None if K is None else _camera(K).tobytes())
@@ -339,15 +345,7 @@ class StereoTracker:
         segments = _rows(segments, "segments", 4)
         right_points = _rows(right_points, "right_points", 2)
         right_segments = _rows(right_segments, "right_segments", 4)
-        ids = []
-        for value, name, n in ((point_ids, "point_ids", len(points)), (line_ids, "line_ids", len(segments))):
-            a = np.zeros(0, np.int64) if value is None else np.asarray(value)
-            if a.size and not np.issubdtype(a.dtype, np.integer):
-                raise TypeError(f"{name} must be integers, got {a.dtype}")
-            a = np.ascontiguousarray(a.reshape(-1), dtype=np.int64)
-            if len(a) != n:
-                raise ValueError(f"{name} must hold one id per feature: {len(a)} ids for {n} features")
-            ids.append(a)
+        ids = _ids(point_ids, line_ids, len(points), len(segments))
         for rows, name, n in ((right_points, "right_points", len(points)),
                               (right_segments, "right_segments", len(segments))):
             if len(rows) != n:
