@@ -48,6 +48,16 @@ def assert_same_trajectory(trajectory, again):
         np.testing.assert_array_equal(t, t2)
 
 
+def assert_program_wrote(output, trajectory):
+    """The program's TUM file holds every frame's pose of @p trajectory (camera to world, printed to
+    17 digits)."""
+    _, Rs, ts = rs.read_tum(output)
+    assert len(Rs) == FRAMES
+    for (R, t), R2, t2 in zip(trajectory, Rs, ts):
+        np.testing.assert_allclose(R2, R, atol=1e-9)
+        np.testing.assert_allclose(t2, t, atol=1e-9)
+
+
 def track(frames, truth, options=None):
     tracker = VideoTracker(render.K, options=options)
     results = [tracker.track(image, *(truth[k] if k < 2 else (None, None))) for k, image in enumerate(frames)]
@@ -97,11 +107,7 @@ def test_program_video_mode_gives_the_api_poses(walk, tmp_path, capsys):
     arguments = ["--images", str(folder / "left.txt"), "--calib", str(folder / "calib.yml"), "--output", str(output)]
     assert track_cli.main(arguments + ["--mode", "video"]) == 0
     assert "flow / detection / registration" in capsys.readouterr().out
-    stamps, Rs, ts = rs.read_tum(output)
-    assert len(stamps) == FRAMES
-    for (R, t), R2, t2 in zip(trajectory, Rs, ts):
-        np.testing.assert_allclose(R2, R, atol=1e-9)
-        np.testing.assert_allclose(t2, t, atol=1e-9)
+    assert_program_wrote(output, trajectory)
     for extra, named in ((["--max-image-size", "800"], "--max-image-size"),
                          (["--contrast-threshold", "0.01"], "--contrast-threshold")):
         assert track_cli.main(arguments + ["--mode", "video"] + extra) == 1
@@ -202,9 +208,4 @@ def test_program_stereo_video_mode_gives_the_api_poses(stereo_walk, tmp_path, ca
     assert track_cli.main(["--images", str(folder / "left.txt"), "--right", str(folder / "right.txt"), "--calib",
                            str(folder / "calib.yml"), "--output", str(output), "--mode", "video"]) == 0
     assert "flow / detection / stereo / registration" in capsys.readouterr().out
-    _, Rs, ts = rs.read_tum(output)
-    assert len(Rs) == FRAMES
-    # The program's TUM file holds the world-to-camera poses as camera-to-world, printed to 17 digits.
-    for (R, t), R2, t2 in zip(trajectory, Rs, ts):
-        np.testing.assert_allclose(R2, R, atol=1e-9)
-        np.testing.assert_allclose(t2, t, atol=1e-9)
+    assert_program_wrote(output, trajectory)
