@@ -259,6 +259,35 @@ def test_program_contrast_threshold_detects_as_the_api(tmp_path, fountain, small
     assert all(low > default for low, default in zip(counts[0.01][2:], counts[None][2:])), counts
 
 
+def test_program_global_adjustment_interval_as_the_api(tmp_path, fountain, small_fountain):
+    # --global-adjustment-interval 1 reaches TrackerOptions.global_adjustment_interval: the program's
+    # poses are the API's with it, and its YAML records it.
+    folder, calib = small_fountain
+    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
+    K = fs.getNode("K").mat()
+    fs.release()
+    paths = sorted(folder.iterdir())[:6]
+    listing = tmp_path / "frames.txt"
+    listing.write_text("".join(f"{p}\n" for p in paths))
+    output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
+    proc = run_cli("--images", listing, "--calib", calib, "--output", output, "--yaml", result_yaml,
+                   "--global-adjustment-interval", 1, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    fs = cv2.FileStorage(str(result_yaml), cv2.FILE_STORAGE_READ)
+    assert fs.getNode("global_adjustment_interval").real() == 1
+    fs.release()
+    options = cli_options(1.0)
+    options.global_adjustment_interval = 1
+    features = [images.extract_features(images.read_image(p), K) for p in paths]
+    results, trajectory = track(K, features, given_poses(fountain), options)
+    _, Rs, ts = rs.read_tum(output)
+    assert_same_poses(trajectory, Rs, ts, range(len(paths)))
+    output.unlink()
+    for bad in (("--global-adjustment-interval", "-1"), ("--right", folder, "--global-adjustment-interval", "1")):
+        proc = run_cli("--images", folder, "--calib", calib, "--output", output, *bad, cwd=tmp_path)
+        _fails(tmp_path, proc, "--global-adjustment-interval")
+
+
 def test_program_closes_loops_and_writes_the_recognised_keyframes(tmp_path, fountain, small_fountain):
     # --loop-closure on the reduced images: the program's poses and recognised keyframes are the API's
     # with loop_closure; without it no keyframe older than the window is looked for.

@@ -3,7 +3,7 @@
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
                   [--threshold PX] [--local-adjustment [0|1]] [--loop-closure [0|1]] [--max-image-size PX]
-                  [--contrast-threshold C] [--mode full | video]
+                  [--contrast-threshold C] [--global-adjustment-interval N] [--mode full | video]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
@@ -155,6 +155,9 @@ def _parser():
     p.add_argument("--loop-closure", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
                    help="after each keyframe, look for a place seen before among the older keyframes and close "
                         "the loop through it (a place check per keyframe)")
+    p.add_argument("--global-adjustment-interval", type=_whole_number(0), metavar="N",
+                   help="adjust every frame and the structure after each N keyframes (default 0: never); 1 with "
+                        "--contrast-threshold 0.01 is the most accurate on long sequences and the slowest")
     p.add_argument("--mode", choices=("full", "video"), default="full",
                    help="full: features detected and matched in every frame (default); video: points followed "
                         "by optical flow, detected afresh after keyframes (real time; with --right, a stereo rig)")
@@ -449,6 +452,8 @@ def tracker_options(args, pixel_scale: float = 1.0, options=None):
         options.ransac.threshold = args.threshold
     options.local_adjustment = options.local_adjustment or bool(args.local_adjustment)
     options.loop_closure = options.loop_closure or bool(args.loop_closure)
+    if args.global_adjustment_interval is not None:
+        options.global_adjustment_interval = args.global_adjustment_interval
     options.ransac.threshold *= pixel_scale
     options.matching.epipolar_distance *= pixel_scale
     return options
@@ -482,6 +487,7 @@ def _yaml_text(args, pixel_scale, options, frames, poses):
     fs.write("threshold", options.ransac.threshold)
     fs.write("local_adjustment", int(options.local_adjustment))
     fs.write("loop_closure", int(options.loop_closure))
+    fs.write("global_adjustment_interval", int(options.global_adjustment_interval))
     fs.write("pixel_scale", float(pixel_scale))
     fs.startWriteStruct("frames", cv2.FileNode_SEQ)
     for f, pose in zip(frames, poses):
@@ -530,6 +536,8 @@ def run_stereo(args) -> int:
         raise InputError("--local-adjustment: not available with --right (the stereo tracker has none)")
     if args.loop_closure:
         raise InputError("--loop-closure: not available with --right (the stereo tracker has none)")
+    if args.global_adjustment_interval:
+        raise InputError("--global-adjustment-interval: not available with --right (the stereo tracker has none)")
     (K, K_right), (dist, dist_right), (R12, t12) = read_stereo_calibration(args.calib)
     given = read_initial_poses(args.poses, minimum=1)[:1] if args.poses is not None else []
     try:

@@ -11,7 +11,7 @@ namespace tripose_samples {
 std::vector<std::string> trackerOptionNames(const std::string& localAdjustmentOption)
 {
     return { "--window", "--min-inliers", "--threshold", "--keyframe-parallax", "--seed", "--loop-closure",
-             localAdjustmentOption };
+             "--global-adjustment-interval", localAdjustmentOption };
 }
 
 bool parseSwitch(const std::string& arg, const std::string& value)
@@ -45,6 +45,8 @@ bool readTrackerOption(const std::string& arg, const std::string& value, const s
         params.ransac.seed = parseInteger(arg, value, -2147483647.0);
     else if (arg == "--loop-closure")
         params.loopClosure = parseSwitch(arg, value);
+    else if (arg == "--global-adjustment-interval")
+        params.globalAdjustmentInterval = parseInteger(arg, value, 0.0);
     else if (arg == localAdjustmentOption)
         params.localAdjustment = parseSwitch(arg, value);
     else

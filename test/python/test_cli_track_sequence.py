@@ -173,3 +173,24 @@ def test_loop_closure_writes_the_recognised_keyframes(tmp_path):
                     "--calib", SEQUENCE / "calib.yml", "--loop-closure", "1")
     expect_rejected(tmp_path, "--loop-closure", "--images", SEQUENCE / "images", "--calib", SEQUENCE / "calib.yml",
                     "--loop-closure", "2")
+
+
+def test_global_adjustment_interval_adjusts_and_stays_within_the_bounds(tmp_path):
+    # --global-adjustment-interval 1: every frame and the structure adjusted after each keyframe. The
+    # trajectory moves (the poses differ from the run without it) and stays within the bounds of
+    # test_loop_closure_writes_the_recognised_keyframes. Refused with --right and for a negative N.
+    trajectories = []
+    for interval in ("1", "0"):
+        proc, out = track(tmp_path, "--images", SEQUENCE / "images", "--calib", SEQUENCE / "calib.yml",
+                          "--global-adjustment-interval", interval, output=f"trajectory{interval}.txt")
+        assert proc.returncode == 0, proc.stderr
+        assert "11 frames: 2 given, 9 registered, 0 lost" in proc.stdout
+        per_frame = errors(out)
+        assert max(e[0] for e in per_frame) < 0.15 and max(e[1] for e in per_frame) < 0.2
+        trajectories.append(read_tum(out))
+    adjusted, plain = trajectories
+    assert any(np.abs(adjusted[s][1] - plain[s][1]).max() > 1e-9 for s in plain)
+    expect_rejected(tmp_path, "--global-adjustment-interval", "--images", SEQUENCE / "images", "--right",
+                    SEQUENCE / "images", "--calib", SEQUENCE / "calib.yml", "--global-adjustment-interval", "1")
+    expect_rejected(tmp_path, "--global-adjustment-interval", "--images", SEQUENCE / "images", "--calib",
+                    SEQUENCE / "calib.yml", "--global-adjustment-interval", "-1")
