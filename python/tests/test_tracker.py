@@ -227,17 +227,24 @@ def test_program_takes_the_first_poses_from_a_tum_file(tmp_path, fountain, small
     assert_same_poses(trajectory, Rs, ts, range(count))
 
 
+def first_frames(tmp_path, small_fountain, count):
+    """The reduced fountain's K, its first count image paths and a list file of them."""
+    folder, calib = small_fountain
+    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
+    K = fs.getNode("K").mat()
+    fs.release()
+    paths = sorted(folder.iterdir())[:count]
+    listing = tmp_path / "frames.txt"
+    listing.write_text("".join(f"{p}\n" for p in paths))
+    return K, paths, listing
+
+
 def test_program_contrast_threshold_detects_as_the_api(tmp_path, fountain, small_fountain):
     # --contrast-threshold reaches SIFT: the program's feature counts and poses are the API's with
     # FeatureOptions(contrast_threshold=...), and the lower threshold finds more in every tracked frame
     # (the given frames' features are not counted).
     folder, calib = small_fountain
-    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
-    K = fs.getNode("K").mat()
-    fs.release()
-    paths = sorted(folder.iterdir())[:5]
-    listing = tmp_path / "frames.txt"
-    listing.write_text("".join(f"{p}\n" for p in paths))
+    K, paths, listing = first_frames(tmp_path, small_fountain, 5)
     counts = {}
     for threshold in (None, 0.01):
         output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
@@ -263,12 +270,7 @@ def test_program_global_adjustment_interval_as_the_api(tmp_path, fountain, small
     # --global-adjustment-interval 1 reaches TrackerOptions.global_adjustment_interval: the program's
     # poses are the API's with it, and its YAML records it.
     folder, calib = small_fountain
-    fs = cv2.FileStorage(str(calib), cv2.FILE_STORAGE_READ)
-    K = fs.getNode("K").mat()
-    fs.release()
-    paths = sorted(folder.iterdir())[:6]
-    listing = tmp_path / "frames.txt"
-    listing.write_text("".join(f"{p}\n" for p in paths))
+    K, paths, listing = first_frames(tmp_path, small_fountain, 6)
     output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
     proc = run_cli("--images", listing, "--calib", calib, "--output", output, "--yaml", result_yaml,
                    "--global-adjustment-interval", 1, cwd=tmp_path)
