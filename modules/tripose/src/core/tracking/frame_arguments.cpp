@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 
 #include "../problem/problem_arguments.hpp"
 #include "../problem/view_set_builder.hpp"
@@ -49,6 +50,23 @@ bool readDistortion(const std::vector<double>& coefficients, const char* name, D
         distorted = distorted || coefficients[i] != 0;
     }
     return distorted;
+}
+
+void checkObservationIds(size_t numPoints, const std::vector<int64_t>& pointIds, size_t numSegments,
+                         const std::vector<int64_t>& lineIds)
+{
+    if (pointIds.size() != numPoints)
+        fail(ErrorCode::BadSize, "point_ids must hold one id per point: %d ids for %d points", (int)pointIds.size(),
+             (int)numPoints);
+    if (lineIds.size() != numSegments)
+        fail(ErrorCode::BadSize, "line_ids must hold one id per segment: %d ids for %d segments", (int)lineIds.size(),
+             (int)numSegments);
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        const std::vector<int64_t>& ids = kind == 0 ? pointIds : lineIds;
+        if (std::set<int64_t>(ids.begin(), ids.end()).size() != ids.size())
+            fail(ErrorCode::BadArgument, "%s: an id appears twice in one frame", kind == 0 ? "point_ids" : "line_ids");
+    }
 }
 
 } // namespace tripose

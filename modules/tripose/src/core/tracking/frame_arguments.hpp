@@ -7,6 +7,9 @@
 
 #include <vector>
 
+#include <cstdint>
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "../geometry/camera.hpp"
@@ -22,6 +25,11 @@ void checkCameraMatrix(const Eigen::Matrix3d& K, const char* name);
 
 //! The pose the caller gave, its rotation checked and made exact as every rotation argument is.
 CameraPose checkedPose(const CameraPose& pose, const char* Rname = "R", const char* tname = "t");
+
+/** Fails, naming "point_ids" or "line_ids", unless each holds one id per point (segment) and no id
+twice: the checks of the trackers' observations. */
+void checkObservationIds(size_t numPoints, const std::vector<int64_t>& pointIds, size_t numSegments,
+                         const std::vector<int64_t>& lineIds);
 
 //! @p coefficients (OpenCV's model: none, 4, 5, 8, 12 or 14) read into @p out; true when any is non-zero.
 bool readDistortion(const std::vector<double>& coefficients, const char* name, Distortion& out);

@@ -275,12 +275,7 @@ FrameResult StereoTracker::addObservations(const StereoObservations& observation
         fail(ErrorCode::BadArgument, "point_ids: this tracker was given features; a tracker takes either features or "
              "observations");
     const StereoObservations& o = observations;
-    if (o.pointIds.size() != o.points.size())
-        fail(ErrorCode::BadSize, "point_ids must hold one id per point: %d ids for %d points", (int)o.pointIds.size(),
-             (int)o.points.size());
-    if (o.lineIds.size() != o.segments.size())
-        fail(ErrorCode::BadSize, "line_ids must hold one id per segment: %d ids for %d segments", (int)o.lineIds.size(),
-             (int)o.segments.size());
+    checkObservationIds(o.points.size(), o.pointIds, o.segments.size(), o.lineIds);
     if (o.rightPoints.size() != o.points.size())
         fail(ErrorCode::BadSize, "right_points must hold one row per point (NaN: not seen): %d rows for %d points",
              (int)o.rightPoints.size(), (int)o.points.size());
@@ -293,12 +288,6 @@ FrameResult StereoTracker::addObservations(const StereoObservations& observation
     for (size_t i = 0; i < o.segments.size(); ++i)
         if (!o.segments[i].allFinite())
             fail(ErrorCode::BadArgument, "segments[%d] of frame %d is not finite", (int)i, index);
-    for (int kind = 0; kind < 2; ++kind)
-    {
-        const std::vector<int64_t>& ids = kind == 0 ? o.pointIds : o.lineIds;
-        if (std::set<int64_t>(ids.begin(), ids.end()).size() != ids.size())
-            fail(ErrorCode::BadArgument, "%s: an id appears twice in one frame", kind == 0 ? "point_ids" : "line_ids");
-    }
     StoredFrame frame = newFrame(pose);
     byIds_ = true;
 

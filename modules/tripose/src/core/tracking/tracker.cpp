@@ -209,18 +209,7 @@ FrameResult Tracker::addObservations(const std::vector<Eigen::Vector2d>& points,
     if (byFeatures_)
         fail(ErrorCode::BadArgument, "point_ids: this tracker was given features; a tracker takes either features or "
              "observations");
-    if (pointIds.size() != points.size())
-        fail(ErrorCode::BadSize, "point_ids must hold one id per point: %d ids for %d points", (int)pointIds.size(),
-             (int)points.size());
-    if (lineIds.size() != segments.size())
-        fail(ErrorCode::BadSize, "line_ids must hold one id per segment: %d ids for %d segments", (int)lineIds.size(),
-             (int)segments.size());
-    for (int kind = 0; kind < 2; ++kind)
-    {
-        const std::vector<int64_t>& ids = kind == 0 ? pointIds : lineIds;
-        if (std::set<int64_t>(ids.begin(), ids.end()).size() != ids.size())
-            fail(ErrorCode::BadArgument, "%s: an id appears twice in one frame", kind == 0 ? "point_ids" : "line_ids");
-    }
+    checkObservationIds(points.size(), pointIds, segments.size(), lineIds);
     byIds_ = true;
     const int frame = startFrame(points, segments, pose, K);
     for (int kind = 0; kind < 2; ++kind)
