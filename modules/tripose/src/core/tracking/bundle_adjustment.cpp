@@ -70,11 +70,15 @@ bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::ve
     return true;
 }
 
-int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& frames, double threshold)
+int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& among, const std::vector<int>& frames,
+                                 double threshold)
 {
+    std::vector<bool> splittable(frames.size(), false);
+    for (size_t v = 0; v < frames.size(); ++v)
+        splittable[v] = std::find(among.begin(), among.end(), frames[v]) != among.end();
     std::vector<int> features[2];
     for (int kind = 0; kind < 2; ++kind)
-        features[kind] = tracksSeenTwice(store, kKinds[kind], frames, frames);
+        features[kind] = tracksSeenTwice(store, kKinds[kind], among, frames);
     if (features[0].empty() && features[1].empty())
         return 0;
     const WindowProblem problem(store, frames, features, (int)frames.size());
@@ -86,6 +90,8 @@ int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& fram
         for (size_t i = 0; i < features[kind].size(); ++i)
             for (size_t v = 0; v < frames.size(); ++v)
             {
+                if (!splittable[v])
+                    continue;
                 const double e = errors[i * frames.size() + v];
                 // +inf: no structure to judge by; NaN: not seen.
                 if (std::isfinite(e) && e > threshold)
@@ -109,7 +115,7 @@ bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, con
         if (!adjustFrames(store, free, fixed, options))
             return adjusted;
         adjusted = true;
-        if (splitDisagreeingObservations(store, all, options.ransac.threshold) == 0)
+        if (splitDisagreeingObservations(store, free, all, options.ransac.threshold) == 0)
             break;
     }
     return adjusted;

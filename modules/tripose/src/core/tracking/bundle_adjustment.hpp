@@ -20,16 +20,19 @@ two frames at distinct centres.
 bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
                   const TrackerOptions& options);
 
-/** Splits off every observation, in @p frames, of the tracks seen at least twice there whose
-reprojection error at the structure triangulated from those frames (with their current poses)
-exceeds @p threshold px: a wrong link leaves its track, which then agrees with the poses again.
-Returns the number of observations split off.
+/** Splits off every observation in frames @p among (a subset of @p frames) of the tracks seen by one
+of @p among and at least twice in @p frames whose reprojection error at the structure triangulated
+from @p frames (with their current poses) exceeds @p threshold px: a wrong link leaves its track,
+which then agrees with the poses again, while the observations in the other frames stay, for they
+hold the structure where the poses were before. Returns the number of observations split off.
 */
-int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& frames, double threshold);
+int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& among, const std::vector<int>& frames,
+                                 double threshold);
 
-/** adjustFrames(), then splitDisagreeingObservations() over every frame involved at the RANSAC
-threshold, repeated while observations are split, at most @p rounds times: a bundle adjustment that
-is not pulled by the wrong links it finds. False when the first adjustment fails. */
+/** adjustFrames(), then splitDisagreeingObservations() of the observations in @p free, judged over
+every frame involved, at the RANSAC threshold, repeated while observations are split, at most @p rounds times: a
+bundle adjustment that is not pulled by the wrong links it finds. False when the first adjustment
+fails. */
 bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
                             const TrackerOptions& options, int rounds);
 

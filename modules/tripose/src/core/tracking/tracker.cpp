@@ -26,6 +26,9 @@ namespace {
 // pose by more than this rotation (radians) or this share of the distance to the place's keyframe.
 const double kLoopAngle = 0.1 * M_PI / 180.0;
 const double kLoopShift = 0.002;
+// Every adjustment splits off the observations that disagree with its result and adjusts again, at
+// most this many times in all: rounds after the first remove the wrong links the first one hid.
+const int kAdjustmentRounds = 3;
 
 //! The pose of frame b relative to frame a.
 CameraPose relativePose(const CameraPose& a, const CameraPose& b)
@@ -296,14 +299,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
         {
             const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
             for (int track : kind == 0 ? r.rejectedPoints : r.rejectedLines)
-            {
-                const int row = store_.rowIn(k, track, frame);
-                const int newTrack = store_.split(k, frame, row);
-                // The caller's id now names the new track in the frames that follow.
-                if (byIds_)
-                    (kind == 0 ? pointIdTrack_ : lineIdTrack_)[(kind == 0 ? pointIdsOfFrame_
-                                                                          : lineIdsOfFrame_)[frame][row]] = newTrack;
-            }
+                store_.split(k, frame, store_.rowIn(k, track, frame));
         }
         if (options_.localAdjustment)
         {
@@ -315,9 +311,20 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
             for (int j = 0; j < frame; ++j)
                 if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
                     fixed.push_back(j);
-            runCatchingInputErrors([&] { adjustFrames(store_, free, fixed, options_); });
+            runCatchingInputErrors([&] { adjustAndSplitOutliers(store_, free, fixed, options_, kAdjustmentRounds); });
         }
+        if (byIds_)
+            continueIdsInFrameTracks(frame);
     }
+}
+
+void Tracker::continueIdsInFrameTracks(int frame)
+{
+    const StoredFrame& f = store_.frames[frame];
+    for (size_t row = 0; row < f.pointTrack.size(); ++row)
+        pointIdTrack_[pointIdsOfFrame_[frame][row]] = f.pointTrack[row];
+    for (size_t row = 0; row < f.lineTrack.size(); ++row)
+        lineIdTrack_[lineIdsOfFrame_[frame][row]] = f.lineTrack[row];
 }
 
 void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result)
@@ -415,9 +422,7 @@ void Tracker::adjustFramesAfter(int first)
     }
     if (fixed.size() < 2 || free.empty())
         return;
-    // Rounds after the first split off the wrong links that the first adjustment hid.
-    const int rounds = 3;
-    runCatchingInputErrors([&] { adjustAndSplitOutliers(store_, free, fixed, options_, rounds); });
+    runCatchingInputErrors([&] { adjustAndSplitOutliers(store_, free, fixed, options_, kAdjustmentRounds); });
 }
 
 } // namespace tripose
