@@ -286,7 +286,7 @@ void bindOptions(nb::module_& m)
                 "registration rejects.")
         .def_rw("local_adjustment", &tripose::TrackerOptions::localAdjustment,
                 "Refine the window's registered frames and their structure after each registration, splitting "
-                "off the observations that disagree with the result.")
+                "off the features matched by the tracker that disagree with the result.")
         .def_rw("loop_closure", &tripose::TrackerOptions::loopClosure,
                 "After each new keyframe, look for a place seen before among the keyframes older than the "
                 "window (by descriptors); registered against it, join the tracks, spread the correction and "

@@ -232,7 +232,7 @@ class TrackerOptions:
     @property
     def local_adjustment(self) -> bool:
         """
-        Refine the window's registered frames and their structure after each registration, splitting off the observations that disagree with the result.
+        Refine the window's registered frames and their structure after each registration, splitting off the features matched by the tracker that disagree with the result.
         """
 
     @local_adjustment.setter

@@ -34,7 +34,8 @@ struct CV_EXPORTS TrackerParams
     the RANSAC threshold are dropped; after it, the features it rejects start new tracks (default true). */
     bool checkTracks;
     //! After each registration, refine the window's registered frames and their structure against the
-    //! earlier keyframes, splitting off the observations that disagree with the result (default false).
+    //! earlier keyframes, splitting off the features matched by the tracker that disagree with the
+    //! result (default false).
     bool localAdjustment;
     /** After each new keyframe, look for a place seen before among the keyframes older than the
     window (by their descriptors); when the frame registers against one, its tracks join theirs, and

@@ -105,7 +105,7 @@ int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& amon
 }
 
 bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                            const TrackerOptions& options, int rounds)
+                            const std::vector<int>& splitIn, const TrackerOptions& options, int rounds)
 {
     std::vector<int> all = fixed;
     all.insert(all.end(), free.begin(), free.end());
@@ -115,7 +115,7 @@ bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, con
         if (!adjustFrames(store, free, fixed, options))
             return adjusted;
         adjusted = true;
-        if (splitDisagreeingObservations(store, free, all, options.ransac.threshold) == 0)
+        if (splitDisagreeingObservations(store, splitIn, all, options.ransac.threshold) == 0)
             break;
     }
     return adjusted;

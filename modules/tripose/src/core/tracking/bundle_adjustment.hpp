@@ -29,12 +29,12 @@ hold the structure where the poses were before. Returns the number of observatio
 int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& among, const std::vector<int>& frames,
                                  double threshold);
 
-/** adjustFrames(), then splitDisagreeingObservations() of the observations in @p free, judged over
-every frame involved, at the RANSAC threshold, repeated while observations are split, at most @p rounds times: a
-bundle adjustment that is not pulled by the wrong links it finds. False when the first adjustment
-fails. */
+/** adjustFrames(), then splitDisagreeingObservations() of the observations in frames @p splitIn (of
+@p free; none: the adjustment alone), judged over every frame involved, at the RANSAC threshold,
+repeated while observations are split, at most @p rounds times: a bundle adjustment that is not
+pulled by the wrong links it finds. False when the first adjustment fails. */
 bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                            const TrackerOptions& options, int rounds);
+                            const std::vector<int>& splitIn, const TrackerOptions& options, int rounds);
 
 } // namespace tripose
 
