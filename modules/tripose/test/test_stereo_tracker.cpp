@@ -5,7 +5,8 @@
 // cv::tripose::StereoTracker on a synthetic stereo sequence: points and segments of a 3D scene seen
 // by a rig moving along a smooth path, 0.5 px noise, a descriptor per 3D feature with noise per
 // observation. Every frame registered at metric scale with no pose given; frames of noise lost and
-// the next ones registered; bad input named.
+// the next ones registered; a rig lost for long restarts a map and joins it to the first, failed
+// place attempts on the way leaving the tracker as it was; bad input named.
 
 #include "test_precomp.hpp"
 
@@ -85,6 +86,46 @@ struct StereoSequence
         lineDescriptors.create((int)segments.size(), kDescriptorLength, CV_32F);
         rng.fill(pointDescriptors, RNG::UNIFORM, 0.0, 1.0);
         rng.fill(lineDescriptors, RNG::UNIFORM, 0.0, 1.0);
+    }
+
+    /** Points and segments on a cylinder 8-16 m around the origin, all round, and no frame yet: a rig
+    facing one way sees nothing of what it sees facing the other way. */
+    static StereoSequence surrounding(uint64 seed)
+    {
+        StereoSequence s(0, seed);
+        RNG rng(seed + 1);
+        const auto around = [&]() {
+            const double azimuth = rng.uniform(0.0, 2 * CV_PI), radius = rng.uniform(8.0, 16.0);
+            return Vec3d(radius * std::sin(azimuth), rng.uniform(-3.0, 3.0), radius * std::cos(azimuth));
+        };
+        s.points.clear();
+        s.segments.clear();
+        for (int i = 0; i < 1500; ++i)
+            s.points.push_back(around());
+        for (int i = 0; i < 300; ++i)
+        {
+            const Vec3d a = around();
+            Vec3d d(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
+            d *= rng.uniform(0.8, 2.0) / cv::norm(d);
+            s.segments.emplace_back(a, a + d);
+        }
+        s.pointDescriptors.create((int)s.points.size(), kDescriptorLength, CV_32F);
+        s.lineDescriptors.create((int)s.segments.size(), kDescriptorLength, CV_32F);
+        rng.fill(s.pointDescriptors, RNG::UNIFORM, 0.0, 1.0);
+        rng.fill(s.lineDescriptors, RNG::UNIFORM, 0.0, 1.0);
+        return s;
+    }
+
+    //! A frame whose left camera at @p centre looks along the azimuth @p yawDeg; its index.
+    int add(double yawDeg, const Vec3d& centre)
+    {
+        Pose p;
+        p.R = rotation(0, yawDeg * CV_PI / 180, 0).t();
+        p.t = -(p.R * centre);
+        if (!poses.empty())
+            pathLength += cv::norm(centre - poses.back().centre());
+        poses.push_back(p);
+        return (int)poses.size() - 1;
     }
 
     Pose rightPose(int k) const
@@ -243,6 +284,81 @@ TEST(Tripose_StereoTracker, frames_of_noise_are_lost_and_the_next_ones_register)
         const Errors e = poseErrors(r, seq.poses[k]);
         EXPECT_LT(e.rotationDeg, kRotationBoundDeg) << "frame " << k;
         EXPECT_LT(e.position, kPositionBound * seq.pathLength) << "frame " << k;
+    }
+}
+
+TEST(Tripose_StereoTracker, a_rig_lost_for_long_restarts_and_joins_its_maps)
+{
+    // Eight frames facing north, then the first frame's view mirrored (its descriptors match keyframe
+    // 0's, under an epipolar geometry, but no pose puts its points where they are: the place attempt
+    // fails and must leave the tracker as it was), four of noise, then the rig faces south, where no
+    // keyframe looks: it
+    // restarts a map there, turns back north in steps of 8 deg and, on seeing the first frames' place,
+    // joins the new map to the first. On the way its keyframes look for the first map's places, and
+    // the attempts that fail leave the tracker as it was.
+    StereoSequence scene = StereoSequence::surrounding(11);
+    RNG rng(12);
+    Ptr<StereoTracker> tracker = makeTracker(scene);
+    std::vector<TrackedFrame> results;
+    std::vector<int> sceneFrame; // per tracked frame, its pose in scene.poses; -1 for noise
+    const auto track = [&](int k) {
+        sceneFrame.push_back(k);
+        results.push_back(k < 0 ? tracker->addFrame(noiseFeatures(rng, 300, 60), noiseFeatures(rng, 300, 60))
+                                : tracker->addFrame(scene.observe(scene.poses[k], rng, 0.5),
+                                                    scene.observe(scene.rightPose(k), rng, 0.5)));
+    };
+    const auto mirrored = [](ImageFeatures f) {
+        for (int i = 0; i < f.points.rows; ++i)
+            f.points.at<double>(i, 0) = kWidth - f.points.at<double>(i, 0);
+        for (int i = 0; i < f.segments.rows; ++i)
+            for (int c : { 0, 2 })
+                f.segments.at<double>(i, c) = kWidth - f.segments.at<double>(i, c);
+        return f;
+    };
+    for (int k = 0; k < 8; ++k)
+        track(scene.add(3.0 * k, Vec3d(0.05 * k, 0, 0.1 * k)));
+    sceneFrame.push_back(-1);
+    results.push_back(tracker->addFrame(mirrored(scene.observe(scene.poses[0], rng, 0.5)),
+                                        mirrored(scene.observe(scene.rightPose(0), rng, 0.5))));
+    EXPECT_EQ(results.back().status, cv::tripose::FRAME_LOST);
+    for (int k = 0; k < 4; ++k)
+        track(-1);
+    for (int k = 0; k < 52; ++k)
+        track(scene.add(180.0 + 8.0 * k, Vec3d(0.35 + 0.02 * k, 0, 0.7 - 0.02 * k)));
+
+    for (int i = 1; i < 8; ++i)
+        ASSERT_EQ(results[i].status, cv::tripose::FRAME_REGISTERED) << "frame " << i << ": " << results[i].reason;
+    int restart = -1, join = -1;
+    for (int i = 8; i < (int)results.size(); ++i)
+    {
+        if (restart < 0 && results[i].status == cv::tripose::FRAME_RESTARTED)
+            restart = i;
+        else if (restart >= 0 && join < 0 && results[i].recognisedKeyframe >= 0)
+            join = i;
+    }
+    ASSERT_GE(restart, 13) << "noise restarted a map";
+    ASSERT_GT(join, restart + 1) << "the new map never joined the first";
+    EXPECT_EQ(results[restart].map, 1);
+    EXPECT_EQ(results[results[join].recognisedKeyframe].map, 0);
+    for (int i = restart + 1; i < (int)results.size(); ++i)
+        EXPECT_EQ(results[i].status, cv::tripose::FRAME_REGISTERED) << "frame " << i << ": " << results[i].reason;
+    // At the end every posed frame is in the first frame's world and matches the truth.
+    for (int i = 0; i < (int)results.size(); ++i)
+    {
+        Mat R, t;
+        if (sceneFrame[i] < 0 || (i < restart && i >= 8))
+        {
+            EXPECT_FALSE(tracker->getPose(i, R, t)) << "frame " << i;
+            continue;
+        }
+        ASSERT_TRUE(tracker->getPose(i, R, t)) << "frame " << i;
+        EXPECT_EQ(tracker->getMap(i), 0) << "frame " << i;
+        TrackedFrame now;
+        now.R = R;
+        now.t = t;
+        const Errors e = poseErrors(now, scene.poses[sceneFrame[i]]);
+        EXPECT_LT(e.rotationDeg, kRotationBoundDeg) << "frame " << i;
+        EXPECT_LT(e.position, kPositionBound * scene.pathLength) << "frame " << i;
     }
 }
 

@@ -576,10 +576,12 @@ void StereoTracker::joinMaps(int frame, int keyframe, const CameraPose& placePos
 
 FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, double startSeconds)
 {
-    StoredFrame& f = store_.frames[frame];
+    // A place attempt that fails restores the store, whose frames then live elsewhere: the frame is
+    // looked up afresh at each use, never held across an attempt.
+    const auto current = [&]() -> StoredFrame& { return store_.frames[frame]; };
     FrameResult result;
     result.frame = frame;
-    if (f.status != FrameStatus::Given)
+    if (current().status != FrameStatus::Given)
     {
         std::vector<int> keyframes; // newest first
         for (int j = frame - 1; j >= 0 && (int)keyframes.size() < options_.window; --j)
@@ -624,10 +626,10 @@ FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, dou
         {
             result.knownViews = 1;
             const CameraPose& a = store_.frames[used].pose;
-            f.pose = composePose(chosen.relative, a);
-            if (!f.pose.allFinite())
+            current().pose = composePose(chosen.relative, a);
+            if (!current().pose.allFinite())
             {
-                f.pose = CameraPose();
+                current().pose = CameraPose();
                 result.reason = "the registration gave no finite pose";
                 result.features = result.inliers = 0;
                 result.recognisedKeyframe = -1;
@@ -648,16 +650,16 @@ FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, dou
                     result.covariance = J * chosen.covariance.covariance * J.transpose();
                     result.noiseVariance = chosen.covariance.noiseVariance;
                 }
-                f.status = FrameStatus::Registered;
-                f.map = store_.frames[used].map;
-                f.keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap ||
+                current().status = FrameStatus::Registered;
+                current().map = store_.frames[used].map;
+                current().keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap ||
                              result.recognisedKeyframe >= 0;
                 for (int kind = 0; kind < 2; ++kind)
                     for (int track : chosen.rejected[kind])
                         store_.split(kKinds[kind], frame, store_.rowIn(kKinds[kind], track, frame));
             }
         }
-        if (!f.hasPose())
+        if (!current().hasPose())
         {
             result.reason = chosen.reason;
             result.inliers = 0;
@@ -681,13 +683,13 @@ FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, dou
                 }
             }
         }
-        if (f.hasPose())
+        if (current().hasPose())
             lostRun_ = 0;
         // While another map holds frames, each new keyframe looks for its places.
-        if (f.hasPose() && f.keyframe && liveMaps_.size() > 1)
+        if (current().hasPose() && current().keyframe && liveMaps_.size() > 1)
         {
             int place = -1;
-            const int own = f.map;
+            const int own = current().map;
             Attempt found = registerAtPlace(frame, left, [&](int k) { return store_.frames[k].map != own; }, place);
             if (found.registered)
             {
@@ -696,7 +698,7 @@ FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, dou
             }
         }
     }
-    describeFrame(f, result);
+    describeFrame(current(), result);
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
 }
