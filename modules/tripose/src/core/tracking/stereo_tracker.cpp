@@ -652,8 +652,8 @@ FrameResult StereoTracker::finishFrame(int frame, const FrameFeatures& left, dou
                 }
                 current().status = FrameStatus::Registered;
                 current().map = store_.frames[used].map;
-                current().keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) || chosen.overlap < kMinOverlap ||
-                             result.recognisedKeyframe >= 0;
+                current().keyframe = !(chosen.parallaxDeg < options_.keyframeParallaxDeg) ||
+                                     chosen.overlap < kMinOverlap || result.recognisedKeyframe >= 0;
                 for (int kind = 0; kind < 2; ++kind)
                     for (int track : chosen.rejected[kind])
                         store_.split(kKinds[kind], frame, store_.rowIn(kKinds[kind], track, frame));
