@@ -31,6 +31,10 @@ const int kWidth = 640, kHeight = 480, kDescriptorLength = 128;
 // About four times the worst errors of python/tests/test_stereo_tracker.py's sequences (the same scene).
 const double kRotationBoundDeg = 0.3;
 const double kPositionBound = 0.015; // of the path's length
+// A rig that mostly turns has little path to scale a bound by: in metres, twice the depth error of
+// its 0.3 m baseline at 0.5 px for points 8-16 m away (about 0.4 m) averaged over the 200-odd points
+// it sees.
+const double kTurningPositionBound = 0.05;
 
 struct Pose
 {
@@ -289,23 +293,25 @@ TEST(Tripose_StereoTracker, frames_of_noise_are_lost_and_the_next_ones_register)
 
 TEST(Tripose_StereoTracker, a_rig_lost_for_long_restarts_and_joins_its_maps)
 {
-    // Eight frames facing north, then the first frame's view mirrored (its descriptors match keyframe
-    // 0's, under an epipolar geometry, but no pose puts its points where they are: the place attempt
-    // fails and must leave the tracker as it was), four of noise, then the rig faces south, where no
-    // keyframe looks: it
-    // restarts a map there, turns back north in steps of 8 deg and, on seeing the first frames' place,
-    // joins the new map to the first. On the way its keyframes look for the first map's places, and
-    // the attempts that fail leave the tracker as it was.
+    // Eight frames facing north; the first frame's view mirrored, whose descriptors match keyframe
+    // 0's under an epipolar geometry though no pose fits its points, so that its place attempt fails
+    // and must leave the tracker as it was; four frames of noise; then the rig faces south, where no
+    // keyframe looks, restarts a map there, turns back north in steps of 8 deg and, on seeing the
+    // first frames' place, joins the new map to the first.
     StereoSequence scene = StereoSequence::surrounding(11);
     RNG rng(12);
     Ptr<StereoTracker> tracker = makeTracker(scene);
     std::vector<TrackedFrame> results;
     std::vector<int> sceneFrame; // per tracked frame, its pose in scene.poses; -1 for noise
-    const auto track = [&](int k) {
+    const auto trackFeatures = [&](const ImageFeatures& left, const ImageFeatures& right, int k) {
         sceneFrame.push_back(k);
-        results.push_back(k < 0 ? tracker->addFrame(noiseFeatures(rng, 300, 60), noiseFeatures(rng, 300, 60))
-                                : tracker->addFrame(scene.observe(scene.poses[k], rng, 0.5),
-                                                    scene.observe(scene.rightPose(k), rng, 0.5)));
+        results.push_back(tracker->addFrame(left, right));
+    };
+    const auto track = [&](int k) {
+        if (k < 0)
+            trackFeatures(noiseFeatures(rng, 300, 60), noiseFeatures(rng, 300, 60), k);
+        else
+            trackFeatures(scene.observe(scene.poses[k], rng, 0.5), scene.observe(scene.rightPose(k), rng, 0.5), k);
     };
     const auto mirrored = [](ImageFeatures f) {
         for (int i = 0; i < f.points.rows; ++i)
@@ -317,13 +323,12 @@ TEST(Tripose_StereoTracker, a_rig_lost_for_long_restarts_and_joins_its_maps)
     };
     for (int k = 0; k < 8; ++k)
         track(scene.add(3.0 * k, Vec3d(0.05 * k, 0, 0.1 * k)));
-    sceneFrame.push_back(-1);
-    results.push_back(tracker->addFrame(mirrored(scene.observe(scene.poses[0], rng, 0.5)),
-                                        mirrored(scene.observe(scene.rightPose(0), rng, 0.5))));
+    trackFeatures(mirrored(scene.observe(scene.poses[0], rng, 0.5)),
+                  mirrored(scene.observe(scene.rightPose(0), rng, 0.5)), -1);
     EXPECT_EQ(results.back().status, cv::tripose::FRAME_LOST);
     for (int k = 0; k < 4; ++k)
         track(-1);
-    for (int k = 0; k < 52; ++k)
+    for (int k = 0; k < 26; ++k)
         track(scene.add(180.0 + 8.0 * k, Vec3d(0.35 + 0.02 * k, 0, 0.7 - 0.02 * k)));
 
     for (int i = 1; i < 8; ++i)
@@ -358,7 +363,7 @@ TEST(Tripose_StereoTracker, a_rig_lost_for_long_restarts_and_joins_its_maps)
         now.t = t;
         const Errors e = poseErrors(now, scene.poses[sceneFrame[i]]);
         EXPECT_LT(e.rotationDeg, kRotationBoundDeg) << "frame " << i;
-        EXPECT_LT(e.position, kPositionBound * scene.pathLength) << "frame " << i;
+        EXPECT_LT(e.position, kTurningPositionBound) << "frame " << i;
     }
 }
 

@@ -299,7 +299,14 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
         {
             const FeatureKind k = kind == 0 ? FeatureKind::Point : FeatureKind::Line;
             for (int track : kind == 0 ? r.rejectedPoints : r.rejectedLines)
-                store_.split(k, frame, store_.rowIn(k, track, frame));
+            {
+                const int row = store_.rowIn(k, track, frame);
+                const int newTrack = store_.split(k, frame, row);
+                // The caller's id now names the new track in the frames that follow.
+                if (byIds_)
+                    (kind == 0 ? pointIdTrack_ : lineIdTrack_)[(kind == 0 ? pointIdsOfFrame_
+                                                                          : lineIdsOfFrame_)[frame][row]] = newTrack;
+            }
         }
         if (options_.localAdjustment)
         {
@@ -319,18 +326,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
             runCatchingInputErrors(
                 [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, kAdjustmentRounds); });
         }
-        if (byIds_)
-            continueIdsInFrameTracks(frame);
     }
-}
-
-void Tracker::continueIdsInFrameTracks(int frame)
-{
-    const StoredFrame& f = store_.frames[frame];
-    for (size_t row = 0; row < f.pointTrack.size(); ++row)
-        pointIdTrack_[pointIdsOfFrame_[frame][row]] = f.pointTrack[row];
-    for (size_t row = 0; row < f.lineTrack.size(); ++row)
-        lineIdTrack_[lineIdsOfFrame_[frame][row]] = f.lineTrack[row];
 }
 
 void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result)

@@ -83,10 +83,6 @@ private:
     //! The registered frames after frame @p first and the structure adjusted together, the given
     //! frames and the frames up to @p first held (-1: every registered frame).
     void adjustFramesAfter(int first);
-    /** Each of the caller's ids seen in frame @p frame names, in the frames that follow, the track its
-    feature is in now: a feature the registration rejected (a point the caller followed onto
-    something else) goes on in its new track. */
-    void continueIdsInFrameTracks(int frame);
     void associateByMatching(int frame, const FrameFeatures& features);
     void link(FeatureKind kind, int from, int to, const Matches& matches);
 
