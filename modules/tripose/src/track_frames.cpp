@@ -4,7 +4,6 @@
 
 #include "precomp.hpp"
 
-#include <cstring>
 
 #include "core/tracking/tracker.hpp"
 #include "opencv/core_calls.hpp"
@@ -59,25 +58,6 @@ struct FrameExtras
 
 using detail::toTrackedFrame;
 
-std::vector<int64_t> readIds(InputArray array, int count, const char* name)
-{
-    std::vector<int64_t> ids;
-    if (array.empty())
-    {
-        if (count > 0)
-            CV_Error_(Error::StsBadSize, ("%s is empty: one id per feature is needed", name));
-        return ids;
-    }
-    Mat m = array.getMat();
-    if (m.channels() != 1 || (int)m.total() != count || !(m.depth() == CV_32S || m.depth() == CV_64F))
-        CV_Error_(Error::StsBadSize, ("%s must hold one integer (CV_32S) per feature (%d)", name, count));
-    Mat d;
-    m.reshape(1, 1).convertTo(d, CV_64F);
-    for (int i = 0; i < count; ++i)
-        ids.push_back((int64_t)d.at<double>(i));
-    return ids;
-}
-
 class TrackerImpl : public Tracker
 {
 public:
@@ -105,8 +85,8 @@ public:
         CV_INSTRUMENT_REGION();
         const std::vector<Eigen::Vector2d> p = detail::vectors<2>(detail::readRows(points, 2, "points"));
         const std::vector<Eigen::Vector4d> s = detail::vectors<4>(detail::readRows(segments, 4, "segments"));
-        const std::vector<int64_t> pi = readIds(pointIds, (int)p.size(), "pointIds");
-        const std::vector<int64_t> li = readIds(lineIds, (int)s.size(), "lineIds");
+        const std::vector<int64_t> pi = detail::readIds(pointIds, (int)p.size(), "pointIds");
+        const std::vector<int64_t> li = detail::readIds(lineIds, (int)s.size(), "lineIds");
         const FrameExtras extras(R, t, cameraMatrix);
         return toTrackedFrame(
             TRIPOSE_CALL_CORE([&] { return tracker_.addObservations(p, pi, s, li, extras.posePtr(), extras.KPtr()); }));

@@ -29,6 +29,16 @@ core::CameraPose readRig(InputArray R, InputArray t)
     return rig;
 }
 
+//! The right image's rows of @p count features (NaN rows: not seen); cv::Exception naming @p name otherwise.
+Mat readRightRows(InputArray array, int width, size_t count, const char* name)
+{
+    const Mat rows = detail::readRows(array, width, name);
+    if ((size_t)rows.rows != count)
+        CV_Error_(Error::StsBadSize, ("%s must hold one row per feature of the left image (%d; NaN: not seen), "
+                                      "got %d", name, (int)count, rows.rows));
+    return rows;
+}
+
 class StereoTrackerImpl : public StereoTracker
 {
 public:
@@ -53,6 +63,23 @@ public:
         const bool hasPose = detail::readFramePose(R, t, pose);
         return detail::toTrackedFrame(
             TRIPOSE_CALL_CORE([&] { return tracker_.addFrame(l, r, hasPose ? &pose : nullptr); }));
+    }
+
+    TrackedFrame addObservations(InputArray points, InputArray pointIds, InputArray rightPoints, InputArray segments,
+                                 InputArray lineIds, InputArray rightSegments, InputArray R, InputArray t) CV_OVERRIDE
+    {
+        CV_INSTRUMENT_REGION();
+        core::StereoObservations o;
+        o.points = detail::vectors<2>(detail::readRows(points, 2, "points"));
+        o.segments = detail::vectors<4>(detail::readRows(segments, 4, "segments"));
+        o.pointIds = detail::readIds(pointIds, (int)o.points.size(), "pointIds");
+        o.lineIds = detail::readIds(lineIds, (int)o.segments.size(), "lineIds");
+        o.rightPoints = detail::vectors<2>(readRightRows(rightPoints, 2, o.points.size(), "rightPoints"));
+        o.rightSegments = detail::vectors<4>(readRightRows(rightSegments, 4, o.segments.size(), "rightSegments"));
+        core::CameraPose pose;
+        const bool hasPose = detail::readFramePose(R, t, pose);
+        return detail::toTrackedFrame(
+            TRIPOSE_CALL_CORE([&] { return tracker_.addObservations(o, hasPose ? &pose : nullptr); }));
     }
 
     int numFrames() const CV_OVERRIDE { return tracker_.numFrames(); }

@@ -10,6 +10,7 @@
 
 #include "test_precomp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -185,6 +186,58 @@ struct StereoSequence
     }
 };
 
+//! One stereo frame's observations of linked tracks, as StereoTracker::addObservations() takes them.
+struct LinkedObservations
+{
+    Mat points, pointIds, rightPoints, segments, lineIds, rightSegments;
+};
+
+/** What frame @p k's rig sees, each feature named by its index in the scene, with @p noise px: the
+left camera's points and segments, and their positions in the right image (NaN rows where the right
+camera does not see them). */
+LinkedObservations observeLinked(const StereoSequence& seq, int k, RNG& rng, double noise)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    LinkedObservations o;
+    o.points.create(0, 2, CV_64F);
+    o.rightPoints.create(0, 2, CV_64F);
+    o.segments.create(0, 4, CV_64F);
+    o.rightSegments.create(0, 4, CV_64F);
+    const auto project = [&](const Pose& p, const Vec3d& X, Vec2d& x) {
+        const Vec3d c = p.R * X + p.t;
+        if (c[2] < 1.0)
+            return false;
+        const Vec3d h = seq.K * c;
+        x = Vec2d(h[0] / h[2] + rng.gaussian(noise), h[1] / h[2] + rng.gaussian(noise));
+        return x[0] >= 0 && x[0] < kWidth && x[1] >= 0 && x[1] < kHeight;
+    };
+    const Pose left = seq.poses[k], right = seq.rightPose(k);
+    std::vector<int> pointIds, lineIds;
+    for (int i = 0; i < (int)seq.points.size(); ++i)
+    {
+        Vec2d a, b;
+        if (!project(left, seq.points[i], a))
+            continue;
+        const bool inRight = project(right, seq.points[i], b);
+        o.points.push_back(Mat(Matx12d(a[0], a[1])));
+        o.rightPoints.push_back(inRight ? Mat(Matx12d(b[0], b[1])) : Mat(Matx12d(nan, nan)));
+        pointIds.push_back(i);
+    }
+    for (int i = 0; i < (int)seq.segments.size(); ++i)
+    {
+        Vec2d a, b, c, d;
+        if (!(project(left, seq.segments[i].first, a) && project(left, seq.segments[i].second, b)))
+            continue;
+        const bool inRight = project(right, seq.segments[i].first, c) && project(right, seq.segments[i].second, d);
+        o.segments.push_back(Mat(Matx14d(a[0], a[1], b[0], b[1])));
+        o.rightSegments.push_back(inRight ? Mat(Matx14d(c[0], c[1], d[0], d[1])) : Mat(Matx14d(nan, nan, nan, nan)));
+        lineIds.push_back(i);
+    }
+    Mat(pointIds, true).copyTo(o.pointIds);
+    Mat(lineIds, true).copyTo(o.lineIds);
+    return o;
+}
+
 //! Random features: a frame of another scene, or of noise.
 ImageFeatures noiseFeatures(RNG& rng, int points, int segments)
 {
@@ -255,6 +308,42 @@ TEST(Tripose_StereoTracker, registers_every_frame_at_metric_scale_without_poses)
     EXPECT_GT(countNonZero(pointStereo >= 0), 50);
     EXPECT_GT(countNonZero(lineStereo >= 0), 5);
     EXPECT_THROW(tracker->getPose(20, R, t), cv::Exception);
+}
+
+TEST(Tripose_StereoTracker, registers_linked_observations_at_metric_scale)
+{
+    const StereoSequence seq(20, 1);
+    RNG rng(11);
+    Ptr<StereoTracker> tracker = makeTracker(seq);
+    double worstRotation = 0, worstPosition = 0;
+    for (int k = 0; k < (int)seq.poses.size(); ++k)
+    {
+        const LinkedObservations o = observeLinked(seq, k, rng, 0.5);
+        const TrackedFrame r = tracker->addObservations(o.points, o.pointIds, o.rightPoints, o.segments, o.lineIds,
+                                                        o.rightSegments);
+        ASSERT_EQ(r.frame, k);
+        if (k == 0)
+        {
+            EXPECT_EQ(r.status, cv::tripose::FRAME_GIVEN);
+            continue;
+        }
+        ASSERT_EQ(r.status, cv::tripose::FRAME_REGISTERED) << "frame " << k << ": " << r.reason;
+        EXPECT_GE(r.inliers, 15) << "frame " << k;
+        const Errors e = poseErrors(r, seq.poses[k]);
+        worstRotation = std::max(worstRotation, e.rotationDeg);
+        worstPosition = std::max(worstPosition, e.position);
+    }
+    EXPECT_LT(worstRotation, kRotationBoundDeg);
+    EXPECT_LT(worstPosition, kPositionBound * seq.pathLength);
+    // A feature keeps its track from frame to frame: the ids link them, no matching does.
+    Mat tracksBefore, tracksAfter, unused;
+    tracker->getTracks(5, tracksBefore, unused);
+    tracker->getTracks(6, tracksAfter, unused);
+    std::vector<int> before(tracksBefore), after(tracksAfter);
+    int shared = 0;
+    for (int track : before)
+        shared += track >= 0 && std::find(after.begin(), after.end(), track) != after.end();
+    EXPECT_GT(shared, 100);
 }
 
 TEST(Tripose_StereoTracker, frames_of_noise_are_lost_and_the_next_ones_register)
@@ -410,7 +499,34 @@ TEST(Tripose_StereoTracker, bad_input_names_the_argument)
     expectThrowNaming([&] { tracker->addFrame(infinite, right); }, "left.points[0]");
     expectThrowNaming([&] { tracker->addFrame(left, right, R); }, "R and t");
     EXPECT_EQ(tracker->numFrames(), 0);
+
+    Ptr<StereoTracker> linked = makeTracker(seq);
+    const LinkedObservations o = observeLinked(seq, 0, rng, 0.5);
+    expectThrowNaming([&] {
+        linked->addObservations(o.points, o.pointIds, o.rightPoints.rowRange(1, o.rightPoints.rows), o.segments,
+                                o.lineIds, o.rightSegments);
+    }, "rightPoints");
+    expectThrowNaming([&] {
+        linked->addObservations(o.points, o.pointIds, o.rightPoints, o.segments, o.lineIds, Mat(o.rightSegments.rows, 3,
+                                CV_64F, Scalar(0)));
+    }, "rightSegments");
+    expectThrowNaming([&] {
+        linked->addObservations(o.points, noArray(), o.rightPoints, o.segments, o.lineIds, o.rightSegments);
+    }, "pointIds");
+    expectThrowNaming([&] {
+        linked->addObservations(o.points, o.pointIds, o.rightPoints, o.segments, o.lineIds.rowRange(1, o.lineIds.rows),
+                                o.rightSegments);
+    }, "lineIds");
+    EXPECT_EQ(linked->numFrames(), 0);
+    EXPECT_EQ(linked->addObservations(o.points, o.pointIds, o.rightPoints, o.segments, o.lineIds, o.rightSegments).status,
+              cv::tripose::FRAME_GIVEN);
+    // A tracker takes either features or observations.
+    expectThrowNaming([&] { linked->addFrame(left, right); }, "left: this tracker was given observations");
+
     EXPECT_EQ(tracker->addFrame(left, right).status, cv::tripose::FRAME_GIVEN);
+    expectThrowNaming([&] {
+        tracker->addObservations(o.points, o.pointIds, o.rightPoints, o.segments, o.lineIds, o.rightSegments);
+    }, "point_ids");
 }
 
 } // namespace

@@ -23,6 +23,25 @@ Mat readRows(InputArray array, int width, const char* name)
     return out;
 }
 
+std::vector<int64_t> readIds(InputArray array, int count, const char* name)
+{
+    std::vector<int64_t> ids;
+    if (array.empty())
+    {
+        if (count > 0)
+            CV_Error_(Error::StsBadSize, ("%s is empty: one id per feature is needed", name));
+        return ids;
+    }
+    Mat m = array.getMat();
+    if (m.channels() != 1 || (int)m.total() != count || !(m.depth() == CV_32S || m.depth() == CV_64F))
+        CV_Error_(Error::StsBadSize, ("%s must hold one integer (CV_32S) per feature (%d)", name, count));
+    Mat d;
+    m.reshape(1, 1).convertTo(d, CV_64F);
+    for (int i = 0; i < count; ++i)
+        ids.push_back((int64_t)d.at<double>(i));
+    return ids;
+}
+
 ::tripose::Descriptors readDescriptors(InputArray array, int rows, const char* name)
 {
     ::tripose::Descriptors d;

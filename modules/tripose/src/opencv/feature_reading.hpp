@@ -5,6 +5,7 @@
 #ifndef OPENCV_TRIPOSE_OPENCV_FEATURE_READING_HPP
 #define OPENCV_TRIPOSE_OPENCV_FEATURE_READING_HPP
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ std::vector<Eigen::Matrix<double, W, 1>> vectors(const Mat& rows)
             out[i][c] = rows.at<double>(i, c);
     return out;
 }
+
+//! @p count feature ids, one integer each (CV_32S, or whole CV_64F values); cv::Exception naming @p name otherwise.
+std::vector<int64_t> readIds(InputArray array, int count, const char* name);
 
 //! @p rows descriptor rows, CV_32F (L2) or CV_8U (Hamming); cv::Exception naming @p name otherwise.
 ::tripose::Descriptors readDescriptors(InputArray array, int rows, const char* name);

@@ -136,10 +136,6 @@ public:
                                      InputArray lineDescriptors, InputArray R = noArray(), InputArray t = noArray(),
                                      InputArray cameraMatrix = noArray()) = 0;
 
-    /** @brief The next frame from observations of tracks the caller linked.
-    @param points Nx2 positions; @p pointIds N integers (CV_32S), the same id naming the same feature
-    in every frame. @p segments Mx4, @p lineIds M integers. The other parameters as addFeatures().
-    */
     //! addFeatures() with the features of one image, as detected by a front end.
     TrackedFrame addFeatures(const ImageFeatures& features, InputArray R = noArray(), InputArray t = noArray(),
                              InputArray cameraMatrix = noArray())
@@ -148,6 +144,10 @@ public:
                            t, cameraMatrix);
     }
 
+    /** @brief The next frame from observations of tracks the caller linked.
+    @param points Nx2 positions; @p pointIds N integers (CV_32S), the same id naming the same feature
+    in every frame. @p segments Mx4, @p lineIds M integers. The other parameters as addFeatures().
+    */
     virtual TrackedFrame addObservations(InputArray points, InputArray pointIds, InputArray segments,
                                          InputArray lineIds, InputArray R = noArray(), InputArray t = noArray(),
                                          InputArray cameraMatrix = noArray()) = 0;
@@ -235,6 +235,23 @@ public:
     */
     virtual TrackedFrame addFrame(const ImageFeatures& left, const ImageFeatures& right, InputArray R = noArray(),
                                   InputArray t = noArray()) = 0;
+
+    /** @brief The next stereo frame from observations of tracks the caller linked (a video's points
+    followed by optical flow): no descriptors and no matching, so no place is recognised, and a rig
+    lost for longer than TrackerParams::maxFrameGap restarts without joining its maps. A tracker
+    takes either features (addFrame()) or observations, not both.
+    @param points Nx2 positions in the left image; @p pointIds N integers (CV_32S), the same id naming
+    the same feature in every frame.
+    @param rightPoints Nx2: each point's position in the right image, NaN where the right camera does
+    not see it.
+    @param segments Mx4 segments in the left image (or empty); @p lineIds M integers.
+    @param rightSegments Mx4: each segment's line in the right image (any two points on it), NaN
+    where the right camera does not see it.
+    @param R, t The left camera's pose when known, else empty.
+    */
+    virtual TrackedFrame addObservations(InputArray points, InputArray pointIds, InputArray rightPoints,
+                                         InputArray segments, InputArray lineIds, InputArray rightSegments,
+                                         InputArray R = noArray(), InputArray t = noArray()) = 0;
 
     //! Frames given so far.
     virtual int numFrames() const = 0;
