@@ -7,7 +7,9 @@
 // (EDLines fitted to their edges, LBD) are detected in each frame; the first two frames take their
 // poses from the calibration (frame 0 at the origin, frame 1 at R12, t12) or from a trajectory file.
 // With --right, the images are a stereo rig's left camera and --right its right camera's, tracked
-// with cv::tripose::StereoTracker: the calibration gives the rig, and no pose is needed.
+// with cv::tripose::StereoTracker: the calibration gives the rig, and no pose is needed. With --mode
+// video, points are followed from frame to frame by optical flow instead (video_following.hpp) and
+// given to the tracker as linked observations, in real time.
 //
 //   tripose_track --images <folder | video | list> [--right <folder | video | list>] --calib calib.yml
 //                 [--poses initial.txt] --output trajectory.txt [--yaml result.yml] [options]
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +31,7 @@
 #include "problem_io.hpp"
 #include "tracker_arguments.hpp"
 #include "trajectory_io.hpp"
+#include "video_following.hpp"
 
 namespace {
 
@@ -38,6 +42,7 @@ const char* kUsage =
     "                     [--threshold px] [--local-adjustment 0|1] [--loop-closure 0|1]\n"
     "                     [--keyframe-parallax deg] [--seed n] [--max-image-size px]\n"
     "                     [--contrast-threshold value] [--global-adjustment-interval N]\n"
+    "                     [--mode full|video]\n"
     "  --images       a folder (its images in natural name order), a video file, or a text file listing\n"
     "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
     "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
@@ -70,12 +75,24 @@ const char* kUsage =
     "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
     "  --contrast-threshold SIFT's contrast threshold (default 0.04): lower finds more, fainter points,\n"
     "                       which hold a trajectory better where texture is scarce\n"
+    "  --mode video   for a video in real time: points (goodFeaturesToTrack) followed from frame to frame\n"
+    "                 by optical flow, detected afresh only in the frame after a keyframe or when fewer\n"
+    "                 than 120 survive, and given to the tracker as linked observations (no descriptors,\n"
+    "                 no matching; with --right, each is found in the right image by the same flow).\n"
+    "                 Keyframes from 0.5 deg of parallax unless --keyframe-parallax says otherwise, the\n"
+    "                 local adjustment always on (mono); --max-image-size and --contrast-threshold do not\n"
+    "                 apply. Default: full (features detected and matched in every frame)\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
     "arguments or input (the message names the option, file, frame or key; no output is written).\n";
+
+// A video's frames are close: keyframes are spaced by this parallax (deg) instead of the full mode's
+// 0.1 (a keyframe at nearly every frame, each triangulating from the narrow baselines of the last).
+const double kVideoKeyframeParallaxDeg = 0.5;
 
 struct Options
 {
     std::string images, right, calib, poses, output, yaml;
+    bool video = false;
     int maxImageSize = -1;
     double contrastThreshold = -1;
     cv::tripose::TrackerParams track;
@@ -86,10 +103,21 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
-                                       "--max-image-size", "--contrast-threshold" };
+                                       "--max-image-size", "--contrast-threshold", "--mode" };
     for (const std::string& name : trackerOptionNames("--local-adjustment"))
         known.push_back(name);
-    for (const auto& option : optionPairs(argc, argv, kUsage, known, {}))
+    const auto options = optionPairs(argc, argv, kUsage, known, {});
+    // The video mode's defaults first, so that the options given override them.
+    for (const auto& option : options)
+        if (option.first == "--mode")
+        {
+            if (option.second != "full" && option.second != "video")
+                throw argumentError(option.first, "must be full or video, got " + option.second);
+            o.video = option.second == "video";
+        }
+    if (o.video)
+        o.track.keyframeParallaxDeg = kVideoKeyframeParallaxDeg;
+    for (const auto& option : options)
     {
         const std::string& arg = option.first;
         const std::string& value = option.second;
@@ -105,6 +133,8 @@ Options parseArguments(int argc, char** argv)
             o.output = value;
         else if (arg == "--yaml")
             o.yaml = value;
+        else if (arg == "--mode")
+            continue;
         else if (arg == "--max-image-size")
             o.maxImageSize = parseInteger(arg, value, 0.0);
         else if (arg == "--contrast-threshold")
@@ -120,12 +150,21 @@ Options parseArguments(int argc, char** argv)
                                   std::make_pair("--output", &o.output) })
         if (required.second->empty())
             throw std::runtime_error(std::string("argument ") + required.first + " is required");
+    if (o.video && o.maxImageSize >= 0)
+        throw argumentError("--max-image-size", "not used by --mode video (the points are followed in the full-size "
+                            "frames)");
+    if (o.video && o.contrastThreshold >= 0)
+        throw argumentError("--contrast-threshold", "not used by --mode video (its points are corners, not SIFT's)");
     if (!o.right.empty() && o.track.localAdjustment)
         throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
     if (!o.right.empty() && o.track.loopClosure)
         throw argumentError("--loop-closure", "not available with --right (the stereo tracker has none)");
     if (!o.right.empty() && o.track.globalAdjustmentInterval > 0)
         throw argumentError("--global-adjustment-interval", "not available with --right (the stereo tracker has none)");
+    // Followed points are seen from a few close keyframes only: without the local adjustment the
+    // structure and the poses drift together, every feature agreeing.
+    if (o.video && o.right.empty())
+        o.track.localAdjustment = true;
     return o;
 }
 
@@ -242,6 +281,27 @@ int main(int argc, char** argv)
         features.maxImageSize = options.maxImageSize;
     if (options.contrastThreshold >= 0)
         features.contrastThreshold = options.contrastThreshold;
+    std::unique_ptr<VideoFrontEnd> video;
+    if (options.video && stereo)
+    {
+        VideoRig videoRig;
+        for (int c = 0; c < 2; ++c)
+        {
+            videoRig.K[c] = cv::Matx33d(rig.K[c]);
+            videoRig.dist[c] = rig.dist[c];
+        }
+        cv::Mat rigR;
+        rig.R12.convertTo(rigR, CV_64F);
+        if (rigR.total() == 3)
+            cv::Rodrigues(rigR.reshape(1, 3), rigR);
+        videoRig.R = cv::Matx33d(rigR.reshape(1, 3));
+        cv::Mat rigT;
+        rig.t12.convertTo(rigT, CV_64F);
+        videoRig.t = cv::Vec3d(rigT.reshape(1, 3));
+        video.reset(new VideoFrontEnd(FollowOptions(), videoRig));
+    }
+    else if (options.video)
+        video.reset(new VideoFrontEnd());
     cv::Ptr<cv::tripose::Tracker> tracker;
     cv::Ptr<cv::tripose::StereoTracker> stereoTracker;
     std::vector<cv::tripose::TrackedFrame> results;
@@ -271,14 +331,15 @@ int main(int argc, char** argv)
             else
             {
                 checkImageFitsCalibration(frame.image, frame.name, K, leftKey);
-                if (!tracker)
+                if (!tracker && !video)
                 {
                     // The features of reduced images are that much less precise in the images' pixels.
                     const double pixelScale = detectionScale(frame.image.size(), features.maxImageSize);
                     options.track.ransac.threshold *= pixelScale;
                     options.track.matching.epipolarDistance *= pixelScale;
                 }
-                found = extractFeatures(frame.image, K, cv::Mat(), features, times);
+                if (!video)
+                    found = extractFeatures(frame.image, K, cv::Mat(), features, times);
             }
             if (stereo && rightFrame.image.empty())
                 std::cerr << "tripose_track: frame " << frame.index << " (" << rightFrame.name << ", --right): "
@@ -286,26 +347,30 @@ int main(int argc, char** argv)
             else if (stereo)
             {
                 checkImageFitsCalibration(rightFrame.image, rightFrame.name, rightK, "K2");
-                foundRight = extractFeatures(rightFrame.image, rightK, cv::Mat(), features, times);
+                if (!video)
+                    foundRight = extractFeatures(rightFrame.image, rightK, cv::Mat(), features, times);
             }
             const cv::Mat givenR = hasPose ? cv::Mat(given[frame.index].R) : cv::Mat();
             const cv::Mat givenT = hasPose ? cv::Mat(given[frame.index].t) : cv::Mat();
             cv::tripose::TrackedFrame result;
-            if (stereo)
+            if (stereo && !stereoTracker)
+                stereoTracker = cv::tripose::StereoTracker::create(K, dist, rightK, rig.dist[1], rig.R12, rig.t12,
+                                                                   options.track);
+            if (!stereo && !tracker)
+                tracker = cv::tripose::Tracker::create(K, dist, options.track);
+            if (video)
             {
-                if (!stereoTracker)
-                    stereoTracker = cv::tripose::StereoTracker::create(K, dist, rightK, rig.dist[1], rig.R12, rig.t12,
-                                                                       options.track);
-                result = stereoTracker->addFrame(found, foundRight, givenR,
-                                                 givenT);
+                const VideoObservations o = video->next(frame.image, rightFrame.image);
+                result = stereo ? stereoTracker->addObservations(o.points, o.pointIds, o.rightPoints, o.segments,
+                                                                 o.lineIds, o.rightSegments, givenR, givenT)
+                                : tracker->addObservations(o.points, o.pointIds, o.segments, o.lineIds, givenR, givenT);
+                video->keyframeDone(result.keyframe);
             }
+            else if (stereo)
+                result = stereoTracker->addFrame(found, foundRight, givenR, givenT);
             else
-            {
-                if (!tracker)
-                    tracker = cv::tripose::Tracker::create(K, dist, options.track);
                 result = tracker->addFeatures(found.points, found.pointDescriptors, found.segments,
                                               found.lineDescriptors, givenR, givenT);
-            }
             const char* status = result.status == cv::tripose::FRAME_GIVEN     ? "given" :
                                  result.status == cv::tripose::FRAME_LOST      ? "LOST" :
                                  result.status == cv::tripose::FRAME_RESTARTED ? "restarted" :
@@ -347,17 +412,21 @@ int main(int argc, char** argv)
         return 1;
     }
     const std::string restarts = restarted ? cv::format(", %d restarted", restarted) : std::string();
-    std::cout << cv::format("%zu frames: %d given, %d registered, %d lost%s; ms per frame: points (SIFT) %.0f, "
-                            "segments (EDLines, LBD) %.0f, tracking %.0f\n",
-                            results.size(), givenFrames, registered, lost, restarts.c_str(),
-                            times.points / std::max<size_t>(1, results.size()),
-                            (times.segmentDetection + times.segmentDescription) / std::max<size_t>(1, results.size()),
-                            [&] {
-                                double ms = 0;
-                                for (const auto& r : results)
-                                    ms += r.milliseconds;
-                                return ms / std::max<size_t>(1, results.size());
-                            }());
+    const double frames = (double)std::max<size_t>(1, results.size());
+    double trackingMs = 0;
+    for (const auto& r : results)
+        trackingMs += r.milliseconds;
+    std::cout << cv::format("%zu frames: %d given, %d registered, %d lost%s; ms per frame: ", results.size(),
+                            givenFrames, registered, lost, restarts.c_str());
+    if (video)
+        std::cout << cv::format("flow %.1f, detection %.1f%s, tracking %.1f\n", video->times().flow / frames,
+                                video->times().detection / frames,
+                                stereo ? cv::format(", right image %.1f", video->times().stereo / frames).c_str() : "",
+                                trackingMs / frames);
+    else
+        std::cout << cv::format("points (SIFT) %.0f, segments (EDLines, LBD) %.0f, tracking %.0f\n",
+                                times.points / frames, (times.segmentDetection + times.segmentDescription) / frames,
+                                trackingMs / frames);
 
     try
     {

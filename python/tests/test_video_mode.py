@@ -169,15 +169,15 @@ def track_stereo(left, right):
 
 
 def test_stereo_every_frame_registered_within_the_measured_bound(stereo_walk):
-    # Measured on these 40 frames: the last at 0.078 deg and 0.384 % of the path (0.246 deg and
-    # 0.236 % after the 300 frames of the loop); bounds at 1.5 times the measured. No pose is given:
-    # the rig's baseline gives the scale, so the position error is metric.
+    # Measured on these 40 frames: the last at 0.078 deg and 0.384 % of the path on one machine, 0.102
+    # and 0.516 on another (their floating point differs, and the robust estimator's choices with it);
+    # bounds at 1.5 times the larger. No pose is given: the rig's baseline gives the scale.
     left, right, truth, _ = stereo_walk
     results, trajectory = track_stereo(left, right)
     assert [f.result.status for f in results] == [GIVEN] + [REGISTERED] * (FRAMES - 1)
     assert all(set(f.milliseconds) == {"flow", "detection", "stereo", "registration", "total"} for f in results)
     rotation, position = last_frame_errors(trajectory, truth)
-    assert rotation < 0.12 and position < 0.58, (rotation, position)
+    assert rotation < 0.153 and position < 0.774, (rotation, position)
     assert_same_trajectory(trajectory, track_stereo(left, right)[1])
 
 

@@ -2,7 +2,8 @@
 the sequence rendered (or read from --folder when it is there), tracked by `tripose_track` (C++)
 and, with --python, by `tripose-track` (the package): mono with frames 0-1 given by calib.yml, or
 with --stereo the rig. Per program: frames with a pose, the last frame's rotation and position error
-(degrees, % of the path), the largest over the frames, the times per frame by stage.
+(degrees, % of the path), the largest over the frames, the times per frame by stage (SIFT points,
+segments, tracking; with `-- --mode video`: flow, detection, the right image's flow, tracking).
 
     python test/evaluation/track_rendered_sequence.py [--frames 300] [--stereo] [--python] [--folder DIR]
                                                       [-- extra tripose_track options]
@@ -53,11 +54,13 @@ def track(program, folder, stereo, extra):
     per_frame = errors(folder, out)
     found = [e for e in per_frame if e is not None]
     last = per_frame[-1]
-    times = re.search(r"points \(SIFT\) (\d+), segments \(EDLines, LBD\) (\d+), tracking (\d+)", proc.stdout)
+    times = (re.search(r"points \(SIFT\) (\d+), segments \(EDLines, LBD\) (\d+), tracking (\d+)", proc.stdout)
+             or re.search(r"flow ([\d.]+), detection ([\d.]+)(?:, right image ([\d.]+))?, tracking ([\d.]+)",
+                          proc.stdout))
     return (f"| {'stereo' if stereo else 'mono'} | {len(found)}/{len(per_frame)} | "
             + (f"{last[0]:.3f} / {last[1]:.3f}" if last else "lost") + " | "
             + f"{max(e[0] for e in found):.3f} / {max(e[1] for e in found):.3f} | "
-            + (" / ".join(times.groups()) if times else "-") + f" | {seconds:.0f} s |")
+            + (" / ".join(g for g in times.groups() if g is not None) if times else "-") + f" | {seconds:.0f} s |")
 
 
 def main():
@@ -77,7 +80,7 @@ def main():
             seconds = render.write_sequence(folder, args.frames, args.stereo)
             print(f"rendered {args.frames} frames in {seconds:.0f} s")
         print("program | camera | frames with a pose | last frame deg / % path | largest deg / % | "
-              "ms per frame: points / segments / tracking | total")
+              "ms per frame by stage | total")
         print("|---|---|---|---|---|---|---|")
         for label, program in programs:
             print(f"| {label} " + track(program, folder, args.stereo, args.extra), flush=True)
