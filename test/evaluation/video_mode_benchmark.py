@@ -36,8 +36,10 @@ from tripose.video import StereoVideoTracker, VideoOptions, VideoTracker  # noqa
 
 
 def read_frames(folder, side):
+    """The frames as the programs read them (tripose.images.read_image: a colour PNG converted to grey
+    by OpenCV's conversion, which differs from the PNG decoder's own by a grey level here and there)."""
     names = [line.split()[1] for line in (folder / f"{side}.txt").read_text().splitlines() if line.strip()]
-    return [cv2.imread(str(folder / n), cv2.IMREAD_GRAYSCALE) for n in names]
+    return [images.read_image(folder / n) for n in names]
 
 
 def rendered(folder, stereo=False):
@@ -57,7 +59,7 @@ def rendered(folder, stereo=False):
 
 def temple_ring():
     seq = rs.relative_to_first(rs.temple_ring())
-    frames = [cv2.imread(str(p), cv2.IMREAD_GRAYSCALE) for p in seq.image_paths]
+    frames = [images.read_image(p) for p in seq.image_paths]
     return f"templeRing (ring order), {len(frames)} views", seq.K, frames, list(zip(seq.R, seq.t))
 
 
