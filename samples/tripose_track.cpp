@@ -42,7 +42,7 @@ const char* kUsage =
     "                     [--threshold px] [--local-adjustment 0|1] [--loop-closure 0|1]\n"
     "                     [--keyframe-parallax deg] [--seed n] [--max-image-size px]\n"
     "                     [--contrast-threshold value] [--global-adjustment-interval N]\n"
-    "                     [--mode full|video]\n"
+    "                     [--max-points N] [--mode full|video]\n"
     "  --images       a folder (its images in natural name order), a video file, or a text file listing\n"
     "                 image paths (one per line, relative to the list, optionally after a timestamp)\n"
     "  --calib        K (3x3), optional dist, and, without --poses, R12 and t12: the pose of frame 1 in\n"
@@ -75,13 +75,14 @@ const char* kUsage =
     "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
     "  --contrast-threshold SIFT's contrast threshold (default 0.04): lower finds more, fainter points,\n"
     "                       which hold a trajectory better where texture is scarce\n"
+    "  --max-points   the strongest SIFT points kept per image (default 4000, 0: all)\n"
     "  --mode video   for a video in real time: points (goodFeaturesToTrack) followed from frame to frame\n"
     "                 by optical flow, detected afresh only in the frame after a keyframe or when fewer\n"
     "                 than 120 survive, and given to the tracker as linked observations (no descriptors,\n"
     "                 no matching; with --right, each is found in the right image by the same flow).\n"
     "                 Keyframes from 0.5 deg of parallax unless --keyframe-parallax says otherwise, the\n"
-    "                 local adjustment always on (mono); --max-image-size and --contrast-threshold do not\n"
-    "                 apply. Default: full (features detected and matched in every frame)\n"
+    "                 local adjustment always on (mono); --max-image-size, --contrast-threshold and\n"
+    "                 --max-points do not apply. Default: full (features detected and matched in every frame)\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
     "arguments or input (the message names the option, file, frame or key; no output is written).\n";
 
@@ -93,7 +94,7 @@ struct Options
 {
     std::string images, right, calib, poses, output, yaml;
     bool video = false;
-    int maxImageSize = -1;
+    int maxImageSize = -1, maxPoints = -1;
     double contrastThreshold = -1;
     cv::tripose::TrackerParams track;
 };
@@ -103,7 +104,8 @@ Options parseArguments(int argc, char** argv)
     using namespace tripose_samples;
     Options o;
     std::vector<std::string> known = { "--images", "--right", "--calib", "--poses", "--output", "--yaml",
-                                       "--max-image-size", "--contrast-threshold", "--mode" };
+                                       "--max-image-size", "--contrast-threshold", "--max-points",
+                                       "--mode" };
     for (const std::string& name : trackerOptionNames("--local-adjustment"))
         known.push_back(name);
     const auto options = optionPairs(argc, argv, kUsage, known, {});
@@ -137,6 +139,8 @@ Options parseArguments(int argc, char** argv)
             continue;
         else if (arg == "--max-image-size")
             o.maxImageSize = parseInteger(arg, value, 0.0);
+        else if (arg == "--max-points")
+            o.maxPoints = parseInteger(arg, value, 0.0);
         else if (arg == "--contrast-threshold")
         {
             o.contrastThreshold = parseNumber(arg, value);
@@ -155,6 +159,8 @@ Options parseArguments(int argc, char** argv)
                             "frames)");
     if (o.video && o.contrastThreshold >= 0)
         throw argumentError("--contrast-threshold", "not used by --mode video (its points are corners, not SIFT's)");
+    if (o.video && o.maxPoints >= 0)
+        throw argumentError("--max-points", "not used by --mode video (its points are corners, not SIFT's)");
     if (!o.right.empty() && o.track.localAdjustment)
         throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
     if (!o.right.empty() && o.track.loopClosure)
@@ -281,6 +287,8 @@ int main(int argc, char** argv)
         features.maxImageSize = options.maxImageSize;
     if (options.contrastThreshold >= 0)
         features.contrastThreshold = options.contrastThreshold;
+    if (options.maxPoints >= 0)
+        features.maxPoints = options.maxPoints;
     std::unique_ptr<VideoFrontEnd> video;
     if (options.video && stereo)
     {

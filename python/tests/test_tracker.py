@@ -239,31 +239,33 @@ def first_frames(tmp_path, small_fountain, count):
     return K, paths, listing
 
 
-def test_program_contrast_threshold_detects_as_the_api(tmp_path, fountain, small_fountain):
-    # --contrast-threshold reaches SIFT: the program's feature counts and poses are the API's with
-    # FeatureOptions(contrast_threshold=...), and the lower threshold finds more in every tracked frame
-    # (the given frames' features are not counted).
+@pytest.mark.parametrize("option, field, value, more", [("--contrast-threshold", "contrast_threshold", 0.01, True),
+                                                        ("--max-points", "max_points", 300, False)])
+def test_program_detection_options_detect_as_the_api(tmp_path, fountain, small_fountain, option, field, value, more):
+    # --contrast-threshold and --max-points reach SIFT: the program's feature counts and poses are the
+    # API's with the same FeatureOptions field, and the lower threshold finds more (300 points at most,
+    # fewer) in every tracked frame than the defaults (the given frames' features are not counted).
     folder, calib = small_fountain
     K, paths, listing = first_frames(tmp_path, small_fountain, 5)
     counts = {}
-    for threshold in (None, 0.01):
+    for given in (None, value):
         output, result_yaml = tmp_path / "trajectory.txt", tmp_path / "result.yml"
-        extra = [] if threshold is None else ["--contrast-threshold", threshold]
+        extra = [] if given is None else [option, given]
         proc = run_cli("--images", listing, "--calib", calib, "--output", output, "--yaml", result_yaml, *extra,
                        cwd=tmp_path)
         assert proc.returncode == 0, proc.stderr
-        feature_options = images.FeatureOptions() if threshold is None else \
-            images.FeatureOptions(contrast_threshold=threshold)
+        feature_options = images.FeatureOptions() if given is None else images.FeatureOptions(**{field: given})
         features = [images.extract_features(images.read_image(p), K, options=feature_options) for p in paths]
         results, trajectory = track(K, features, given_poses(fountain), cli_options(1.0))
         fs = cv2.FileStorage(str(result_yaml), cv2.FILE_STORAGE_READ)
         node = fs.getNode("frames")
-        counts[threshold] = [int(node.at(i).getNode("features").real()) for i in range(node.size())]
+        counts[given] = [int(node.at(i).getNode("features").real()) for i in range(node.size())]
         fs.release()
-        assert counts[threshold] == [r.features for r in results]
+        assert counts[given] == [r.features for r in results]
         _, Rs, ts = rs.read_tum(output)
         assert_same_poses(trajectory, Rs, ts, range(len(paths)))
-    assert all(low > default for low, default in zip(counts[0.01][2:], counts[None][2:])), counts
+    changed = [(other > default) == more for other, default in zip(counts[value][2:], counts[None][2:])]
+    assert all(changed), counts
 
 
 def test_program_global_adjustment_interval_as_the_api(tmp_path, fountain, small_fountain):
@@ -684,6 +686,8 @@ def test_program_bad_input_exits_1_naming_it(tmp_path, small_fountain):
     proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--contrast-threshold", "0",
                    cwd=tmp_path)
     _fails(tmp_path, proc, "--contrast-threshold")
+    proc = run_cli("--images", folder, "--calib", calib, "--output", output, "--max-points", "-1", cwd=tmp_path)
+    _fails(tmp_path, proc, "--max-points")
     proc = run_cli("--images", folder, "--right", folder, "--calib", calib, "--output", output, "--loop-closure",
                    cwd=tmp_path)
     _fails(tmp_path, proc, "--loop-closure", "--right")

@@ -3,7 +3,8 @@
     tripose-track --images <folder | video | list file> --calib calib.yml [--poses initial.txt]
                   --output trajectory.txt [--yaml result.yml] [--window N] [--min-inliers N]
                   [--threshold PX] [--local-adjustment [0|1]] [--loop-closure [0|1]] [--max-image-size PX]
-                  [--contrast-threshold C] [--global-adjustment-interval N] [--mode full | video]
+                  [--contrast-threshold C] [--max-points N] [--global-adjustment-interval N]
+                  [--mode full | video]
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
@@ -17,7 +18,8 @@ matching). On the rendered courtyard (640x480) it takes a fraction of the full m
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
 by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG) and the local adjustment is always
 on; --window, --min-inliers, --threshold and --loop-closure apply as in the full mode,
---max-image-size and --contrast-threshold do not (the points are followed in the full-size frames).
+--max-image-size, --contrast-threshold and --max-points do not (the points are followed in the
+full-size frames).
 With --right it tracks the rig with tripose.video.StereoVideoTracker: each followed point is found
 in the right image by the same flow, and no pose is needed.
 
@@ -165,11 +167,13 @@ def _parser():
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
     p.add_argument("--contrast-threshold", type=_positive_number("number"),
                    help="SIFT's contrast threshold (default 0.04; lower finds more points in low-contrast images)")
+    p.add_argument("--max-points", type=_whole_number(0),
+                   help="the strongest SIFT points kept per image (default 4000, 0: all)")
     return p
 
 
 def _feature_options(args):
-    """The detection options that --max-image-size and --contrast-threshold set."""
+    """The detection options that --max-image-size, --contrast-threshold and --max-points set."""
     from . import images
 
     options = images.FeatureOptions()
@@ -177,6 +181,8 @@ def _feature_options(args):
         options.max_image_size = args.max_image_size
     if args.contrast_threshold is not None:
         options.contrast_threshold = args.contrast_threshold
+    if args.max_points is not None:
+        options.max_points = args.max_points
     return options
 
 
@@ -717,8 +723,9 @@ def run(args) -> int:
     if args.mode == "video" and args.max_image_size is not None:
         raise InputError("--max-image-size: not used by --mode video (the points are followed in the full-size "
                          "frames)")
-    if args.mode == "video" and args.contrast_threshold is not None:
-        raise InputError("--contrast-threshold: not used by --mode video (its points are corners, not SIFT's)")
+    for value, option in ((args.contrast_threshold, "--contrast-threshold"), (args.max_points, "--max-points")):
+        if args.mode == "video" and value is not None:
+            raise InputError(f"{option}: not used by --mode video (its points are corners, not SIFT's)")
     if args.right is not None:
         return run_stereo(args)
     K, dist, relative = read_calibration(args.calib)
