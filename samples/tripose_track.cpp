@@ -64,25 +64,24 @@ const char* kUsage =
     "  --window N     register each frame against the last N keyframes (default 5, at least 2)\n"
     "  --min-inliers  a frame is lost when fewer features agree with its pose (default 15)\n"
     "  --threshold    the registration's inlier threshold (px, default 2)\n"
-    "  --local-adjustment 1: refine the window's frames and structure after each frame (default 0)\n"
+    "  --local-adjustment 0|1: refine the window's frames and structure after each frame (default 1)\n"
     "  --loop-closure 1: after each keyframe, look for a place seen before among the older keyframes and\n"
     "                 close the loop through it (default 0; it costs a place check per keyframe). A\n"
     "                 frame lost against the window is looked for among all keyframes either way\n"
     "  --global-adjustment-interval N: adjust every frame and the structure after each N keyframes (default\n"
-    "                 0: never); 1 with --contrast-threshold 0.01 is the most accurate on long sequences\n"
-    "                 and the slowest\n"
+    "                 0: never); 1 is the most accurate on long sequences and the slowest\n"
     "  --keyframe-parallax  a registered frame becomes a keyframe from this parallax on (deg, default 0.1)\n"
     "  --max-image-size     detect in images reduced to this longer side (px; default 1600, 0: full size)\n"
-    "  --contrast-threshold SIFT's contrast threshold (default 0.04): lower finds more, fainter points,\n"
-    "                       which hold a trajectory better where texture is scarce\n"
-    "  --max-points   the strongest SIFT points kept per image (default 4000, 0: all)\n"
+    "  --contrast-threshold SIFT's contrast threshold (default 0.01, tripose_images' 0.04): lower finds\n"
+    "                       more, fainter points, which hold a trajectory better\n"
+    "  --max-points   the strongest SIFT points kept per image (default 8192, tripose_images' 4000; 0: all)\n"
     "  --mode video   for a video in real time: points (goodFeaturesToTrack) followed from frame to frame\n"
     "                 by optical flow, detected afresh only in the frame after a keyframe or when fewer\n"
     "                 than 120 survive, and given to the tracker as linked observations (no descriptors,\n"
     "                 no matching; with --right, each is found in the right image by the same flow).\n"
-    "                 Keyframes from 0.5 deg of parallax unless --keyframe-parallax says otherwise, the\n"
-    "                 local adjustment always on (mono); --max-image-size, --contrast-threshold and\n"
-    "                 --max-points do not apply. Default: full (features detected and matched in every frame)\n"
+    "                 Keyframes from 0.5 deg of parallax unless --keyframe-parallax says otherwise;\n"
+    "                 --max-image-size, --contrast-threshold and --max-points do not apply. Default: full\n"
+    "                 (features detected and matched in every frame)\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
     "arguments or input (the message names the option, file, frame or key; no output is written).\n";
 
@@ -161,16 +160,13 @@ Options parseArguments(int argc, char** argv)
         throw argumentError("--contrast-threshold", "not used by --mode video (its points are corners, not SIFT's)");
     if (o.video && o.maxPoints >= 0)
         throw argumentError("--max-points", "not used by --mode video (its points are corners, not SIFT's)");
-    if (!o.right.empty() && o.track.localAdjustment)
-        throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
+    for (const auto& option : options)
+        if (option.first == "--local-adjustment" && !o.right.empty() && parseSwitch(option.first, option.second))
+            throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");
     if (!o.right.empty() && o.track.loopClosure)
         throw argumentError("--loop-closure", "not available with --right (the stereo tracker has none)");
     if (!o.right.empty() && o.track.globalAdjustmentInterval > 0)
         throw argumentError("--global-adjustment-interval", "not available with --right (the stereo tracker has none)");
-    // Followed points are seen from a few close keyframes only: without the local adjustment the
-    // structure and the poses drift together, every feature agreeing.
-    if (o.video && o.right.empty())
-        o.track.localAdjustment = true;
     return o;
 }
 
@@ -282,7 +278,7 @@ int main(int argc, char** argv)
     const cv::Matx33d rightK = stereo ? cv::Matx33d(rig.K[1]) : K;
     const char* const leftKey = stereo ? "K1" : "K";
     const int fixedFrames = stereo ? 1 : 2; // the frames whose images must be read
-    FeatureOptions features;
+    FeatureOptions features = trackingFeatureOptions();
     if (options.maxImageSize >= 0)
         features.maxImageSize = options.maxImageSize;
     if (options.contrastThreshold >= 0)

@@ -192,7 +192,7 @@ class TrackerOptions:
     Options of tripose.Tracker: the window of keyframes a frame is registered against, the support a pose needs (min_inliers), keyframes by parallax, the track checks, the local adjustment, and the RansacOptions (ransac) and MatchOptions (matching) it uses. Defaults are the library's.
     """
 
-    def __init__(self, *, window: int = 5, min_inliers: int = 15, keyframe_parallax_deg: float = 0.1, check_tracks: bool = True, local_adjustment: bool = False, loop_closure: bool = False, global_adjustment_interval: int = 0, robust: bool = True, ransac: RansacOptions = ..., matching: MatchOptions = ..., covariance: bool = False, max_frame_gap: int = 3) -> None:
+    def __init__(self, *, window: int = 5, min_inliers: int = 15, keyframe_parallax_deg: float = 0.1, check_tracks: bool = True, local_adjustment: bool = True, loop_closure: bool = False, global_adjustment_interval: int = 0, robust: bool = True, ransac: RansacOptions = ..., matching: MatchOptions = ..., covariance: bool = False, max_frame_gap: int = 3) -> None:
         """The defaults, with any field given as a keyword set to its value."""
 
     @property

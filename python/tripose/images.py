@@ -22,8 +22,8 @@ from typing import Iterator, Optional, Tuple
 
 import numpy as np
 
-__all__ = ["FeatureOptions", "read_image", "extract_features", "open_frames", "detection_scale",
-           "fit_segments_to_edges", "IMAGE_EXTENSIONS"]
+__all__ = ["FeatureOptions", "tracking_feature_options", "read_image", "extract_features", "open_frames",
+           "detection_scale", "fit_segments_to_edges", "IMAGE_EXTENSIONS"]
 
 _MISSING_OPENCV = "tripose.images needs OpenCV's contrib modules: pip install tripose[images]"
 
@@ -84,6 +84,14 @@ class FeatureOptions:
             if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
                     or not math.isfinite(value) or value < 0:
                 raise ValueError(f"{name}: expected a finite number >= 0, got {value!r}")
+
+
+def tracking_feature_options() -> FeatureOptions:
+    """The features a tripose.Tracker is fed: the FeatureOptions defaults with more and fainter SIFT
+    points (contrast threshold 0.01, the strongest 8192 kept), as tripose-track detects them: a
+    sequence's error accumulates from frame to frame, and more points hold it
+    (doc/studies/front_end_and_tracker.md, "Against COLMAP")."""
+    return FeatureOptions(contrast_threshold=0.01, max_points=8192)
 
 
 # --- reading ---------------------------------------------------------------------------------------

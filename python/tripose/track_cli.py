@@ -8,16 +8,17 @@
 
 The frames come from tripose.images.open_frames (a folder of images in natural name order, a list
 file, or a video); each one's features from tripose.images.extract_features (SIFT points, EDLines
-segments with LBD), given to tripose.Tracker with the calibration's K and dist (the tracker
-undistorts them).
+segments with LBD) with tracking_feature_options() (more and fainter SIFT points than the defaults;
+--contrast-threshold and --max-points change them), given to tripose.Tracker with the calibration's K
+and dist (the tracker undistorts them).
 
 --mode video tracks a monocular video in real time instead (tripose.video.VideoTracker): points are
 followed from frame to frame by optical flow and given to the tracker as linked observations, and
 detected afresh only in the frame after a keyframe or when too few survive (no descriptors, no
 matching). On the rendered courtyard (640x480) it takes a fraction of the full mode's time per frame
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
-by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG) and the local adjustment is always
-on; --window, --min-inliers, --threshold and --loop-closure apply as in the full mode,
+by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG); --window, --min-inliers,
+--threshold, --local-adjustment and --loop-closure apply as in the full mode,
 --max-image-size, --contrast-threshold and --max-points do not (the points are followed in the
 full-size frames).
 With --right it tracks the rig with tripose.video.StereoVideoTracker: each followed point is found
@@ -152,23 +153,23 @@ def _parser():
     p.add_argument("--threshold", type=_positive_number("number of pixels"),
                    help="RANSAC inlier threshold in px of full-size detection (default 2; grows with the "
                         "reduction of --max-image-size)")
-    p.add_argument("--local-adjustment", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
-                   help="refine the window's frames and structure after each registration")
+    p.add_argument("--local-adjustment", type=_switch, nargs="?", const=True, default=None, metavar="0|1",
+                   help="refine the window's frames and structure after each registration (default 1)")
     p.add_argument("--loop-closure", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
                    help="after each keyframe, look for a place seen before among the older keyframes and close "
                         "the loop through it (a place check per keyframe)")
     p.add_argument("--global-adjustment-interval", type=_whole_number(0), metavar="N",
-                   help="adjust every frame and the structure after each N keyframes (default 0: never); 1 with "
-                        "--contrast-threshold 0.01 is the most accurate on long sequences and the slowest")
+                   help="adjust every frame and the structure after each N keyframes (default 0: never); 1 is "
+                        "the most accurate on long sequences and the slowest")
     p.add_argument("--mode", choices=("full", "video"), default="full",
                    help="full: features detected and matched in every frame (default); video: points followed "
                         "by optical flow, detected afresh after keyframes (real time; with --right, a stereo rig)")
     p.add_argument("--max-image-size", type=_whole_number(0),
                    help="detect features in images reduced to this longer side (px; default 1600, 0: full size)")
     p.add_argument("--contrast-threshold", type=_positive_number("number"),
-                   help="SIFT's contrast threshold (default 0.04; lower finds more points in low-contrast images)")
+                   help="SIFT's contrast threshold (default 0.01; lower finds more, fainter points)")
     p.add_argument("--max-points", type=_whole_number(0),
-                   help="the strongest SIFT points kept per image (default 4000, 0: all)")
+                   help="the strongest SIFT points kept per image (default 8192, 0: all)")
     return p
 
 
@@ -176,7 +177,7 @@ def _feature_options(args):
     """The detection options that --max-image-size, --contrast-threshold and --max-points set."""
     from . import images
 
-    options = images.FeatureOptions()
+    options = images.tracking_feature_options()
     if args.max_image_size is not None:
         options.max_image_size = args.max_image_size
     if args.contrast_threshold is not None:
@@ -456,7 +457,8 @@ def tracker_options(args, pixel_scale: float = 1.0, options=None):
         options.min_inliers = args.min_inliers
     if args.threshold is not None:
         options.ransac.threshold = args.threshold
-    options.local_adjustment = options.local_adjustment or bool(args.local_adjustment)
+    if args.local_adjustment is not None:
+        options.local_adjustment = bool(args.local_adjustment)
     options.loop_closure = options.loop_closure or bool(args.loop_closure)
     if args.global_adjustment_interval is not None:
         options.global_adjustment_interval = args.global_adjustment_interval

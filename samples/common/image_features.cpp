@@ -94,6 +94,14 @@ cv::Mat undistorted(const cv::Mat& positions, const cv::Matx33d& K, const cv::Ma
 
 } // namespace
 
+FeatureOptions trackingFeatureOptions()
+{
+    FeatureOptions options;
+    options.contrastThreshold = 0.01;
+    options.maxPoints = 8192;
+    return options;
+}
+
 double detectionScale(const cv::Size& imageSize, int maxImageSize)
 {
     const int longer = std::max(imageSize.width, imageSize.height);

@@ -66,6 +66,11 @@ struct FeatureOptions
     int maxImageSize = 1600;
 };
 
+/** The features a tracker is fed: the FeatureOptions defaults with more and fainter SIFT points
+(contrast threshold 0.01, the strongest 8192 kept): a sequence's error accumulates from frame to
+frame, and more points hold it (doc/studies/front_end_and_tracker.md, "Against COLMAP"). */
+FeatureOptions trackingFeatureOptions();
+
 /** How many pixels of an image of @p imageSize one pixel of its detection image spans
 (FeatureOptions::maxImageSize): 1 when the image is not reduced. The features' positions are that
 much less precise in the image's pixels, so their tolerances (matching, RANSAC) grow by it. */

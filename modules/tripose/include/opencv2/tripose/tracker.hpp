@@ -35,7 +35,7 @@ struct CV_EXPORTS TrackerParams
     bool checkTracks;
     //! After each registration, refine the window's registered frames and their structure against the
     //! earlier keyframes, splitting off the features matched by the tracker that disagree with the
-    //! result (default false).
+    //! result (default true; off, frames take less time and drift more).
     bool localAdjustment;
     /** After each new keyframe, look for a place seen before among the keyframes older than the
     window (by their descriptors); when the frame registers against one, its tracks join theirs, and

@@ -15,6 +15,14 @@ namespace tripose {
 
 namespace {
 
+/** The Cauchy loss scale of matched tracks, as a fraction of the RANSAC threshold (0.5 px at 2 px).
+They are linked by matching, not by a consensus on these poses: under a Huber loss at the threshold
+a wrong link pulls by its whole residual up to the threshold, under a Cauchy loss its pull fades
+beyond the scale. Tracks the caller links keep the Huber loss at the threshold: the caller checks
+its links, and the video mode's followed points drift under the Cauchy loss
+(doc/studies/front_end_and_tracker.md, "Against COLMAP"). */
+const double kMatchedLossScaleOfThreshold = 0.25;
+
 //! The tracks of kind @p kind seen by at least two of @p frames, at least one of them in @p among.
 std::vector<int> tracksSeenTwice(const TrackStore& store, FeatureKind kind, const std::vector<int>& among,
                                  const std::vector<int>& frames)
@@ -40,7 +48,7 @@ std::vector<int> tracksSeenTwice(const TrackStore& store, FeatureKind kind, cons
 } // namespace
 
 bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                  const TrackerOptions& options)
+                  const TrackerOptions& options, TrackLinks links)
 {
     std::vector<int> all = fixed;
     all.insert(all.end(), free.begin(), free.end());
@@ -56,8 +64,9 @@ bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::ve
     const ViewSet set =
         buildSeveralPosesSet(problem.arguments, problem.Rs, problem.ts, fixedFlags, "fixed", poseOfView, poses);
     RefineOptions refine;
-    refine.loss = Loss::Huber;
-    refine.lossScale = options.ransac.threshold;
+    const bool matched = links == TrackLinks::Matched;
+    refine.loss = matched ? Loss::Cauchy : Loss::Huber;
+    refine.lossScale = (matched ? kMatchedLossScaleOfThreshold : 1.0) * options.ransac.threshold;
     const double rms = refineSeveralPoses(set, poseOfView, poses, refine);
     if (!std::isfinite(rms))
         return false;
@@ -105,14 +114,15 @@ int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& amon
 }
 
 bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                            const std::vector<int>& splitIn, const TrackerOptions& options, int rounds)
+                            const std::vector<int>& splitIn, const TrackerOptions& options, TrackLinks links,
+                            int rounds)
 {
     std::vector<int> all = fixed;
     all.insert(all.end(), free.begin(), free.end());
     bool adjusted = false;
     for (int round = 0; round < rounds; ++round)
     {
-        if (!adjustFrames(store, free, fixed, options))
+        if (!adjustFrames(store, free, fixed, options, links))
             return adjusted;
         adjusted = true;
         if (splitDisagreeingObservations(store, splitIn, all, options.ransac.threshold) == 0)

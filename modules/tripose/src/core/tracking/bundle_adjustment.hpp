@@ -12,13 +12,23 @@
 
 namespace tripose {
 
+//! Who linked the observations of the tracks an adjustment refines, which sets how it weighs them.
+enum class TrackLinks
+{
+    //! The tracker's matching: a wrong link may lie within the RANSAC threshold (Cauchy loss at a
+    //! quarter of the threshold).
+    Matched,
+    //! The caller, who checks them as it follows them (Huber loss at the threshold).
+    ByCaller
+};
+
 /** Refines the poses of frames @p free and the structure of the tracks they see with at least one
-other frame of @p free or @p fixed, with @p fixed held (Huber loss at the RANSAC threshold). False,
-poses unchanged, when fewer than four features qualify or the refinement fails. @p fixed must hold
-two frames at distinct centres.
+other frame of @p free or @p fixed, with @p fixed held, under the loss of @p links. False, poses
+unchanged, when fewer than four features qualify or the refinement fails. @p fixed must hold two
+frames at distinct centres.
 */
 bool adjustFrames(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                  const TrackerOptions& options);
+                  const TrackerOptions& options, TrackLinks links);
 
 /** Splits off every observation in frames @p among (a subset of @p frames) of the tracks seen by one
 of @p among and at least twice in @p frames whose reprojection error at the structure triangulated
@@ -34,7 +44,8 @@ int splitDisagreeingObservations(TrackStore& store, const std::vector<int>& amon
 repeated while observations are split, at most @p rounds times: a bundle adjustment that is not
 pulled by the wrong links it finds. False when the first adjustment fails. */
 bool adjustAndSplitOutliers(TrackStore& store, const std::vector<int>& free, const std::vector<int>& fixed,
-                            const std::vector<int>& splitIn, const TrackerOptions& options, int rounds);
+                            const std::vector<int>& splitIn, const TrackerOptions& options, TrackLinks links,
+                            int rounds);
 
 } // namespace tripose
 

@@ -324,7 +324,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
             // linked here, frame to frame, and a wrong link is split off.
             const std::vector<int> splitIn = byIds_ ? std::vector<int>() : free;
             runCatchingInputErrors(
-                [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, kAdjustmentRounds); });
+                [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, links(), kAdjustmentRounds); });
         }
     }
 }
@@ -424,7 +424,8 @@ void Tracker::adjustFramesAfter(int first)
     }
     if (fixed.size() < 2 || free.empty())
         return;
-    runCatchingInputErrors([&] { adjustAndSplitOutliers(store_, free, fixed, free, options_, kAdjustmentRounds); });
+    runCatchingInputErrors(
+        [&] { adjustAndSplitOutliers(store_, free, fixed, free, options_, links(), kAdjustmentRounds); });
 }
 
 } // namespace tripose

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "../geometry/distortion.hpp"
+#include "bundle_adjustment.hpp"
 #include "frame_features.hpp"
 #include "frame_matching.hpp"
 #include "keyframe_retrieval.hpp"
@@ -83,6 +84,8 @@ private:
     //! The registered frames after frame @p first and the structure adjusted together, the given
     //! frames and the frames up to @p first held (-1: every registered frame).
     void adjustFramesAfter(int first);
+    //! Who linked the tracks' observations: the caller (observations by id) or the matching.
+    TrackLinks links() const { return byIds_ ? TrackLinks::ByCaller : TrackLinks::Matched; }
     void associateByMatching(int frame, const FrameFeatures& features);
     void link(FeatureKind kind, int from, int to, const Matches& matches);
 

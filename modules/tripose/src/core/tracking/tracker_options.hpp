@@ -33,11 +33,11 @@ struct TrackerOptions
     //! tracks, so that a wrong link does not carry on into later windows.
     bool checkTracks = true;
     //! After each registration, the window's registered frames, the new one and their structure are
-    //! refined together (Huber loss at the RANSAC threshold) against the earlier keyframes, held fixed;
-    //! the observations that disagree with the result leave their tracks and the refinement is run
-    //! again (at most three rounds), as in the global adjustment; observations the caller linked by id
-    //! are not split here (only by the registration).
-    bool localAdjustment = false;
+    //! refined together (Cauchy loss at a quarter of the RANSAC threshold) against the earlier
+    //! keyframes, held fixed; the observations that disagree with the result leave their tracks and
+    //! the refinement is run again (at most three rounds), as in the global adjustment; observations
+    //! the caller linked by id are not split here (only by the registration).
+    bool localAdjustment = true;
     /** After each new keyframe, the keyframes older than the window that look most like it (by
     descriptors) are tried as a place seen before: when the frame registers against one of them and
     its neighbours with twice minInliers (and half of the features shared), its tracks join theirs;
