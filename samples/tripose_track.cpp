@@ -170,6 +170,19 @@ Options parseArguments(int argc, char** argv)
     return o;
 }
 
+//! R12 (3x3 or a rotation vector) and t12 of a calibration file as a rotation and a translation.
+void readRelativePose(const cv::Mat& R12, const cv::Mat& t12, cv::Matx33d& R, cv::Vec3d& t)
+{
+    cv::Mat rotation;
+    R12.convertTo(rotation, CV_64F);
+    if (rotation.total() == 3)
+        cv::Rodrigues(rotation.reshape(1, 3), rotation);
+    R = cv::Matx33d(rotation.reshape(1, 3));
+    cv::Mat translation;
+    t12.convertTo(translation, CV_64F);
+    t = cv::Vec3d(translation.reshape(1, 3));
+}
+
 //! The poses of the first frames: from --poses, else frame 0 at the origin and frame 1 at R12, t12.
 std::vector<tripose_samples::StampedPose> initialPoses(const Options& o, const tripose_samples::Problem& calib)
 {
@@ -188,14 +201,7 @@ std::vector<tripose_samples::StampedPose> initialPoses(const Options& o, const t
     StampedPose first, second;
     first.R = cv::Matx33d::eye();
     first.t = cv::Vec3d(0, 0, 0);
-    cv::Mat R;
-    calib.R12.convertTo(R, CV_64F);
-    if (R.total() == 3)
-        cv::Rodrigues(R.reshape(1, 3), R);
-    second.R = cv::Matx33d(R.reshape(1, 3));
-    cv::Mat t;
-    calib.t12.convertTo(t, CV_64F);
-    second.t = cv::Vec3d(t.reshape(1, 3));
+    readRelativePose(calib.R12, calib.t12, second.R, second.t);
     return { first, second };
 }
 
@@ -294,14 +300,7 @@ int main(int argc, char** argv)
             videoRig.K[c] = cv::Matx33d(rig.K[c]);
             videoRig.dist[c] = rig.dist[c];
         }
-        cv::Mat rigR;
-        rig.R12.convertTo(rigR, CV_64F);
-        if (rigR.total() == 3)
-            cv::Rodrigues(rigR.reshape(1, 3), rigR);
-        videoRig.R = cv::Matx33d(rigR.reshape(1, 3));
-        cv::Mat rigT;
-        rig.t12.convertTo(rigT, CV_64F);
-        videoRig.t = cv::Vec3d(rigT.reshape(1, 3));
+        readRelativePose(rig.R12, rig.t12, videoRig.R, videoRig.t);
         video.reset(new VideoFrontEnd(FollowOptions(), videoRig));
     }
     else if (options.video)

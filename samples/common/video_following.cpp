@@ -297,10 +297,10 @@ void VideoFrontEnd::detect(const cv::Mat& grey)
 cv::Mat VideoFrontEnd::inRight(const cv::Mat& grey, const cv::Mat& right, const std::vector<cv::Point2f>& pixels) const
 {
     cv::Mat out = notFound((int)pixels.size(), 2);
-    std::vector<cv::Point2f> moved;
-    const std::vector<bool> kept = flowThereAndBack(grey, right, pixels, moved, options_);
     if (pixels.empty())
         return out;
+    std::vector<cv::Point2f> moved;
+    const std::vector<bool> kept = flowThereAndBack(grey, right, pixels, moved, options_);
     const std::vector<cv::Point2f> l = undistorted(pixels, rig_.K[0], rig_.dist[0]);
     const std::vector<cv::Point2f> r = undistorted(moved, rig_.K[1], rig_.dist[1]);
     for (size_t i = 0; i < pixels.size(); ++i)
