@@ -1,6 +1,6 @@
 """The video mode (tripose.video.VideoTracker: points followed by optical flow, detected afresh after
-keyframes) against the full mode (tripose.images.extract_features and tripose.Tracker.track in every
-frame), side by side in one process on the same frames (read into memory first; reading is not
+keyframes) against the full mode (tripose.images.extract_features with tracking_feature_options() and
+tripose.Tracker.track in every frame, as tripose-track), side by side in one process on the same frames (read into memory first; reading is not
 timed): per sequence and mode, the median and the 90th percentile of the time per frame (ms and
 frames per second), the median processor time per frame (the process's, which other programs on
 the machine do not inflate), keyframes, frames with a pose, and the last frame's rotation and position
@@ -76,7 +76,7 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             tracker = StereoVideoTracker(Ks[0], Ks[0], R12, t12, options=VideoOptions(segments=segments))
         else:
             tracker = tripose.StereoTracker(Ks[0], Ks[0], R12, t12)
-            options = images.FeatureOptions()
+            options = images.tracking_feature_options()
         for k, (left, right) in enumerate(frames):
             start, start_cpu = time.perf_counter(), time.process_time()
             if mode == "video":
@@ -104,7 +104,7 @@ def run(mode, Ks, frames, truth, segments, parallax, local_adjustment):
             keyframes += bool(frame.result.keyframe)
     if not stereo and mode != "video":
         tracker = tripose.Tracker(Ks[0])
-        options = images.FeatureOptions()
+        options = images.tracking_feature_options()
         for k, image in enumerate(frames):
             start, start_cpu = time.perf_counter(), time.process_time()
             features = images.extract_features(image, Ks[k], options=options)
