@@ -17,11 +17,13 @@ PROGRAM = REPO / "build" / "test" / "evaluation" / "tripose_track_vgg"
 
 
 def test_cpp_and_python_trackers_agree_to_1e9(tmp_path):
-    # A missing program is an error, never a skip: the test command builds it before these tests.
+    # A missing program is an error, never a skip: the test command builds it before these tests. The
+    # program runs with the local adjustment, as the library does by default (the program does not).
     assert PROGRAM.exists(), f"{PROGRAM} is not built; run scripts/test.sh"
     out, observations = tmp_path / "track.yml", tmp_path / "observations.yml"
     proc = subprocess.run([str(PROGRAM), "--data", str(REPO / "test" / "data" / "vgg" / "Model-House"),
-                           "--check-tracks", "0", "--observations", str(observations), "--output", str(out)],
+                           "--check-tracks", "0", "--local-refine", "1", "--observations", str(observations),
+                           "--output", str(out)],
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     fs = cv2.FileStorage(str(out), cv2.FILE_STORAGE_READ)
