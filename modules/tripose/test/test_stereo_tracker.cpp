@@ -141,19 +141,23 @@ struct StereoSequence
         return p;
     }
 
+    //! Where a camera at @p p sees @p X, with @p noise px; false when behind it or outside the image.
+    bool project(const Pose& p, const Vec3d& X, RNG& rng, double noise, Vec2d& x) const
+    {
+        const Vec3d c = p.R * X + p.t;
+        if (c[2] < 1.0)
+            return false;
+        const Vec3d h = K * c;
+        x = Vec2d(h[0] / h[2] + rng.gaussian(noise), h[1] / h[2] + rng.gaussian(noise));
+        return x[0] >= 0 && x[0] < kWidth && x[1] >= 0 && x[1] < kHeight;
+    }
+
     //! What a camera at @p p sees of the scene, with @p noise px and descriptor noise.
     ImageFeatures observe(const Pose& p, RNG& rng, double noise) const
     {
         ImageFeatures f;
         Mat pts(0, 2, CV_64F), pd(0, kDescriptorLength, CV_32F), segs(0, 4, CV_64F), ld(0, kDescriptorLength, CV_32F);
-        const auto project = [&](const Vec3d& X, Vec2d& x) {
-            const Vec3d c = p.R * X + p.t;
-            if (c[2] < 1.0)
-                return false;
-            const Vec3d h = K * c;
-            x = Vec2d(h[0] / h[2] + rng.gaussian(noise), h[1] / h[2] + rng.gaussian(noise));
-            return x[0] >= 0 && x[0] < kWidth && x[1] >= 0 && x[1] < kHeight;
-        };
+        const auto project = [&](const Vec3d& X, Vec2d& x) { return this->project(p, X, rng, noise, x); };
         const auto descriptor = [&](const Mat& source, int row) {
             Mat d = source.row(row).clone();
             Mat n(1, kDescriptorLength, CV_32F);
@@ -203,14 +207,7 @@ LinkedObservations observeLinked(const StereoSequence& seq, int k, RNG& rng, dou
     o.rightPoints.create(0, 2, CV_64F);
     o.segments.create(0, 4, CV_64F);
     o.rightSegments.create(0, 4, CV_64F);
-    const auto project = [&](const Pose& p, const Vec3d& X, Vec2d& x) {
-        const Vec3d c = p.R * X + p.t;
-        if (c[2] < 1.0)
-            return false;
-        const Vec3d h = seq.K * c;
-        x = Vec2d(h[0] / h[2] + rng.gaussian(noise), h[1] / h[2] + rng.gaussian(noise));
-        return x[0] >= 0 && x[0] < kWidth && x[1] >= 0 && x[1] < kHeight;
-    };
+    const auto project = [&](const Pose& p, const Vec3d& X, Vec2d& x) { return seq.project(p, X, rng, noise, x); };
     const Pose left = seq.poses[k], right = seq.rightPose(k);
     std::vector<int> pointIds, lineIds;
     for (int i = 0; i < (int)seq.points.size(); ++i)
