@@ -4,6 +4,7 @@
 
 #include "rotation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -47,6 +48,22 @@ Eigen::Matrix3d nearestRotation(const Eigen::Matrix3d& M)
     if ((U * V.transpose()).determinant() < 0)
         U.col(2) = -U.col(2);
     return U * V.transpose();
+}
+
+Eigen::Vector3d rotationVector(const Eigen::Matrix3d& R)
+{
+    // 2 sin(angle) axis is the vee of R - R^T; with cos(angle) from the trace, atan2 gives the angle
+    // to full precision away from a half turn, where the axis comes from the symmetric part instead.
+    const Eigen::Vector3d v(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));
+    const double cosine = std::max(-1.0, std::min(1.0, 0.5 * (R.trace() - 1.0)));
+    if (cosine < 0)
+    {
+        const Eigen::AngleAxisd rotation(R);
+        return rotation.angle() * rotation.axis();
+    }
+    const double sine = 0.5 * v.norm();
+    const double angle = std::atan2(sine, cosine);
+    return sine > 1e-15 ? Eigen::Vector3d(v * (0.5 * angle / sine)) : Eigen::Vector3d(0.5 * v);
 }
 
 } // namespace tripose

@@ -38,6 +38,9 @@ inline Eigen::Matrix3d rotationFromVector(const Eigen::Vector3d& w)
     return rotateLeft(w, Eigen::Matrix3d::Identity());
 }
 
+//! The rotation vector (axis times angle in radians) of the rotation @p R, accurate near the identity.
+Eigen::Vector3d rotationVector(const Eigen::Matrix3d& R);
+
 } // namespace tripose
 
 #endif // TRIPOSE_CORE_GEOMETRY_ROTATION_HPP

@@ -41,9 +41,9 @@ struct TrackerOptions
     /** After each new keyframe, the keyframes older than the window that look most like it (by
     descriptors) are tried as a place seen before: when the frame registers against one of them and
     its neighbours with twice minInliers (and half of the features shared), its tracks join theirs;
-    when its pose through the place disagrees with its tracked pose (a loop), the correction is
-    spread along the frames since and every registered frame is adjusted with the structure (given
-    frames held). Keyframes that share minInliers tracks with a frame then join its window. It costs
+    when its pose through the place disagrees with its tracked pose (a loop), a pose graph moves the
+    frames since (their tracked relative poses against the frame's pose through the place) and every
+    registered frame is adjusted with the structure (given frames held). Keyframes that share minInliers tracks with a frame then join its window. It costs
     a place check per keyframe (doc/studies/front_end_and_tracker.md), hence off by default. Needs
     descriptors (frames given as features). */
     bool loopClosure = false;
