@@ -38,12 +38,10 @@ std::vector<CameraPose> ringPoses()
     return poses;
 }
 
+//! The pose of @p b relative to @p a: the edge from a to b that agrees with them.
 CameraPose relative(const CameraPose& a, const CameraPose& b)
 {
-    CameraPose out;
-    out.R = b.R * a.R.transpose();
-    out.t = b.t - out.R * a.t;
-    return out;
+    return ::tripose::poseRelativeTo(b, a);
 }
 
 PoseGraphEdge edge(int from, int to, const CameraPose& relativePose)

@@ -39,6 +39,16 @@ inline CameraPose inversePose(const CameraPose& pose)
     return p;
 }
 
+//! The pose of a camera at world pose @p pose in the frame of a camera at world pose @p frame:
+//! composePose(poseRelativeTo(pose, frame), frame) is @p pose.
+inline CameraPose poseRelativeTo(const CameraPose& pose, const CameraPose& frame)
+{
+    CameraPose p;
+    p.R = pose.R * frame.R.transpose();
+    p.t = pose.t - p.R * frame.t;
+    return p;
+}
+
 //! [v]x, the matrix of the cross product v x (.).
 inline Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 {

@@ -18,15 +18,6 @@ namespace tripose {
 
 namespace {
 
-//! Pose of a camera at world pose @p pose in the frame of a camera at world pose @p frame.
-CameraPose relativePose(const CameraPose& pose, const CameraPose& frame)
-{
-    CameraPose p;
-    p.R = pose.R * frame.R.transpose();
-    p.t = pose.t - p.R * frame.t;
-    return p;
-}
-
 /** M with v_a = M v, where v = [r1; r2; r3; t / scale] is the unknown camera's pose relative to the
 reference frame and v_a the same camera relative to view a, which is at @p a in the reference frame:
 R_a = R R_a^T gives column j of R_a as sum_k R_a(j, k) r_k, and t_a = t - R_a t_a(ref) as
@@ -159,10 +150,10 @@ int MultiViewSystem::pairFor(int a, int b)
     View& vn = pair.views.views[ViewSet::kView3];
     va.camera = set_.views[a].camera;
     vb.camera = set_.views[b].camera;
-    vb.pose = relativePose(set_.views[b].pose, set_.views[a].pose);
+    vb.pose = poseRelativeTo(set_.views[b].pose, set_.views[a].pose);
     vn.camera = set_.views[estimated_].camera;
     vn.estimated = true;
-    pair.M = pairTransform(relativePose(set_.views[a].pose, reference_), scale_);
+    pair.M = pairTransform(poseRelativeTo(set_.views[a].pose, reference_), scale_);
     pair.pointLocal.assign(set_.numPoints, -1);
     pair.lineLocal.assign(set_.numLines, -1);
     pairs_.push_back(pair);

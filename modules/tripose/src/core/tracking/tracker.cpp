@@ -15,30 +15,17 @@
 #include "../support/error.hpp"
 #include "bundle_adjustment.hpp"
 #include "frame_arguments.hpp"
+#include "loop_correction.hpp"
 #include "place_registration.hpp"
-#include "pose_graph.hpp"
 #include "window_registration.hpp"
 
 namespace tripose {
 
 namespace {
 
-// A place seen again moves the trajectory when the frame's pose through it differs from its tracked
-// pose by more than this rotation (radians) or this share of the distance to the place's keyframe.
-const double kLoopAngle = 0.1 * M_PI / 180.0;
-const double kLoopShift = 0.002;
 // Every adjustment splits off the observations that disagree with its result and adjusts again, at
 // most this many times in all: rounds after the first remove the wrong links the first one hid.
 const int kAdjustmentRounds = 3;
-
-//! The pose of frame b relative to frame a.
-CameraPose relativePose(const CameraPose& a, const CameraPose& b)
-{
-    CameraPose out;
-    out.R = b.R * a.R.transpose();
-    out.t = b.t - out.R * a.t;
-    return out;
-}
 
 } // namespace
 
@@ -134,7 +121,7 @@ void Tracker::associateByMatching(int frame, const FrameFeatures& features)
         {
             // Both poses known: matched under their epipolar geometry.
             const Eigen::Matrix3d F =
-                fundamentalFromPose(before.K, current.K, relativePose(before.pose, current.pose));
+                fundamentalFromPose(before.K, current.K, poseRelativeTo(current.pose, before.pose));
             const FrameFeatures& a = recent_.back().second;
             if (frame == 1)
                 givenPairAgreement_ = epipolarAgreement(a, features, F, options_.matching);
@@ -345,11 +332,7 @@ void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestR
         if (place.registered)
         {
             result.recognisedKeyframe = keyframe;
-            const CameraPose& tracked = store_.frames[frame].pose;
-            const double angle = Eigen::AngleAxisd(place.pose.R * tracked.R.transpose()).angle();
-            const double shift = (place.pose.centre() - tracked.centre()).norm();
-            const double reach = (store_.frames[keyframe].pose.centre() - tracked.centre()).norm();
-            if (angle > kLoopAngle || shift > kLoopShift * reach)
+            if (closesLoop(store_.frames[frame].pose, place.pose, store_.frames[keyframe].pose))
             {
                 closeLoop(frame, keyframe, place.pose);
                 closed = true;
@@ -391,67 +374,7 @@ Registration Tracker::recognisePlace(int frame, const FrameFeatures& features,
 
 void Tracker::closeLoop(int frame, int keyframe, const CameraPose& loopPose)
 {
-    // The graph: the keyframe (held) and the registered frames since, linked by their tracked
-    // relative poses (consecutive frames, and keyframes up to two windows apart that share minInliers
-    // tracks: farther ones may share only the tracks the loop just joined), and the keyframe linked
-    // to the frame by the frame's pose through the place.
-    std::vector<int> nodes;
-    for (int k = keyframe; k <= frame; ++k)
-        if (k == keyframe || store_.frames[k].status == FrameStatus::Registered)
-            nodes.push_back(k);
-    std::vector<int> nodeOf(frame + 1, -1);
-    std::vector<CameraPose> poses;
-    std::vector<bool> held;
-    for (size_t n = 0; n < nodes.size(); ++n)
-    {
-        nodeOf[nodes[n]] = (int)n;
-        poses.push_back(store_.frames[nodes[n]].pose);
-        held.push_back(nodes[n] == keyframe);
-    }
-    std::vector<PoseGraphEdge> edges;
-    auto addEdge = [&](int a, int b, const CameraPose& relative) {
-        PoseGraphEdge edge;
-        edge.from = nodeOf[a];
-        edge.to = nodeOf[b];
-        edge.relative = relative;
-        edges.push_back(edge);
-    };
-    double steps = 0;
-    for (size_t n = 1; n < nodes.size(); ++n)
-    {
-        addEdge(nodes[n - 1], nodes[n], relativePose(poses[n - 1], poses[n]));
-        steps += (poses[n].centre() - poses[n - 1].centre()).norm();
-    }
-    const int span = 2 * options_.window;
-    for (int k : nodes)
-        if (k != frame && store_.frames[k].keyframe)
-            for (const auto& shared : keyframesSharingTracks(store_, k, options_.minInliers))
-            {
-                const int other = shared.first;
-                if (other > k + 1 && other < frame && other - k <= span && nodeOf[other] >= 0)
-                    addEdge(k, other, relativePose(poses[nodeOf[k]], poses[nodeOf[other]]));
-            }
-    addEdge(keyframe, frame, relativePose(store_.frames[keyframe].pose, loopPose));
-
-    // Started from the correction spread along the frames: the world moved by G maps the frame's
-    // tracked pose onto its pose through the loop (T_loop = T_frame * G^-1, so G = T_loop^-1 *
-    // T_frame), and frame k gets the share (k - keyframe) / (frame - keyframe) of G's rotation angle
-    // and translation; the graph then spreads it by the frames' links instead of their numbers.
-    const CameraPose& tracked = store_.frames[frame].pose;
-    const Eigen::Matrix3d RG = loopPose.R.transpose() * tracked.R;
-    const Eigen::Vector3d tG = loopPose.R.transpose() * (tracked.t - loopPose.t);
-    const Eigen::AngleAxisd rotation(RG);
-    for (size_t n = 1; n < nodes.size(); ++n)
-    {
-        const double share = double(nodes[n] - keyframe) / double(frame - keyframe);
-        const Eigen::Matrix3d Ra = Eigen::AngleAxisd(share * rotation.angle(), rotation.axis()).toRotationMatrix();
-        poses[n].t = poses[n].t - poses[n].R * Ra.transpose() * (share * tG);
-        poses[n].R = poses[n].R * Ra.transpose();
-    }
-    const double scale = steps > 0 ? steps / double(nodes.size() - 1) : 1.0;
-    runCatchingInputErrors([&] { optimizePoseGraph(poses, held, edges, scale); });
-    for (size_t n = 1; n < nodes.size(); ++n)
-        store_.frames[nodes[n]].pose = poses[n];
+    correctLoop(store_, keyframe, frame, loopPose, options_.minInliers, 2 * options_.window);
     adjustFramesAfter(keyframe);
 }
 

@@ -1,0 +1,32 @@
+// This file is part of OpenCV project.
+// It is subject to the license terms in the LICENSE file found in the top-level directory
+// of this distribution and at http://opencv.org/license.html.
+
+#ifndef TRIPOSE_CORE_TRACKING_LOOP_CORRECTION_HPP
+#define TRIPOSE_CORE_TRACKING_LOOP_CORRECTION_HPP
+
+#include "track_store.hpp"
+
+namespace tripose {
+
+/** Whether a frame's pose through a place, @p loopPose, and its tracked pose @p tracked differ enough
+to close a loop: by more than 0.1 deg of rotation, or a shift of more than 0.2 % of the distance
+from the frame to the place's keyframe at @p keyframePose. Nearer poses are the same pose within
+the registrations' errors, and moving the trajectory for them would only add the place's noise. */
+bool closesLoop(const CameraPose& tracked, const CameraPose& loopPose, const CameraPose& keyframePose);
+
+/** Corrects the poses of the frames after keyframe @p keyframe up to frame @p frame (a loop closed:
+the frame registered through the keyframe's place at @p loopPose) by a pose graph. Its poses are the
+keyframe's (held, as are given frames) and those of the frames in between registered in the
+keyframe's map; its edges the tracked relative poses of consecutive frames and of keyframes up to
+@p span frames apart that share @p minShared tracks (farther ones may share only the tracks the loop
+just joined), and the keyframe's pose relative to @p loopPose. The correction starts spread along the
+frames (frame k gets the share (k - keyframe) / (frame - keyframe) of the rotation and translation that
+takes the frame's tracked pose onto @p loopPose); the graph then spreads it by the frames' links
+(optimizePoseGraph(), a radian weighed as the mean step between the frames). A graph that cannot be
+solved leaves the spread. */
+void correctLoop(TrackStore& store, int keyframe, int frame, const CameraPose& loopPose, int minShared, int span);
+
+} // namespace tripose
+
+#endif // TRIPOSE_CORE_TRACKING_LOOP_CORRECTION_HPP
