@@ -4,7 +4,8 @@
 
 // The loop closure's pose graph: edges that agree with the true poses bring perturbed poses back to
 // them; a chain whose steps carry a bias, closed by one true loop edge, ends far nearer the truth at
-// every pose than the chain alone; held poses never move; bad graphs are refused naming the argument.
+// every pose than the chain alone; held poses never move; bad graphs are refused naming the argument;
+// the rotation vector of its errors is exact near the identity.
 
 #include "test_precomp.hpp"
 
@@ -75,6 +76,18 @@ void expectRefusalNaming(std::vector<CameraPose> poses, const std::vector<bool>&
     catch (const ::tripose::Error& e)
     {
         EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+}
+
+TEST(Tripose_PoseGraph, rotation_vector_inverts_the_rotation_from_tiny_angles_to_a_half_turn)
+{
+    // The graph's rotation error: exact near the identity, where the edges' errors are.
+    const Eigen::Vector3d axis = Eigen::Vector3d(1, -2, 0.5).normalized();
+    for (double angle : { 0.0, 1e-12, 1e-8, 1e-4, 0.1, 1.0, 2.0, 3.0, M_PI - 1e-6 })
+    {
+        const Eigen::Vector3d w = angle * axis;
+        const Eigen::Vector3d back = ::tripose::rotationVector(::tripose::rotationFromVector(w));
+        EXPECT_LT((back - w).norm(), 1e-15 + 1e-9 * angle) << "angle " << angle;
     }
 }
 
