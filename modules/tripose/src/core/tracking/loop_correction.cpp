@@ -58,15 +58,19 @@ void correctLoop(TrackStore& store, int keyframe, int frame, const CameraPose& l
         steps += (poses[n].centre() - poses[n - 1].centre()).norm();
         ++stepCount;
     }
+    // Per node, the keyframes among the nodes up to it: how far apart two keyframes are.
+    std::vector<int> keyframeRank(nodes.size(), 0);
+    for (size_t n = 1; n < nodes.size(); ++n)
+        keyframeRank[n] = keyframeRank[n - 1] + (store.frames[nodes[n]].keyframe ? 1 : 0);
     for (int k : nodes)
         if (k != frame && store.frames[k].keyframe)
             for (const auto& shared : keyframesSharingTracks(store, k, minShared))
             {
                 const int other = shared.first;
-                if (other > k + 1 && other < frame && other - k <= span && nodeOf[other] >= 0)
+                if (other > k && other < frame && nodeOf[other] > nodeOf[k] + 1 &&
+                    keyframeRank[nodeOf[other]] - keyframeRank[nodeOf[k]] <= span)
                     addEdge(k, other, poseRelativeTo(poses[nodeOf[other]], poses[nodeOf[k]]));
             }
-    addEdge(keyframe, frame, poseRelativeTo(loopPose, store.frames[keyframe].pose));
 
     // The world moved by G maps the frame's tracked pose onto its pose through the loop:
     // T_loop = T_frame * G^-1, so G = T_loop^-1 * T_frame.
@@ -83,10 +87,14 @@ void correctLoop(TrackStore& store, int keyframe, int frame, const CameraPose& l
         poses[n].t = poses[n].t - poses[n].R * Ra.transpose() * (share * tG);
         poses[n].R = poses[n].R * Ra.transpose();
     }
+    // The place puts the frame where the spread does: it stays there, and the graph moves the frames
+    // in between.
+    poses.back() = loopPose;
+    held.back() = true;
     const double scale = steps > 0 ? steps / stepCount : 1.0;
     runCatchingInputErrors([&] { optimizePoseGraph(poses, held, edges, scale); });
     for (size_t n = 1; n < nodes.size(); ++n)
-        if (!held[n])
+        if (store.frames[nodes[n]].status != FrameStatus::Given)
             store.frames[nodes[n]].pose = poses[n];
 }
 

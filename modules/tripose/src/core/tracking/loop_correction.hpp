@@ -16,15 +16,15 @@ the registrations' errors, and moving the trajectory for them would only add the
 bool closesLoop(const CameraPose& tracked, const CameraPose& loopPose, const CameraPose& keyframePose);
 
 /** Corrects the poses of the frames after keyframe @p keyframe up to frame @p frame (a loop closed:
-the frame registered through the keyframe's place at @p loopPose) by a pose graph. Its poses are the
-keyframe's (held, as are given frames) and those of the frames in between registered in the
-keyframe's map; its edges the tracked relative poses of consecutive frames and of keyframes up to
-@p span frames apart that share @p minShared tracks (farther ones may share only the tracks the loop
-just joined), and the keyframe's pose relative to @p loopPose. The correction starts spread along the
-frames (frame k gets the share (k - keyframe) / (frame - keyframe) of the rotation and translation that
-takes the frame's tracked pose onto @p loopPose); the graph then spreads it by the frames' links
-(optimizePoseGraph(), a radian weighed as the mean step between the frames). A graph that cannot be
-solved leaves the spread. */
+the frame registered through the keyframe's place at @p loopPose) by a pose graph. The frame is put
+at @p loopPose; the frames in between registered in the keyframe's map are first given a share of
+that correction (frame k the share (k - keyframe) / (frame - keyframe) of the rotation and
+translation that takes the frame's tracked pose onto @p loopPose), then moved by the graph
+(optimizePoseGraph(), a radian weighed as the mean step between the frames): its edges are the
+tracked relative poses of consecutive frames and of keyframes at most @p span keyframes apart that
+share @p minShared tracks (farther ones may share only the tracks the loop just joined), between the
+keyframe and the frame, both held, as are given frames. A graph that cannot be solved leaves the
+shares. */
 void correctLoop(TrackStore& store, int keyframe, int frame, const CameraPose& loopPose, int minShared, int span);
 
 } // namespace tripose
