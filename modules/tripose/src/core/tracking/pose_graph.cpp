@@ -22,9 +22,10 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 //! The pose moved by the left update (w, v): R' = exp(w) R, t' = exp(w) t + v.
 CameraPose updated(const CameraPose& pose, const Vector6d& step)
 {
+    const Eigen::Matrix3d turn = rotationFromVector(step.head<3>());
     CameraPose out;
-    out.R = rotateLeft(step.head<3>(), pose.R);
-    out.t = rotateLeft(step.head<3>(), Eigen::Matrix3d::Identity()) * pose.t + step.tail<3>();
+    out.R = turn * pose.R;
+    out.t = turn * pose.t + step.tail<3>();
     return out;
 }
 
