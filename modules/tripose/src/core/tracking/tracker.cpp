@@ -227,8 +227,15 @@ FrameResult Tracker::finishFrame(int frame, double startSeconds, const FrameFeat
     int oldestRecent = -1; // The oldest of the latest keyframes in the window.
     if (store_.frames[frame].status != FrameStatus::Given)
         registerFrame(frame, features, result, oldestRecent);
-    if (features && store_.frames[frame].keyframe)
-        keepKeyframe(frame, *features, oldestRecent, result);
+    if (store_.frames[frame].keyframe)
+    {
+        const bool closed = features && keepKeyframe(frame, *features, oldestRecent, result);
+        // A closed loop has just adjusted the frames; features and observations count alike.
+        ++keyframesSinceAdjustment_;
+        if (!closed && options_.globalAdjustmentInterval > 0 &&
+            keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
+            adjustFramesAfter(-1);
+    }
     describeFrame(store_.frames[frame], result);
     result.milliseconds = 1e3 * (nowSeconds() - startSeconds);
     return result;
@@ -317,7 +324,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
     }
 }
 
-void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result)
+bool Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result)
 {
     bool closed = false;
     if (options_.loopClosure && store_.frames[frame].status == FrameStatus::Registered &&
@@ -341,10 +348,7 @@ void Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestR
     }
     keyframeFeatures_[frame] = features;
     retrieval_.add(frame, features);
-    ++keyframesSinceAdjustment_;
-    if (!closed && options_.globalAdjustmentInterval > 0 &&
-        keyframesSinceAdjustment_ >= options_.globalAdjustmentInterval)
-        adjustFramesAfter(-1);
+    return closed;
 }
 
 Registration Tracker::recognisePlace(int frame, const FrameFeatures& features,
@@ -391,8 +395,10 @@ void Tracker::adjustFramesAfter(int first)
     }
     if (fixed.size() < 2 || free.empty())
         return;
+    // The caller's links are kept whole, as in the local adjustment (registerFrame()).
+    const std::vector<int> splitIn = byIds_ ? std::vector<int>() : free;
     runCatchingInputErrors(
-        [&] { adjustAndSplitOutliers(store_, free, fixed, free, options_, links(), kAdjustmentRounds); });
+        [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, links(), kAdjustmentRounds); });
 }
 
 } // namespace tripose

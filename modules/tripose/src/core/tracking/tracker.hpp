@@ -70,9 +70,8 @@ private:
     void registerFrame(int frame, const FrameFeatures* features, FrameResult& result, int& oldestRecent);
     /** Keeps keyframe @p frame's features for recognising its place, first checking, with loop
     closure, whether it sees a place of the keyframes older than @p oldestRecent (a loop when its
-    pose through the place disagrees with its tracked pose); adjusts every frame when
-    TrackerOptions::globalAdjustmentInterval keyframes have come since the last adjustment. */
-    void keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result);
+    pose through the place disagrees with its tracked pose). True when it closed a loop. */
+    bool keepKeyframe(int frame, const FrameFeatures& features, int oldestRecent, FrameResult& result);
     /** Registers the frame against the best of the keyframes for which @p eligible holds, as retrieved
     by descriptors, and their neighbours (registerAgainstPlace()); @p keyframe the one that did. */
     Registration recognisePlace(int frame, const FrameFeatures& features, const std::function<bool(int)>& eligible,
