@@ -289,8 +289,9 @@ void bindOptions(nb::module_& m)
                 "off the features matched by the tracker that disagree with the result.")
         .def_rw("loop_closure", &tripose::TrackerOptions::loopClosure,
                 "After each new keyframe, look for a place seen before among the keyframes older than the "
-                "window (by descriptors); registered against it, join the tracks, correct the frames since by a "
-                "pose graph and adjust every frame (frames given as features only).")
+                "window (by descriptors); registered against it, join the tracks and, once per loop for a place "
+                "more than two windows of keyframes back, correct the frames since by a pose graph and adjust "
+                "every frame (frames given as features only).")
         .def_rw("global_adjustment_interval", &tripose::TrackerOptions::globalAdjustmentInterval,
                 "Every this many new keyframes, adjust every registered frame and the structure together, "
                 "the given frames held, and split off the observations that disagree (0: only at a loop).")

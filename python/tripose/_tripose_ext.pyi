@@ -241,7 +241,7 @@ class TrackerOptions:
     @property
     def loop_closure(self) -> bool:
         """
-        After each new keyframe, look for a place seen before among the keyframes older than the window (by descriptors); registered against it, join the tracks, correct the frames since by a pose graph and adjust every frame (frames given as features only).
+        After each new keyframe, look for a place seen before among the keyframes older than the window (by descriptors); registered against it, join the tracks and, once per loop for a place more than two windows of keyframes back, correct the frames since by a pose graph and adjust every frame (frames given as features only).
         """
 
     @loop_closure.setter

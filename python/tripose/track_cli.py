@@ -40,8 +40,9 @@ place, a lost camera found again, or two maps joined), -1 for none, and map: the
 at the end (0 the first; -1 lost). Poses of a map never joined to map 0 are in that map's own frame.
 
 --loop-closure (tripose.TrackerOptions.loop_closure) looks, after each new keyframe, for a place seen
-before among the keyframes older than the window, and closes the loop through it: a pose graph
-corrects the frames since and every registered frame is adjusted with the structure. It costs a
+before among the keyframes older than the window, joins its tracks and, when the place is more than
+two windows of keyframes back, closes the loop through it (once per loop): a pose graph corrects the
+frames since and every registered frame is adjusted with the structure. It costs a
 place check per keyframe. A frame lost against the window is looked for among every keyframe's
 places with or without it.
 

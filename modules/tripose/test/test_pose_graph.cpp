@@ -238,5 +238,25 @@ TEST(Tripose_PoseGraph, loop_correction_puts_the_frame_at_the_place_and_corrects
     EXPECT_LT(after, 1e-6);
 }
 
+TEST(Tripose_PoseGraph, a_loop_closes_only_beyond_the_span_and_once_per_loop)
+{
+    // Frames 0-39, every other one a keyframe (0, 2, ..., 38).
+    ::tripose::TrackStore store;
+    store.frames.resize(40);
+    for (int k = 0; k < 40; ++k)
+        store.frames[k].keyframe = k % 2 == 0;
+    EXPECT_EQ(::tripose::keyframesBetween(store, 0, 10), 4);
+    EXPECT_EQ(::tripose::keyframesBetween(store, 1, 2), 0);
+    // Span 10: keyframe 16 has 10 keyframes (18..36) before frame 38, keyframe 14 has 11.
+    EXPECT_FALSE(::tripose::mayCloseLoop(store, 16, 38, 10, -1, 5));
+    EXPECT_TRUE(::tripose::mayCloseLoop(store, 14, 38, 10, -1, 5));
+    // The rest after a loop, 5 keyframes: closed at frame 30 or 28, frame 38 has 3 or 4 keyframes since;
+    // at 26 or 27, 5.
+    EXPECT_FALSE(::tripose::mayCloseLoop(store, 0, 38, 10, 30, 5));
+    EXPECT_TRUE(::tripose::mayCloseLoop(store, 0, 38, 10, 26, 5));
+    EXPECT_TRUE(::tripose::mayCloseLoop(store, 0, 38, 10, 27, 5));
+    EXPECT_FALSE(::tripose::mayCloseLoop(store, 0, 38, 10, 28, 5));
+}
+
 } // namespace
 } // namespace opencv_test

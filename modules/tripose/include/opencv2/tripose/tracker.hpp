@@ -41,7 +41,8 @@ struct CV_EXPORTS TrackerParams
     window (by their descriptors); when the frame registers against one, its tracks join theirs, and
     when they did not reach it yet or the frame's two poses disagree, a pose graph corrects the frames
     since (their tracked relative poses against the frame's pose through the place) and every
-    registered frame is adjusted with the structure, the given frames held;
+    registered frame is adjusted with the structure, the given frames held. A place at most twice
+    window keyframes back, or seen within window keyframes of the last closed loop, is only joined;
     keyframes sharing minInliers tracks with a frame join its window (default false: it costs a
     place check per keyframe). Frames given as features only. A frame lost against the window is
     looked for among every keyframe's places whatever this says. */

@@ -23,6 +23,20 @@ bool closesLoop(const CameraPose& tracked, const CameraPose& loopPose, const Cam
     return angle > maxAngle || shift > maxShiftOfReach * reach;
 }
 
+int keyframesBetween(const TrackStore& store, int first, int last)
+{
+    int count = 0;
+    for (int k = first + 1; k < last; ++k)
+        count += store.frames[k].keyframe ? 1 : 0;
+    return count;
+}
+
+bool mayCloseLoop(const TrackStore& store, int keyframe, int frame, int span, int lastLoop, int rest)
+{
+    return keyframesBetween(store, keyframe, frame) > span &&
+           (lastLoop < 0 || keyframesBetween(store, lastLoop, frame) >= rest);
+}
+
 void correctLoop(TrackStore& store, int keyframe, int frame, const CameraPose& loopPose, int minShared, int span)
 {
     const int map = store.frames[keyframe].map;

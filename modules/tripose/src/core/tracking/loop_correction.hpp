@@ -15,6 +15,17 @@ from the frame to the place's keyframe at @p keyframePose. Nearer poses are the 
 the registrations' errors, and moving the trajectory for them would only add the place's noise. */
 bool closesLoop(const CameraPose& tracked, const CameraPose& loopPose, const CameraPose& keyframePose);
 
+/** The keyframes strictly between frames @p first and @p last. */
+int keyframesBetween(const TrackStore& store, int first, int last);
+
+/** Whether a place of keyframe @p keyframe seen again from frame @p frame may close a loop: more than
+@p span keyframes lie between them, and at least @p rest since frame @p lastLoop (-1: none) closed
+the last loop. A nearer place is the window's neighbourhood seen from a little farther, and the
+frames that follow a closed loop see its place again: their tracks join the place's, the
+adjustments hold them, and correcting the trajectory for each would only add the registrations'
+noise to it. */
+bool mayCloseLoop(const TrackStore& store, int keyframe, int frame, int span, int lastLoop, int rest);
+
 /** Corrects the poses of the frames after keyframe @p keyframe up to frame @p frame (a loop closed:
 the frame registered through the keyframe's place at @p loopPose) by a pose graph. The frame is put
 at @p loopPose; the frames in between registered in the keyframe's map are first given a share of

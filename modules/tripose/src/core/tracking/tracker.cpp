@@ -339,9 +339,11 @@ bool Tracker::keepKeyframe(int frame, const FrameFeatures& features, int oldestR
         if (place.registered)
         {
             result.recognisedKeyframe = keyframe;
-            if (closesLoop(store_.frames[frame].pose, place.pose, store_.frames[keyframe].pose))
+            if (mayCloseLoop(store_, keyframe, frame, 2 * options_.window, lastLoopFrame_, options_.window) &&
+                closesLoop(store_.frames[frame].pose, place.pose, store_.frames[keyframe].pose))
             {
                 closeLoop(frame, keyframe, place.pose);
+                lastLoopFrame_ = frame;
                 closed = true;
             }
         }

@@ -104,6 +104,7 @@ private:
     KeyframeRetrieval retrieval_;
     std::map<int, FrameFeatures> keyframeFeatures_;
     int keyframesSinceAdjustment_ = 0;
+    int lastLoopFrame_ = -1; //!< The frame that closed the last loop (-1: none yet).
 };
 
 } // namespace tripose
