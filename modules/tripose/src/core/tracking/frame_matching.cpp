@@ -37,16 +37,24 @@ bool estimateFundamental(const FrameFeatures& a, const FrameFeatures& b, const M
     return true;
 }
 
+bool matchUnderFundamental(const FrameFeatures& a, const FrameFeatures& b, const MatchOptions& options,
+                           Matches& points, Matches& segments)
+{
+    points.clear();
+    segments.clear();
+    Eigen::Matrix3d F;
+    if (!estimateFundamental(a, b, options, F))
+        return false;
+    points = matchPointsEpipolar(a, b, F, options);
+    segments = matchSegmentsEpipolar(a, b, F, options);
+    return true;
+}
+
 bool matchUnknownPose(const FrameFeatures& a, const FrameFeatures& b, const MatchOptions& options, Matches& points,
                       Matches& segments)
 {
-    Eigen::Matrix3d F;
-    if (estimateFundamental(a, b, options, F))
-    {
-        points = matchPointsEpipolar(a, b, F, options);
-        segments = matchSegmentsEpipolar(a, b, F, options);
+    if (matchUnderFundamental(a, b, options, points, segments))
         return true;
-    }
     points = matchByDescriptor(a.pointDescriptors, b.pointDescriptors, options.pointRatio);
     segments = matchByDescriptor(a.lineDescriptors, b.lineDescriptors, options.lineRatio,
                                  a.lineDescriptors.binary ? options.maxLineDistance

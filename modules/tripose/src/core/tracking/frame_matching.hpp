@@ -18,6 +18,12 @@ MatchOptions::minFundamentalInliers matches that agree with it: too few to trust
 bool estimateFundamental(const FrameFeatures& a, const FrameFeatures& b, const MatchOptions& options,
                          Eigen::Matrix3d& F);
 
+/** Points and segments of frames a and b matched under the fundamental matrix of their descriptor
+matches (estimateFundamental()). False, and no match, without enough matches for that geometry: for
+callers that try another frame then, and need not pay for matching by descriptor alone. */
+bool matchUnderFundamental(const FrameFeatures& a, const FrameFeatures& b, const MatchOptions& options,
+                           Matches& points, Matches& segments);
+
 /** Points and segments of frames a and b where their relative pose is unknown: under the fundamental
 matrix of their descriptor matches (estimateFundamental()), which rejects matches that no rigid
 motion explains, or by descriptor alone without enough matches for that geometry. Returns true when

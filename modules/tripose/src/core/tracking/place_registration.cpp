@@ -85,7 +85,7 @@ Registration registerAgainstPlace(TrackStore& store, int frame, const FrameFeatu
 {
     Registration out;
     Matches points, segments;
-    if (!matchUnknownPose(keyframeFeatures, features, options.matching, points, segments))
+    if (!matchUnderFundamental(keyframeFeatures, features, options.matching, points, segments))
     {
         out.reason = "too few matches with the keyframe for their epipolar geometry";
         return out;

@@ -31,7 +31,7 @@ std::vector<int> covisibleKeyframes(const TrackStore& store, int keyframe, int c
 
 /** Registers frame @p frame against a place seen before, keyframe @p keyframe and @p neighbours (a
 loop, or a lost camera found again): the frame's features are matched to the keyframe's under their
-fundamental matrix (matchUnknownPose()); each match joins the frame's feature to the keyframe
+fundamental matrix (matchUnderFundamental()); each match joins the frame's feature to the keyframe
 feature's track, the two tracks merged where the frame's feature already had one and they share no
 frame; then registerAgainstWindow() on @p neighbours with @p minInliers, and at least half of the features
 agreeing with the pose. Registered: the store keeps

@@ -162,7 +162,7 @@ void StereoTracker::linkToRecent(int frame, const FrameFeatures& left)
     for (auto it = recent_.rbegin() + 1; !underGeometry && it != recent_.rend(); ++it)
     {
         Matches earlierPoints, earlierSegments;
-        if (matchUnknownPose(it->second, left, options_.matching, earlierPoints, earlierSegments))
+        if (matchUnderFundamental(it->second, left, options_.matching, earlierPoints, earlierSegments))
         {
             points.swap(earlierPoints);
             segments.swap(earlierSegments);
@@ -176,7 +176,7 @@ void StereoTracker::linkToRecent(int frame, const FrameFeatures& left)
     {
         Matches earlierPoints, earlierSegments;
         if (it->first < oldestRecent &&
-            matchUnknownPose(it->second, left, options_.matching, earlierPoints, earlierSegments))
+            matchUnderFundamental(it->second, left, options_.matching, earlierPoints, earlierSegments))
         {
             points.swap(earlierPoints);
             segments.swap(earlierSegments);
@@ -512,7 +512,7 @@ StereoTracker::Attempt StereoTracker::registerAtPlace(int frame, const FrameFeat
     {
         const int k = candidate.first;
         Matches points, segments;
-        if (!matchUnknownPose(placeFeatures_.at(k), left, options_.matching, points, segments))
+        if (!matchUnderFundamental(placeFeatures_.at(k), left, options_.matching, points, segments))
         {
             out.reason = formatString("too few matches with keyframe %d for their epipolar geometry", k);
             continue;

@@ -137,7 +137,7 @@ void Tracker::associateByMatching(int frame, const FrameFeatures& features)
             for (auto it = recent_.rbegin() + 1; !underGeometry && it != recent_.rend(); ++it)
             {
                 Matches earlierPoints, earlierSegments;
-                if (matchUnknownPose(it->second, features, options_.matching, earlierPoints, earlierSegments))
+                if (matchUnderFundamental(it->second, features, options_.matching, earlierPoints, earlierSegments))
                 {
                     points.swap(earlierPoints);
                     segments.swap(earlierSegments);
