@@ -30,8 +30,8 @@ bool estimateFundamental(const FrameFeatures& a, const FrameFeatures& b, const M
     }
     Eigen::Matrix3d estimate;
     std::vector<unsigned char> inliers;
-    if (estimateFundamentalRansac(xa, xb, options.epipolarDistance, kConfidence, estimate, inliers) <
-        options.minFundamentalInliers)
+    if (estimateFundamentalRansac(xa, xb, options.epipolarDistance, kConfidence, estimate, inliers,
+                                  options.minFundamentalInliers) < options.minFundamentalInliers)
         return false;
     F = estimate;
     return true;

@@ -77,18 +77,31 @@ int countInliers(const std::vector<Eigen::Vector2d>& xa, const std::vector<Eigen
     return count;
 }
 
+/** The samples that draw, at @p confidence, one of @p inliers among @p n pairs eight times in a row
+(at most kMaxSamples). */
+int samplesFor(int inliers, int n, double confidence)
+{
+    const double allInlier = std::pow((double)inliers / n, kSampleSize);
+    if (allInlier >= 1)
+        return 1;
+    // Bounded in floating point: a low inlier ratio asks for more samples than an int holds.
+    if (!(allInlier > 0))
+        return kMaxSamples;
+    return (int)std::min((double)kMaxSamples, std::ceil(std::log(1 - confidence) / std::log1p(-allInlier)));
+}
+
 } // namespace
 
 int estimateFundamentalRansac(const std::vector<Eigen::Vector2d>& xa, const std::vector<Eigen::Vector2d>& xb,
                               double threshold, double confidence, Eigen::Matrix3d& F,
-                              std::vector<unsigned char>& inliers)
+                              std::vector<unsigned char>& inliers, int minInliers)
 {
     const int n = (int)xa.size();
     inliers.assign(n, 0);
     if (n < kSampleSize || (int)xb.size() != n)
         return 0;
     Random random(1);
-    int best = 0, samples = kMaxSamples;
+    int best = 0, samples = samplesFor(std::min(minInliers, n), n, confidence);
     std::vector<unsigned char> mask;
     std::vector<int> sample(kSampleSize);
     for (int iteration = 0; iteration < samples; ++iteration)
@@ -110,13 +123,9 @@ int estimateFundamentalRansac(const std::vector<Eigen::Vector2d>& xa, const std:
             best = count;
             F = candidate;
             inliers = mask;
-            const double allInlier = std::pow((double)count / n, kSampleSize);
-            if (allInlier >= 1)
+            if (count == n)
                 break;
-            // Bounded in floating point: a low inlier ratio asks for more samples than an int holds.
-            if (allInlier > 0)
-                samples = (int)std::min((double)kMaxSamples,
-                                        std::ceil(std::log(1 - confidence) / std::log1p(-allInlier)));
+            samples = std::min(samples, samplesFor(count, n, confidence));
         }
     }
     if (best < kSampleSize)

@@ -15,12 +15,15 @@ namespace tripose {
 over samples of eight pairs (the normalised eight-point method, rank two enforced), a pair an inlier
 when each point lies within @p threshold px of the other's epipolar line, stopped adaptively at
 @p confidence, then re-fitted to the inliers of the best sample. The sampler is seeded alike on
-every call, so the same pairs give the same matrix. Returns the number of inliers (0 with fewer than
-eight pairs or no sample of rank two); @p inliers receives one flag per pair.
+every call, so the same pairs give the same matrix. A caller that wants at least @p minInliers
+inliers stops the sampling, short of them, once a matrix they support would have been sampled at
+@p confidence: pairs of another scene or of repeated texture do not cost the full count of samples.
+Returns the number of inliers (0 with fewer than eight pairs or no sample of rank two); @p inliers
+receives one flag per pair.
 */
 int estimateFundamentalRansac(const std::vector<Eigen::Vector2d>& xa, const std::vector<Eigen::Vector2d>& xb,
                               double threshold, double confidence, Eigen::Matrix3d& F,
-                              std::vector<unsigned char>& inliers);
+                              std::vector<unsigned char>& inliers, int minInliers = 0);
 
 } // namespace tripose
 
