@@ -27,7 +27,8 @@ struct StructureBlock
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
     Eigen::Matrix<double, D, D> V;    //!< Structure-structure block J_s^T w J_s.
     //! Pose-structure block J_p^T w J_s: all P rows for one pose; for several poses, 6 rows per pose
-    //! in @p poses (those the feature's observations depend on), in that order.
+    //! in @p poses (those the feature's observations depend on), in that order, in its first rows (it
+    //! keeps the rows of earlier fills, so that a refill does not allocate them again).
     Eigen::Matrix<double, P, D> W;
     std::vector<int> poses;           //!< Several poses: the poses of W's rows.
     Eigen::Matrix<double, D, 1> g;    //!< Structure gradient J_s^T w r.
@@ -91,10 +92,7 @@ public:
     {
         block.V.setZero();
         if constexpr (kSeveral)
-        {
             block.poses.clear();
-            block.W.resize(0, D);
-        }
         else
             block.W.setZero();
         block.g.setZero();
@@ -142,6 +140,7 @@ public:
             eliminate<3>(block, lambda, S, b);
         for (StructureBlock<4, P>& block : lines_)
             eliminate<4>(block, lambda, S, b);
+        mirrorLowerBlocks(S);
         Eigen::LDLT<PoseMatrix> ldlt(S);
         if (ldlt.info() != Eigen::Success)
             return false;
@@ -173,6 +172,7 @@ public:
         for (const StructureBlock<4, P>& block : lines_)
             if (!marginalize<4>(block, reduced))
                 return false;
+        mirrorLowerBlocks(reduced);
         return reduced.allFinite();
     }
 
@@ -191,12 +191,15 @@ private:
                 return (int)i;
         block.poses.push_back(pose);
         const Eigen::Index rows = 6 * (Eigen::Index)block.poses.size();
-        block.W.conservativeResize(rows, D);
-        block.W.template bottomRows<6>().setZero();
+        if (block.W.rows() < rows)
+            block.W.conservativeResize(std::max(rows, 2 * block.W.rows()), D);
+        block.W.template middleRows<6>(rows - 6).setZero();
         return (int)block.poses.size() - 1;
     }
 
-    //! reduced -= W A W^T and b += W A g over the poses of @p block (A symmetric D x D).
+    /** reduced -= W A W^T and b += W A g over the poses of @p block (A symmetric D x D). With
+    several poses only the 6 x 6 blocks on and below the diagonal are updated (the product is
+    symmetric): mirrorLowerBlocks() completes @p reduced once every block is in. */
     template <int D>
     static void subtractCoupling(const StructureBlock<D, P>& block, const Eigen::Matrix<double, D, D>& A,
                                  PoseMatrix& reduced, PoseVector* b)
@@ -211,17 +214,25 @@ private:
         }
         else
         {
-        const Eigen::Matrix<double, Eigen::Dynamic, D> Y = block.W * A;
-        for (size_t i = 0; i < block.poses.size(); ++i)
-        {
-            const int oi = 6 * block.poses[i];
-            for (size_t j = 0; j < block.poses.size(); ++j)
-                reduced.template block<6, 6>(oi, 6 * block.poses[j]).noalias() -=
-                    Y.template middleRows<6>(6 * i) * block.W.template middleRows<6>(6 * j).transpose();
-            if (b)
-                b->template segment<6>(oi).noalias() += Y.template middleRows<6>(6 * i) * block.g;
+            for (size_t i = 0; i < block.poses.size(); ++i)
+            {
+                const int oi = 6 * block.poses[i];
+                const Eigen::Matrix<double, 6, D> Yi = block.W.template middleRows<6>(6 * i) * A;
+                for (size_t j = 0; j < block.poses.size(); ++j)
+                    if (block.poses[j] <= block.poses[i])
+                        reduced.template block<6, 6>(oi, 6 * block.poses[j]).noalias() -=
+                            Yi * block.W.template middleRows<6>(6 * j).transpose();
+                if (b)
+                    b->template segment<6>(oi).noalias() += Yi * block.g;
+            }
         }
-        }
+    }
+
+    //! With several poses, the blocks above the diagonal of @p reduced copied from those below it.
+    static void mirrorLowerBlocks(PoseMatrix& reduced)
+    {
+        if constexpr (kSeveral)
+            reduced.template triangularView<Eigen::StrictlyUpper>() = reduced.transpose();
     }
 
     //! W^T poseStep over the poses of @p block.
