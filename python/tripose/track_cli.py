@@ -157,11 +157,11 @@ def _parser():
     p.add_argument("--local-adjustment", type=_switch, nargs="?", const=True, default=None, metavar="0|1",
                    help="refine the window's frames and structure after each registration (default 1)")
     p.add_argument("--loop-closure", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
-                   help="after each keyframe, look for a place seen before among the older keyframes and close "
-                        "the loop through it (a place check per keyframe)")
+                   help="after each keyframe, look for a place seen before among the older keyframes, join its "
+                        "tracks and close the loop through it (the least drift; a place check per keyframe, 2 to "
+                        "3.5 times the time per frame)")
     p.add_argument("--global-adjustment-interval", type=_whole_number(0), metavar="N",
-                   help="adjust every frame and the structure after each N keyframes (default 0: never); 1 is "
-                        "the most accurate on long sequences and the slowest")
+                   help="adjust every frame and the structure after each N keyframes (default 0: never)")
     p.add_argument("--mode", choices=("full", "video"), default="full",
                    help="full: features detected and matched in every frame (default); video: points followed "
                         "by optical flow, detected afresh after keyframes (real time; with --right, a stereo rig)")

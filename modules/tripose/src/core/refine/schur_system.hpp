@@ -232,7 +232,8 @@ private:
     static void mirrorLowerBlocks(PoseMatrix& reduced)
     {
         if constexpr (kSeveral)
-            reduced.template triangularView<Eigen::StrictlyUpper>() = reduced.transpose();
+            for (Eigen::Index j = 1; j < reduced.cols(); ++j)
+                reduced.col(j).head(j) = reduced.row(j).head(j).transpose();
     }
 
     //! W^T poseStep over the poses of @p block.
