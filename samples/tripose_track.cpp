@@ -67,7 +67,7 @@ const char* kUsage =
     "  --local-adjustment 0|1: refine the window's frames and structure after each frame (default 1)\n"
     "  --loop-closure 1: after each keyframe, look for a place seen before among the older keyframes, join\n"
     "                 its tracks and close the loop through it (default 0; the least drift, at a place\n"
-    "                 check per keyframe and 2 to 3.5 times the time per frame). A frame lost against\n"
+    "                 check per keyframe and 2 to 3.3 times the time per frame). A frame lost against\n"
     "                 the window is looked for among all keyframes either way\n"
     "  --global-adjustment-interval N: adjust every frame and the structure after each N keyframes (default\n"
     "                 0: never)\n"
@@ -81,8 +81,8 @@ const char* kUsage =
     "                 than 120 survive, and given to the tracker as linked observations (no descriptors,\n"
     "                 no matching; with --right, each is found in the right image by the same flow).\n"
     "                 Keyframes from 0.5 deg of parallax unless --keyframe-parallax says otherwise;\n"
-    "                 --max-image-size, --contrast-threshold and --max-points do not apply. Default: full\n"
-    "                 (features detected and matched in every frame)\n"
+    "                 --max-image-size, --contrast-threshold, --max-points and --loop-closure do not\n"
+    "                 apply. Default: full (features detected and matched in every frame)\n"
     "Exit status: 0 when the whole source was read (frames may be lost: see the table), 1 on bad\n"
     "arguments or input (the message names the option, file, frame or key; no output is written).\n";
 
@@ -161,6 +161,9 @@ Options parseArguments(int argc, char** argv)
         throw argumentError("--contrast-threshold", "not used by --mode video (its points are corners, not SIFT's)");
     if (o.video && o.maxPoints >= 0)
         throw argumentError("--max-points", "not used by --mode video (its points are corners, not SIFT's)");
+    if (o.video && o.track.loopClosure)
+        throw argumentError("--loop-closure", "not used by --mode video (its points have no descriptors to "
+                            "recognise a place by)");
     for (const auto& option : options)
         if (option.first == "--local-adjustment" && !o.right.empty() && parseSwitch(option.first, option.second))
             throw argumentError("--local-adjustment", "not available with --right (the stereo tracker has none)");

@@ -290,11 +290,12 @@ void bindOptions(nb::module_& m)
         .def_rw("loop_closure", &tripose::TrackerOptions::loopClosure,
                 "After each new keyframe, look for a place seen before among the keyframes older than the "
                 "window (by descriptors); registered against it, join the tracks and, once per loop for a place "
-                "more than two windows of keyframes back, correct the frames since by a pose graph and adjust "
-                "every frame (frames given as features only).")
+                "more than two windows of keyframes before the frame, correct the frames since by a pose graph "
+                "and adjust every frame (frames given as features only).")
         .def_rw("global_adjustment_interval", &tripose::TrackerOptions::globalAdjustmentInterval,
                 "Every this many new keyframes, adjust every registered frame and the structure together, "
-                "the given frames held, and split off the observations that disagree (0: only at a loop).")
+                "the given frames held, and split off the observations that disagree, except those linked by id "
+                "in track_observations() (0: only at a loop).")
         .def_rw("robust", &tripose::TrackerOptions::robust,
                 "Register with the robust estimator (else the linear one on every feature).")
         .def_rw("ransac", &tripose::TrackerOptions::ransac, "RansacOptions of the registration.")

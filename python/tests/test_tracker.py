@@ -438,8 +438,8 @@ def test_model_house_from_linked_observations():
 
 def test_global_adjustment_reaches_linked_observations():
     # TrackerOptions.global_adjustment_interval holds for observations as for features: every frame
-    # is adjusted after each keyframe, so the trajectory moves (by hundredths of a degree here) and
-    # stays within the bounds of the run without it.
+    # is adjusted after each keyframe, so the trajectory moves (0.019 deg at most here; not at all
+    # were the option ignored) and stays within the bounds of the run without it.
     seq, views = model_house()
 
     def run(interval):

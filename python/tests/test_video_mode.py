@@ -110,7 +110,7 @@ def test_program_video_mode_gives_the_api_poses(walk, tmp_path, capsys):
     assert_program_wrote(output, trajectory)
     for extra, named in ((["--max-image-size", "800"], "--max-image-size"),
                          (["--contrast-threshold", "0.01"], "--contrast-threshold"),
-                         (["--max-points", "500"], "--max-points")):
+                         (["--max-points", "500"], "--max-points"), (["--loop-closure"], "--loop-closure")):
         assert track_cli.main(arguments + ["--mode", "video"] + extra) == 1
         assert named in capsys.readouterr().err
 

@@ -241,7 +241,7 @@ class TrackerOptions:
     @property
     def loop_closure(self) -> bool:
         """
-        After each new keyframe, look for a place seen before among the keyframes older than the window (by descriptors); registered against it, join the tracks and, once per loop for a place more than two windows of keyframes back, correct the frames since by a pose graph and adjust every frame (frames given as features only).
+        After each new keyframe, look for a place seen before among the keyframes older than the window (by descriptors); registered against it, join the tracks and, once per loop for a place more than two windows of keyframes before the frame, correct the frames since by a pose graph and adjust every frame (frames given as features only).
         """
 
     @loop_closure.setter
@@ -250,7 +250,7 @@ class TrackerOptions:
     @property
     def global_adjustment_interval(self) -> int:
         """
-        Every this many new keyframes, adjust every registered frame and the structure together, the given frames held, and split off the observations that disagree (0: only at a loop).
+        Every this many new keyframes, adjust every registered frame and the structure together, the given frames held, and split off the observations that disagree, except those linked by id in track_observations() (0: only at a loop).
         """
 
     @global_adjustment_interval.setter

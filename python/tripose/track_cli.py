@@ -18,9 +18,9 @@ detected afresh only in the frame after a keyframe or when too few survive (no d
 matching). On the rendered courtyard (640x480) it takes a fraction of the full mode's time per frame
 at the same accuracy (doc/studies/front_end_and_tracker.md, "Video mode"). Its keyframes are spaced
 by 0.5 deg of parallax (tripose.video.VIDEO_KEYFRAME_PARALLAX_DEG); --window, --min-inliers,
---threshold, --local-adjustment and --loop-closure apply as in the full mode,
---max-image-size, --contrast-threshold and --max-points do not (the points are followed in the
-full-size frames).
+--threshold, --local-adjustment and --global-adjustment-interval apply as in the full mode;
+--max-image-size, --contrast-threshold, --max-points (the points are corners followed in the
+full-size frames) and --loop-closure (they have no descriptors) do not.
 With --right it tracks the rig with tripose.video.StereoVideoTracker: each followed point is found
 in the right image by the same flow, and no pose is needed.
 
@@ -40,10 +40,10 @@ place, a lost camera found again, or two maps joined), -1 for none, and map: the
 at the end (0 the first; -1 lost). Poses of a map never joined to map 0 are in that map's own frame.
 
 --loop-closure (tripose.TrackerOptions.loop_closure) looks, after each new keyframe, for a place seen
-before among the keyframes older than the window, joins its tracks and, when the place is more than
-two windows of keyframes back, closes the loop through it (once per loop): a pose graph corrects the
-frames since and every registered frame is adjusted with the structure. It costs a
-place check per keyframe. A frame lost against the window is looked for among every keyframe's
+before among the keyframes older than the window, joins its tracks and, when more than two windows
+of keyframes lie between the place and the frame, closes the loop through it (once per loop): a pose
+graph corrects the frames since and every registered frame is adjusted with the structure. It costs
+a place check per keyframe. A frame lost against the window is looked for among every keyframe's
 places with or without it.
 
 Pixel tolerances (--threshold, default 2 px, and the matching's epipolar distance) are those of
@@ -159,7 +159,7 @@ def _parser():
     p.add_argument("--loop-closure", type=_switch, nargs="?", const=True, default=False, metavar="0|1",
                    help="after each keyframe, look for a place seen before among the older keyframes, join its "
                         "tracks and close the loop through it (the least drift; a place check per keyframe, 2 to "
-                        "3.5 times the time per frame)")
+                        "3.3 times the time per frame)")
     p.add_argument("--global-adjustment-interval", type=_whole_number(0), metavar="N",
                    help="adjust every frame and the structure after each N keyframes (default 0: never)")
     p.add_argument("--mode", choices=("full", "video"), default="full",
@@ -729,6 +729,9 @@ def run(args) -> int:
     for value, option in ((args.contrast_threshold, "--contrast-threshold"), (args.max_points, "--max-points")):
         if args.mode == "video" and value is not None:
             raise InputError(f"{option}: not used by --mode video (its points are corners, not SIFT's)")
+    if args.mode == "video" and args.loop_closure:
+        raise InputError("--loop-closure: not used by --mode video (its points have no descriptors to recognise a "
+                         "place by)")
     if args.right is not None:
         return run_stereo(args)
     K, dist, relative = read_calibration(args.calib)

@@ -216,6 +216,7 @@ def test_video_mode_goes_on_past_an_unreadable_frame(sequence, tmp_path):
     (["--max-image-size", "800"], "--max-image-size"),
     (["--contrast-threshold", "0.01"], "--contrast-threshold"),
     (["--max-points", "500"], "--max-points"),
+    (["--loop-closure", "1"], "--loop-closure"),
     (["--mode", "fast"], "--mode"),
 ])
 def test_video_mode_refuses_options_it_does_not_use(sequence, tmp_path, extra, named):

@@ -41,15 +41,16 @@ struct CV_EXPORTS TrackerParams
     window (by their descriptors); when the frame registers against one, its tracks join theirs, and
     when they did not reach it yet or the frame's two poses disagree, a pose graph corrects the frames
     since (their tracked relative poses against the frame's pose through the place) and every
-    registered frame is adjusted with the structure, the given frames held. A place at most twice
-    window keyframes back, or seen within window keyframes of the last closed loop, is only joined;
+    registered frame is adjusted with the structure, the given frames held. A place with at most
+    twice window keyframes between it and the frame, or seen within window keyframes of the last
+    closed loop, is only joined;
     keyframes sharing minInliers tracks with a frame join its window (default false: it costs a
     place check per keyframe). Frames given as features only. A frame lost against the window is
     looked for among every keyframe's places whatever this says. */
     bool loopClosure;
     /** Every this many new keyframes, adjust every registered frame and the structure together, the
-    given frames held, and split off the observations that disagree with the result (default 0:
-    only when a loop closes). */
+    given frames held, and split off the observations that disagree with the result, except those
+    linked by id in addObservations() (default 0: only when a loop closes). */
     int globalAdjustmentInterval;
     bool robust; //!< Register with estimatePoseMultiViewRansac()'s estimator (default true), else the linear one.
     RansacParams ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.

@@ -101,7 +101,8 @@ int estimateFundamentalRansac(const std::vector<Eigen::Vector2d>& xa, const std:
     if (n < kSampleSize || (int)xb.size() != n)
         return 0;
     Random random(1);
-    int best = 0, samples = samplesFor(std::min(minInliers, n), n, confidence);
+    // A wanted count of every pair (or none) leaves the sampling to the count it finds.
+    int best = 0, samples = minInliers > 0 && minInliers < n ? samplesFor(minInliers, n, confidence) : kMaxSamples;
     std::vector<unsigned char> mask;
     std::vector<int> sample(kSampleSize);
     for (int iteration = 0; iteration < samples; ++iteration)

@@ -43,16 +43,16 @@ struct TrackerOptions
     its neighbours with twice minInliers (and half of the features shared), its tracks join theirs;
     when its pose through the place disagrees with its tracked pose (a loop), a pose graph moves the
     frames since (their tracked relative poses against the frame's pose through the place) and every
-    registered frame is adjusted with the structure (given frames held); a place at most 2 window
-    keyframes back, or seen within window keyframes of the last closed loop, is only joined
-    (mayCloseLoop()). Keyframes that share
+    registered frame is adjusted with the structure (given frames held); a place with at most
+    2 window keyframes between it and the frame, or seen within window keyframes of the last closed
+    loop, is only joined (mayCloseLoop()). Keyframes that share
     minInliers tracks with a frame then join its window. It costs a place check per keyframe
     (doc/studies/front_end_and_tracker.md), hence off by default. Needs descriptors (frames given as
     features). */
     bool loopClosure = false;
     /** Every this many new keyframes, every registered frame and the structure are adjusted
     together with the given frames held, and the observations that disagree with the result leave
-    their tracks (0: only when a loop closes). */
+    their tracks, except those the caller linked by id (0: only when a loop closes). */
     int globalAdjustmentInterval = 0;
     bool robust = true; //!< The robust multi-view estimator (else the linear one on every feature).
     RansacOptions ransac; //!< Of the registration; ransac.threshold is also the track checks' distance.
