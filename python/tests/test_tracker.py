@@ -475,9 +475,9 @@ def temple_features(temple):
 def test_temple_ring_closes_its_loop(temple, temple_features):
     # templeRing's 47 views circle the temple once: with loop_closure the last frames see the place
     # of frame 0 again and the loop's correction removes the drift. Measured at the last frame:
-    # 0.012 deg / 0.003 % of the path with it, 0.194 deg / 0.053 % without (0.06-0.18 deg / 0.02-0.05 %
-    # with it before one correction per loop, the adjustment's Cauchy loss and the tracking features);
-    # the bounds are about twice the largest of those with it.
+    # 0.012 deg / 0.003 % of the path with it, 0.194 deg / 0.053 % without. The bounds are about
+    # three times the largest that other features and options give with it (0.05-0.10 deg /
+    # 0.01-0.03 %, doc/studies/front_end_and_tracker.md, "Loop closure").
     scale = images.detection_scale((temple.height, temple.width), images.FeatureOptions().max_image_size)
     options = cli_options(scale)
     options.loop_closure = True

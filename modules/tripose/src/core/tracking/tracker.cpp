@@ -313,13 +313,7 @@ void Tracker::registerFrame(int frame, const FrameFeatures* features, FrameResul
             for (int j = 0; j < frame; ++j)
                 if (store_.frames[j].keyframe && std::find(free.begin(), free.end(), j) == free.end())
                     fixed.push_back(j);
-            // Features the caller links (observations by id) are long tracks that the caller checks as
-            // it follows them: an adjustment that cut them where they disagree with its window would
-            // cut the links to the held keyframes that stop the window drifting. Matched features are
-            // linked here, frame to frame, and a wrong link is split off.
-            const std::vector<int> splitIn = byIds_ ? std::vector<int>() : free;
-            runCatchingInputErrors(
-                [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, links(), kAdjustmentRounds); });
+            adjust(free, fixed);
         }
     }
 }
@@ -397,7 +391,15 @@ void Tracker::adjustFramesAfter(int first)
     }
     if (fixed.size() < 2 || free.empty())
         return;
-    // The caller's links are kept whole, as in the local adjustment (registerFrame()).
+    adjust(free, fixed);
+}
+
+void Tracker::adjust(const std::vector<int>& free, const std::vector<int>& fixed)
+{
+    // Features the caller links (observations by id) are long tracks that the caller checks as it
+    // follows them: an adjustment that cut them where they disagree with its frames would cut the
+    // links to the held keyframes that stop them drifting. Matched features are linked here, frame
+    // to frame, and a wrong link is split off.
     const std::vector<int> splitIn = byIds_ ? std::vector<int>() : free;
     runCatchingInputErrors(
         [&] { adjustAndSplitOutliers(store_, free, fixed, splitIn, options_, links(), kAdjustmentRounds); });

@@ -83,6 +83,9 @@ private:
     //! The registered frames after frame @p first and the structure adjusted together, the given
     //! frames and the frames up to @p first held (-1: every registered frame).
     void adjustFramesAfter(int first);
+    //! Frames @p free and their structure adjusted against @p fixed (adjustAndSplitOutliers()),
+    //! splitting off the matched links the result contradicts, never the caller's.
+    void adjust(const std::vector<int>& free, const std::vector<int>& fixed);
     //! Who linked the tracks' observations: the caller (observations by id) or the matching.
     TrackLinks links() const { return byIds_ ? TrackLinks::ByCaller : TrackLinks::Matched; }
     void associateByMatching(int frame, const FrameFeatures& features);

@@ -45,10 +45,9 @@ struct TrackerOptions
     frames since (their tracked relative poses against the frame's pose through the place) and every
     registered frame is adjusted with the structure (given frames held); a place with at most
     2 window keyframes between it and the frame, or seen within window keyframes of the last closed
-    loop, is only joined (mayCloseLoop()). Keyframes that share
-    minInliers tracks with a frame then join its window. It costs a place check per keyframe
-    (doc/studies/front_end_and_tracker.md), hence off by default. Needs descriptors (frames given as
-    features). */
+    loop, is only joined (mayCloseLoop()). Keyframes that share minInliers tracks with a frame then
+    join its window. It costs a place check per keyframe (doc/studies/front_end_and_tracker.md),
+    hence off by default. Needs descriptors (frames given as features). */
     bool loopClosure = false;
     /** Every this many new keyframes, every registered frame and the structure are adjusted
     together with the given frames held, and the observations that disagree with the result leave
